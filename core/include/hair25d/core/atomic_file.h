@@ -1,0 +1,31 @@
+// Writing outputs so that a crash never leaves a half-written file or folder
+// that looks whole: write under a temporary name beside the target, then rename.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace hair25d {
+
+// A temporary sibling path of `target` that keeps its extension
+// ("out/a.png" -> "out/.a.png.tmp-1234-0.png").
+std::filesystem::path temporary_sibling(const std::filesystem::path& target);
+
+// Calls write(tmp) with a temporary sibling path, then renames it onto target.
+// On any exception the temporary is removed and the exception rethrown.
+void write_atomically(const std::filesystem::path& target,
+                      const std::function<void(const std::filesystem::path&)>& write);
+
+// Writes text to a file atomically.
+void write_text_atomically(const std::filesystem::path& target, const std::string& text);
+
+// Reads a whole text file; throws hair25d::Error naming the file if it cannot.
+std::string read_text_file(const std::filesystem::path& path);
+
+// Replaces folder `target` by a folder filled by fill(tmp_folder): the old
+// folder (if any) is removed only after the new one is complete.
+void write_folder_atomically(const std::filesystem::path& target,
+                             const std::function<void(const std::filesystem::path&)>& fill);
+
+}  // namespace hair25d

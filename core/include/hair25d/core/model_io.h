@@ -1,0 +1,18 @@
+// The model folder: model.json ("hair25d-model", versioned) and PNG textures.
+// Written atomically (a temporary folder, then a rename); read back with
+// validation (types, ids, relative paths that stay inside the folder).
+#pragma once
+
+#include <filesystem>
+
+#include "hair25d/core/hair_model.h"
+#include "hair25d/core/image_io.h"
+
+namespace hair25d {
+
+inline constexpr int kModelFormatVersion = 1;
+
+void write_model(const std::filesystem::path& folder, const HairModel& model);
+HairModel read_model(const std::filesystem::path& folder, const ImageLimits& limits = {});
+
+}  // namespace hair25d

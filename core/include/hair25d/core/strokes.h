@@ -1,0 +1,44 @@
+// The user's markup, strokes.json ("hair25d-strokes/1", FORMATS.md): labelled
+// brush strokes, label 0 = background, plus an optional head centre.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hair25d/core/geometry.h"
+#include "hair25d/core/image.h"
+
+namespace hair25d {
+
+struct Stroke {
+  int label = 0;       // > 0 a hair region, 0 background
+  double width = 1.0;  // brush diameter, pixels, >= 1
+  Polyline points;     // one point is a dot; may leave the image (clipped)
+};
+
+struct Strokes {
+  std::vector<Stroke> strokes;
+  std::optional<Vec2> head_center;
+
+  // The distinct positive labels, sorted.
+  std::vector<int> labels() const;
+};
+
+// Strict reader: a malformed file throws hair25d::Error naming the file, the key
+// and what was expected.
+Strokes read_strokes(const std::filesystem::path& path);
+// The same from text; `source` names it in errors.
+Strokes parse_strokes(const std::string& text, const std::string& source);
+// Writes strokes.json atomically.
+void write_strokes(const std::filesystem::path& path, const Strokes& strokes);
+
+// Paints the strokes as round brushes of their width into a label map of the
+// given size: kNoStroke where no stroke passes, 0 under background strokes,
+// the label under hair strokes. Later strokes paint over earlier ones; points
+// outside the image are clipped.
+inline constexpr int kNoStroke = -1;
+LabelMap rasterize_strokes(const Strokes& strokes, int width, int height);
+
+}  // namespace hair25d

@@ -1,0 +1,94 @@
+#include "hair25d/core/atomic_file.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "hair25d/core/error.h"
+
+namespace hair25d {
+
+namespace fs = std::filesystem;
+
+fs::path temporary_sibling(const fs::path& target) {
+  // A per-process counter keeps two temporaries of one process apart; the pid
+  // keeps two processes apart.
+  static std::atomic<unsigned> counter{0};
+  const std::string name = "." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) +
+                           "-" + std::to_string(counter++) + target.extension().string();
+  return target.parent_path() / name;
+}
+
+void write_atomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
+  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(parent, ec)) {
+    throw Error(target.string() + ": the folder " + parent.string() + " does not exist");
+  }
+  const fs::path tmp = temporary_sibling(target);
+  try {
+    write(tmp);
+    fs::rename(tmp, target);
+  } catch (const fs::filesystem_error& e) {
+    fs::remove(tmp, ec);
+    throw Error(target.string() + ": cannot write: " + e.code().message());
+  } catch (...) {
+    fs::remove(tmp, ec);
+    throw;
+  }
+}
+
+void write_text_atomically(const fs::path& target, const std::string& text) {
+  write_atomically(target, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw Error(target.string() + ": cannot write the file");
+  });
+}
+
+std::string read_text_file(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw Error(path.string() + ": no such file");
+  if (fs::is_directory(path, ec)) throw Error(path.string() + ": is a folder, expected a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path.string() + ": cannot open the file for reading");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw Error(path.string() + ": read error");
+  return text.str();
+}
+
+void write_folder_atomically(const fs::path& target,
+                             const std::function<void(const fs::path&)>& fill) {
+  std::error_code ec;
+  if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
+    throw Error(target.string() + ": exists and is not a folder; refusing to replace it");
+  }
+  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  fs::create_directories(parent, ec);
+  if (ec) throw Error(parent.string() + ": cannot create the folder: " + ec.message());
+  const fs::path tmp = temporary_sibling(target);
+  const fs::path old = temporary_sibling(target);
+  try {
+    fs::create_directory(tmp);
+    fill(tmp);
+    // rename() cannot replace a non-empty folder: move the old one aside first,
+    // so that at every moment either the old or the new complete folder exists.
+    const bool had_old = fs::exists(target);
+    if (had_old) fs::rename(target, old);
+    fs::rename(tmp, target);
+    if (had_old) fs::remove_all(old, ec);
+  } catch (const fs::filesystem_error& e) {
+    fs::remove_all(tmp, ec);
+    throw Error(target.string() + ": cannot write the folder: " + e.code().message());
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+}
+
+}  // namespace hair25d

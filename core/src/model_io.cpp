@@ -1,0 +1,300 @@
+#include "hair25d/core/model_io.h"
+
+#include <set>
+
+#include "hair25d/core/atomic_file.h"
+#include "json_read.h"
+
+namespace hair25d {
+
+namespace fs = std::filesystem;
+namespace jr = json_read;
+using nlohmann::json;
+
+inline constexpr const char* kModelFormat = "hair25d-model";
+
+namespace {
+
+json points_json(const Polyline& points) {
+  json out = json::array();
+  for (const Vec2& p : points) out.push_back({p.x(), p.y()});
+  return out;
+}
+
+json mesh_json(const TriMesh2& mesh) {
+  json vertices = json::array(), triangles = json::array(), on_curve = json::array();
+  for (int i = 0; i < mesh.V.rows(); ++i) vertices.push_back({mesh.V(i, 0), mesh.V(i, 1)});
+  for (int t = 0; t < mesh.F.rows(); ++t) {
+    triangles.push_back({mesh.F(t, 0), mesh.F(t, 1), mesh.F(t, 2)});
+    if (mesh.on_curve.rows() == mesh.F.rows()) {
+      on_curve.push_back({mesh.on_curve(t, 0), mesh.on_curve(t, 1), mesh.on_curve(t, 2)});
+    }
+  }
+  json out = {{"vertices", vertices}, {"triangles", triangles}};
+  if (!on_curve.empty()) out["on_curve"] = on_curve;
+  return out;
+}
+
+// Model paths are relative and stay inside the model folder.
+fs::path checked_path(const fs::path& folder, const json& value, const std::string& source,
+                      const std::string& key) {
+  const std::string rel = jr::as_string(value, source, key);
+  const fs::path p(rel);
+  bool escapes = rel.empty() || p.is_absolute() || p.has_root_name();
+  for (const auto& part : p) escapes = escapes || part == "..";
+  if (escapes) jr::fail(source, key, "a relative path that stays inside the model folder", &value);
+  return folder / p;
+}
+
+Polyline read_points(const json& value, const std::string& source, const std::string& key) {
+  jr::expect_array(value, source, key);
+  Polyline out;
+  out.reserve(value.size());
+  for (std::size_t i = 0; i < value.size(); ++i)
+    out.push_back(jr::as_point(value[i], source, jr::index(key, i)));
+  return out;
+}
+
+TriMesh2 read_mesh(const json& value, const std::string& source, const std::string& key) {
+  jr::expect_object(value, source, key);
+  TriMesh2 mesh;
+  const Polyline v =
+      read_points(jr::member(value, source, key, "vertices"), source, jr::join(key, "vertices"));
+  mesh.V.resize(static_cast<Eigen::Index>(v.size()), 2);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    mesh.V.row(static_cast<Eigen::Index>(i)) = v[i].transpose();
+  const std::string tkey = jr::join(key, "triangles");
+  const json& tris = jr::member(value, source, key, "triangles");
+  jr::expect_array(tris, source, tkey);
+  mesh.F.resize(static_cast<Eigen::Index>(tris.size()), 3);
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const std::string at = jr::index(tkey, t);
+    if (!tris[t].is_array() || tris[t].size() != 3)
+      jr::fail(source, at, "three vertex indices", &tris[t]);
+    for (int k = 0; k < 3; ++k) {
+      const int idx = jr::as_int(tris[t][k], source, jr::index(at, k));
+      if (idx < 0 || idx >= static_cast<int>(v.size())) {
+        jr::fail(source, jr::index(at, k), "a vertex index in 0.." + std::to_string(v.size() - 1),
+                 &tris[t][k]);
+      }
+      mesh.F(static_cast<Eigen::Index>(t), k) = idx;
+    }
+  }
+  if (const json* oc = jr::optional_member(value, source, key, "on_curve")) {
+    const std::string okey = jr::join(key, "on_curve");
+    jr::expect_array(*oc, source, okey);
+    if (oc->size() != tris.size()) jr::fail(source, okey, "one entry per triangle", oc);
+    mesh.on_curve.resize(static_cast<Eigen::Index>(tris.size()), 3);
+    for (std::size_t t = 0; t < oc->size(); ++t) {
+      if (!(*oc)[t].is_array() || (*oc)[t].size() != 3)
+        jr::fail(source, jr::index(okey, t), "three booleans", &(*oc)[t]);
+      for (int k = 0; k < 3; ++k)
+        mesh.on_curve(static_cast<Eigen::Index>(t), k) =
+            jr::as_bool((*oc)[t][k], source, jr::index(okey, t));
+    }
+  }
+  try {
+    mesh.validate(key.c_str());
+  } catch (const Error& e) {
+    throw Error(source + ": " + e.what());
+  }
+  return mesh;
+}
+
+}  // namespace
+
+void write_model(const fs::path& folder, const HairModel& model) {
+  if (model.width <= 0 || model.height <= 0) {
+    throw Error(folder.string() + ": the model's size " + std::to_string(model.width) + "x" +
+                std::to_string(model.height) + " is not positive");
+  }
+  write_folder_atomically(folder, [&](const fs::path& tmp) {
+    json doc;
+    doc["format"] = kModelFormat;
+    doc["version"] = kModelFormatVersion;
+    doc["width"] = model.width;
+    doc["height"] = model.height;
+    if (!model.image.empty()) {
+      save_image(tmp / "image.png", model.image);
+      doc["image"] = "image.png";
+    }
+    if (!model.background.empty()) {
+      save_image(tmp / "background.png", model.background);
+      doc["background"] = "background.png";
+    }
+    if (model.head_center) doc["head_center"] = {model.head_center->x(), model.head_center->y()};
+    json strands = json::array();
+    bool made_folder = false;
+    for (const Strand& s : model.strands) {
+      json js;
+      js["id"] = s.id;
+      js["name"] = s.name;
+      js["regions"] = s.regions;
+      js["depth"] = s.depth;
+      js["outline"] = points_json(s.outline);
+      if (!s.texture.empty()) {
+        if (!made_folder) fs::create_directory(tmp / "strands");
+        made_folder = true;
+        const std::string rel = "strands/" + std::to_string(s.id) + ".png";
+        save_image(tmp / rel, s.texture);
+        js["texture"] = rel;
+        js["texture_origin"] = {s.texture_origin.x(), s.texture_origin.y()};
+      }
+      js["mesh"] = mesh_json(s.mesh);
+      js["skeleton"] = {{"nodes", points_json(s.skeleton.nodes)},
+                        {"parent", s.skeleton.parent},
+                        {"tips", s.skeleton.tips}};
+      js["physics"] = {{"stiffness", s.physics.stiffness},
+                       {"tau0", s.physics.tau0},
+                       {"lambda", s.physics.lambda},
+                       {"damping", s.physics.damping},
+                       {"gravity", s.physics.gravity}};
+      strands.push_back(js);
+    }
+    doc["strands"] = strands;
+    json relations = json::array();
+    for (const RegionRelation& r : model.relations) {
+      relations.push_back({{"a", r.a},
+                           {"b", r.b},
+                           {"relation", to_string(r.relation)},
+                           {"score", r.score},
+                           {"user_fixed", r.user_fixed},
+                           {"overridden", r.overridden}});
+    }
+    doc["relations"] = relations;
+    write_text_atomically(tmp / "model.json", doc.dump(1) + "\n");
+  });
+}
+
+HairModel read_model(const fs::path& folder, const ImageLimits& limits) {
+  const fs::path json_path = folder / "model.json";
+  const std::string src = json_path.string();
+  const json doc = jr::parse(read_text_file(json_path), src);
+  jr::expect_object(doc, src, "");
+  const std::string format = jr::as_string(jr::member(doc, src, "", "format"), src, "format");
+  if (format != kModelFormat)
+    jr::fail(src, "format", std::string("\"") + kModelFormat + "\"", &doc["format"]);
+  const int version = jr::as_int(jr::member(doc, src, "", "version"), src, "version");
+  if (version < 1 || version > kModelFormatVersion) {
+    jr::fail(src, "version", "a version in 1.." + std::to_string(kModelFormatVersion),
+             &doc["version"]);
+  }
+  HairModel m;
+  m.width = jr::as_int(jr::member(doc, src, "", "width"), src, "width");
+  m.height = jr::as_int(jr::member(doc, src, "", "height"), src, "height");
+  if (m.width <= 0 || m.width > limits.max_side)
+    jr::fail(src, "width", "a width in 1.." + std::to_string(limits.max_side), &doc["width"]);
+  if (m.height <= 0 || m.height > limits.max_side)
+    jr::fail(src, "height", "a height in 1.." + std::to_string(limits.max_side), &doc["height"]);
+  auto read_sized = [&](const char* key) {
+    Image img = load_image(checked_path(folder, doc[key], src, key), limits);
+    if (img.width() != m.width || img.height() != m.height) {
+      throw Error(src + ": key '" + key + "': image size " + std::to_string(img.width()) + "x" +
+                  std::to_string(img.height()) + " differs from the model's " +
+                  std::to_string(m.width) + "x" + std::to_string(m.height));
+    }
+    return img;
+  };
+  if (jr::optional_member(doc, src, "", "image")) m.image = read_sized("image");
+  if (jr::optional_member(doc, src, "", "background")) m.background = read_sized("background");
+  if (const json* h = jr::optional_member(doc, src, "", "head_center"))
+    m.head_center = jr::as_point(*h, src, "head_center");
+
+  const json& strands = jr::member(doc, src, "", "strands");
+  jr::expect_array(strands, src, "strands");
+  std::set<int> ids, region_ids;
+  for (std::size_t i = 0; i < strands.size(); ++i) {
+    const std::string at = jr::index("strands", i);
+    const json& js = strands[i];
+    jr::expect_object(js, src, at);
+    Strand s;
+    s.id = jr::as_int(jr::member(js, src, at, "id"), src, jr::join(at, "id"));
+    if (!ids.insert(s.id).second)
+      jr::fail(src, jr::join(at, "id"), "a strand id not used before", &js["id"]);
+    if (const json* n = jr::optional_member(js, src, at, "name"))
+      s.name = jr::as_string(*n, src, jr::join(at, "name"));
+    const std::string rkey = jr::join(at, "regions");
+    const json& regions = jr::member(js, src, at, "regions");
+    jr::expect_array(regions, src, rkey);
+    for (std::size_t k = 0; k < regions.size(); ++k) {
+      const int r = jr::as_int(regions[k], src, jr::index(rkey, k));
+      if (r <= 0) jr::fail(src, jr::index(rkey, k), "a region id > 0", &regions[k]);
+      s.regions.push_back(r);
+      region_ids.insert(r);
+    }
+    s.depth = jr::as_int(jr::member(js, src, at, "depth"), src, jr::join(at, "depth"));
+    s.outline = read_points(jr::member(js, src, at, "outline"), src, jr::join(at, "outline"));
+    if (const json* t = jr::optional_member(js, src, at, "texture")) {
+      s.texture = load_image(checked_path(folder, *t, src, jr::join(at, "texture")), limits);
+      const std::string okey = jr::join(at, "texture_origin");
+      const Vec2 o = jr::as_point(jr::member(js, src, at, "texture_origin"), src, okey);
+      s.texture_origin = {static_cast<int>(o.x()), static_cast<int>(o.y())};
+    }
+    s.mesh = read_mesh(jr::member(js, src, at, "mesh"), src, jr::join(at, "mesh"));
+    const std::string skey = jr::join(at, "skeleton");
+    const json& sk = jr::member(js, src, at, "skeleton");
+    jr::expect_object(sk, src, skey);
+    s.skeleton.nodes =
+        read_points(jr::member(sk, src, skey, "nodes"), src, jr::join(skey, "nodes"));
+    const int n = static_cast<int>(s.skeleton.nodes.size());
+    for (const char* list : {"parent", "tips"}) {
+      const std::string lkey = jr::join(skey, list);
+      const json& arr = jr::member(sk, src, skey, list);
+      jr::expect_array(arr, src, lkey);
+      std::vector<int>& out = std::string(list) == "parent" ? s.skeleton.parent : s.skeleton.tips;
+      for (std::size_t k = 0; k < arr.size(); ++k) {
+        const int v = jr::as_int(arr[k], src, jr::index(lkey, k));
+        const bool root_ok = std::string(list) == "parent" && v == -1;
+        if (!root_ok && (v < 0 || v >= n))
+          jr::fail(src, jr::index(lkey, k), "a node index in 0.." + std::to_string(n - 1), &arr[k]);
+        out.push_back(v);
+      }
+    }
+    if (static_cast<int>(s.skeleton.parent.size()) != n) {
+      jr::fail(src, jr::join(skey, "parent"), "one parent per node (" + std::to_string(n) + ")",
+               &sk["parent"]);
+    }
+    if (const json* ph = jr::optional_member(js, src, at, "physics")) {
+      const std::string pkey = jr::join(at, "physics");
+      jr::expect_object(*ph, src, pkey);
+      for (auto [key, field] :
+           {std::pair{"stiffness", &s.physics.stiffness}, std::pair{"tau0", &s.physics.tau0},
+            std::pair{"lambda", &s.physics.lambda}, std::pair{"damping", &s.physics.damping},
+            std::pair{"gravity", &s.physics.gravity}}) {
+        if (const json* v = jr::optional_member(*ph, src, pkey, key))
+          *field = jr::as_number(*v, src, jr::join(pkey, key));
+      }
+    }
+    m.strands.push_back(std::move(s));
+  }
+
+  const json& relations = jr::member(doc, src, "", "relations");
+  jr::expect_array(relations, src, "relations");
+  for (std::size_t i = 0; i < relations.size(); ++i) {
+    const std::string at = jr::index("relations", i);
+    const json& jr_rel = relations[i];
+    jr::expect_object(jr_rel, src, at);
+    RegionRelation r;
+    for (auto [key, field] : {std::pair{"a", &r.a}, std::pair{"b", &r.b}}) {
+      *field = jr::as_int(jr::member(jr_rel, src, at, key), src, jr::join(at, key));
+      if (!region_ids.count(*field))
+        jr::fail(src, jr::join(at, key), "a region id of some strand", &jr_rel[key]);
+    }
+    const auto parsed = parse_relation(
+        jr::as_string(jr::member(jr_rel, src, at, "relation"), src, jr::join(at, "relation")));
+    if (!parsed)
+      jr::fail(src, jr::join(at, "relation"), "\"above\", \"below\" or \"equal\"",
+               &jr_rel["relation"]);
+    r.relation = *parsed;
+    if (const json* v = jr::optional_member(jr_rel, src, at, "score"))
+      r.score = jr::as_number(*v, src, jr::join(at, "score"));
+    if (const json* v = jr::optional_member(jr_rel, src, at, "user_fixed"))
+      r.user_fixed = jr::as_bool(*v, src, jr::join(at, "user_fixed"));
+    if (const json* v = jr::optional_member(jr_rel, src, at, "overridden"))
+      r.overridden = jr::as_bool(*v, src, jr::join(at, "overridden"));
+    m.relations.push_back(r);
+  }
+  return m;
+}
+
+}  // namespace hair25d

@@ -1,0 +1,120 @@
+#include "hair25d/core/strokes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hair25d/core/atomic_file.h"
+#include "json_read.h"
+
+namespace hair25d {
+
+namespace jr = json_read;
+using nlohmann::json;
+
+inline constexpr const char* kStrokesFormat = "hair25d-strokes/1";
+
+std::vector<int> Strokes::labels() const {
+  std::vector<int> out;
+  for (const Stroke& s : strokes) {
+    if (s.label > 0) out.push_back(s.label);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+Strokes parse_strokes(const std::string& text, const std::string& source) {
+  const json doc = jr::parse(text, source);
+  jr::expect_object(doc, source, "");
+  const std::string format = jr::as_string(jr::member(doc, source, "", "format"), source, "format");
+  if (format != kStrokesFormat) {
+    jr::fail(source, "format", std::string("\"") + kStrokesFormat + "\"", &doc["format"]);
+  }
+  Strokes out;
+  if (const json* head = jr::optional_member(doc, source, "", "head_center")) {
+    out.head_center = jr::as_point(*head, source, "head_center");
+  }
+  const json& list = jr::member(doc, source, "", "strokes");
+  jr::expect_array(list, source, "strokes");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string at = jr::index("strokes", i);
+    const json& item = list[i];
+    jr::expect_object(item, source, at);
+    Stroke s;
+    s.label = jr::as_int(jr::member(item, source, at, "label"), source, jr::join(at, "label"));
+    if (s.label < 0) jr::fail(source, jr::join(at, "label"), "an integer >= 0", &item["label"]);
+    s.width = jr::as_number(jr::member(item, source, at, "width"), source, jr::join(at, "width"));
+    if (s.width < 1.0) jr::fail(source, jr::join(at, "width"), "a number >= 1", &item["width"]);
+    const std::string pkey = jr::join(at, "points");
+    const json& points = jr::member(item, source, at, "points");
+    jr::expect_array(points, source, pkey);
+    if (points.empty()) jr::fail(source, pkey, "at least one point", &points);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      s.points.push_back(jr::as_point(points[k], source, jr::index(pkey, k)));
+    }
+    out.strokes.push_back(std::move(s));
+  }
+  return out;
+}
+
+Strokes read_strokes(const std::filesystem::path& path) {
+  return parse_strokes(read_text_file(path), path.string());
+}
+
+void write_strokes(const std::filesystem::path& path, const Strokes& strokes) {
+  json doc;
+  doc["format"] = kStrokesFormat;
+  if (strokes.head_center)
+    doc["head_center"] = {strokes.head_center->x(), strokes.head_center->y()};
+  json list = json::array();
+  for (const Stroke& s : strokes.strokes) {
+    json points = json::array();
+    for (const Vec2& p : s.points) points.push_back({p.x(), p.y()});
+    list.push_back({{"label", s.label}, {"width", s.width}, {"points", points}});
+  }
+  doc["strokes"] = list;
+  write_text_atomically(path, doc.dump(1) + "\n");
+}
+
+namespace {
+// Paints a round brush of radius r along segment a-b (inclusive) into labels.
+void paint_segment(LabelMap& labels, const Vec2& a, const Vec2& b, double r, int value) {
+  const int x0 = std::max(0, static_cast<int>(std::floor(std::min(a.x(), b.x()) - r)));
+  const int x1 =
+      std::min(labels.width() - 1, static_cast<int>(std::ceil(std::max(a.x(), b.x()) + r)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(std::min(a.y(), b.y()) - r)));
+  const int y1 =
+      std::min(labels.height() - 1, static_cast<int>(std::ceil(std::max(a.y(), b.y()) + r)));
+  const Vec2 d = b - a;
+  const double len2 = d.squaredNorm();
+  const double r2 = r * r;
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      // Pixel (x, y) is sampled at its centre; coordinates name the pixel, so
+      // stroke points are centred too.
+      const Vec2 p(x, y);
+      double t = len2 > 0.0 ? (p - a).dot(d) / len2 : 0.0;
+      t = std::clamp(t, 0.0, 1.0);
+      if ((p - (a + t * d)).squaredNorm() <= r2) labels.at(x, y) = value;
+    }
+  }
+}
+}  // namespace
+
+LabelMap rasterize_strokes(const Strokes& strokes, int width, int height) {
+  LabelMap labels(width, height, kNoStroke);
+  for (const Stroke& s : strokes.strokes) {
+    // A brush of width 1 still marks the pixel it passes through.
+    const double r = std::max(0.5, s.width / 2.0);
+    if (s.points.size() == 1) {
+      paint_segment(labels, s.points[0], s.points[0], r, s.label);
+    } else {
+      for (std::size_t i = 1; i < s.points.size(); ++i) {
+        paint_segment(labels, s.points[i - 1], s.points[i], r, s.label);
+      }
+    }
+  }
+  return labels;
+}
+
+}  // namespace hair25d

@@ -1,0 +1,84 @@
+// Options of the D2Q9 lattice-Boltzmann wind solver that blows on the hair skeletons
+// (Yeh et al. 2015, §6.1: "the lattice Boltzmann model ... with the hair skeleton as the
+// boundary"). Everything here is in lattice units: one cell is 1 long, one step lasts 1 (see wind.h
+// for image units).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hair25d/core/geometry.h"
+
+namespace hair25d::fluid {
+
+// Grid coordinates: x right, y down (as in images). Cell (i, j) is the square
+// [i, i+1) x [j, j+1); its lattice node sits at (i + 0.5, j + 0.5). "top" is y = 0.
+
+enum class Collision {
+  kBgk,  // single relaxation time; stable for tau well above 1/2
+  kTrt,  // two relaxation times (Ginzburg); stays stable at low viscosity
+};
+
+enum class Precision { kFloat, kDouble };
+
+enum class SideKind {
+  kPeriodic,  // leaves through this side, comes back through the opposite one (both must be
+              // periodic)
+  kWall,      // no-slip wall half a cell outside the grid; `velocity` makes it a moving wall (lid)
+  kInlet,     // velocity inlet: `velocity` (times `profile`), imposed by moving-wall bounce-back
+  kOutflow,   // zero-gradient outflow: the missing populations are copied from the last cell
+};
+
+enum class SideName { kLeft, kRight, kTop, kBottom };
+
+struct Side {
+  SideKind kind = SideKind::kPeriodic;
+  // Velocity of a moving wall or of the inlet flow, lattice units (cells per step); |v| <= 0.2.
+  Vec2 velocity = Vec2::Zero();
+  // Inlet only, optional: one factor per cell along the side (length = grid height for
+  // left/right, width for top/bottom) multiplying `velocity`, e.g. a parabolic profile.
+  std::vector<double> profile;
+};
+
+struct Options {
+  int width = 0;   // cells along x, >= 2
+  int height = 0;  // cells along y, >= 2
+  // Relaxation time of the viscous (symmetric) moments; kinematic viscosity nu = (tau - 1/2) / 3.
+  double tau = 0.6;
+  Collision collision = Collision::kTrt;
+  // TRT "magic" number Lambda = (tau+ - 1/2)(tau- - 1/2). 1/4 is the most stable choice;
+  // 3/16 puts bounce-back walls exactly half-way between nodes for every tau.
+  double trt_magic = 0.25;
+  Precision precision = Precision::kFloat;
+  int threads = 1;  // worker threads over rows, 1..64
+
+  Side left, right, top, bottom;  // default: periodic everywhere
+
+  // Uniform body acceleration (cells / step^2), e.g. the pressure gradient of a periodic channel.
+  Vec2 body_acceleration = Vec2::Zero();
+
+  // Static obstacles. `obstacle_labels` is empty or height x width (row y, column x):
+  // 0 = fluid, k > 0 = solid cell of obstacle k. Each polygon of `obstacle_polygons` (grid
+  // coordinates) becomes one more obstacle, labelled max(label) + 1 + its index; a cell is
+  // solid when its node lies inside. Forces are reported per label.
+  Eigen::MatrixXi obstacle_labels;
+  std::vector<Polyline> obstacle_polygons;
+
+  // Empty string or nullptr-safe: names the option, its value and the rule broken, e.g.
+  // "fluid::Options::tau = 0.48; must be > 0.5".
+  bool is_valid(std::string* error) const;
+
+  const Side& side(SideName name) const;
+  Side& side(SideName name);
+};
+
+// Lattice viscosity of a relaxation time and back: nu = (tau - 1/2) / 3.
+double viscosity_of_tau(double tau);
+double tau_of_viscosity(double nu);
+
+// Largest lattice speed accepted anywhere (Mach 0.35); keep flows near 0.1 for accuracy.
+inline constexpr double kMaxLatticeSpeed = 0.2;
+
+}  // namespace hair25d::fluid

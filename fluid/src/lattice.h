@@ -1,0 +1,52 @@
+// Private interface between the public Solver and the lattice, which is templated on the
+// scalar type (float or double) and chosen at run time.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hair25d/fluid/options.h"
+#include "hair25d/fluid/solver.h"
+
+namespace hair25d::fluid {
+
+// One lattice link cut by a filament, seen from the fluid cell that receives the bounced
+// population: the population arriving at `cell` along direction `dir` comes back from the wall.
+struct CutLink {
+  std::int32_t cell = 0;      // y * width + x
+  std::uint8_t dir = 0;       // D2Q9 direction of the incoming population (1..8)
+  double ux = 0.0, uy = 0.0;  // wall velocity at the crossing
+  std::int32_t owner = 0;     // global segment id
+};
+
+class LatticeBase {
+ public:
+  virtual ~LatticeBase() = default;
+  // One time step; returns the sum of |u|^2 over the bulk (NaN or huge when diverged).
+  virtual double step() = 0;
+  // `links` sorted by (cell, dir), unique.
+  virtual void set_cut_links(const std::vector<CutLink>& links, int segment_count) = 0;
+  virtual const std::vector<Vec2>& segment_forces() const = 0;   // by global segment id
+  virtual const std::vector<Vec2>& obstacle_forces() const = 0;  // index = label - 1
+  virtual void set_inlet(SideName side, const std::vector<Vec2>& per_cell) = 0;
+  virtual void set_body_acceleration(const Vec2& g) = 0;
+  virtual void initialize(const Eigen::MatrixXd& rho, const Eigen::MatrixXd& ux,
+                          const Eigen::MatrixXd& uy) = 0;
+  virtual void read(FlowField& out) const = 0;
+  virtual double density(int x, int y) const = 0;
+  virtual Vec2 velocity(int x, int y) const = 0;
+  virtual double total_mass() const = 0;
+};
+
+// `options` must be valid; `labels` is height x width, 0 fluid, k > 0 obstacle k.
+std::unique_ptr<LatticeBase> make_lattice(const Options& options, const Eigen::MatrixXi& labels);
+
+// All links cut by the filaments, sorted by (cell, dir) and unique. Also returns per filament
+// the global id of its first segment through `first_segment` (size = filaments + 1).
+std::vector<CutLink> cut_links(const std::vector<Filament>& filaments, int width, int height,
+                               std::vector<int>* first_segment);
+
+}  // namespace hair25d::fluid

@@ -1,0 +1,18 @@
+// The sub-commands of the hair25d command line (DESIGN.md "The command line").
+// Each add_*_command registers its options and a callback on the CLI11 app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "progress_bar.h"
+
+namespace hair25d::cli {
+
+// Options every command shares.
+struct CommonOptions {
+  bool quiet = false;  // --quiet: no progress output
+};
+
+void add_version_command(CLI::App& app, const CommonOptions& common);
+
+}  // namespace hair25d::cli
