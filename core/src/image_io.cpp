@@ -47,7 +47,11 @@ std::unique_ptr<oiio::ImageInput> open_checked(const fs::path& path, const Image
   if (!fs::exists(path, ec)) throw Error(path.string() + ": no such file");
   if (fs::is_directory(path, ec)) throw Error(path.string() + ": is a folder, expected an image");
   if (fs::file_size(path, ec) == 0) throw Error(path.string() + ": the file is empty");
-  auto in = oiio::ImageInput::open(path.string());
+  // Drawings store straight (unassociated) alpha; OpenImageIO would
+  // premultiply on read unless told not to, which darkens soft edges.
+  oiio::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = oiio::ImageInput::open(path.string(), &config);
   if (!in) {
     throw Error(path.string() + ": not a readable image (" + oiio_message("unknown format") + ")");
   }
@@ -154,6 +158,7 @@ void save_image(const fs::path& path, const Image& image) {
   if (image.empty()) throw Error(path.string() + ": refusing to save an empty image");
   oiio::ImageSpec spec(image.width(), image.height(), 4, oiio::TypeDesc::UINT8);
   spec.alpha_channel = 3;
+  spec.attribute("oiio:UnassociatedAlpha", 1);  // our pixels are straight alpha
   write_atomically(path,
                    [&](const fs::path& tmp) { write_pixels(path, tmp, spec, image.bytes()); });
 }

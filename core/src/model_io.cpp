@@ -108,6 +108,9 @@ void write_model(const fs::path& folder, const HairModel& model) {
     throw Error(folder.string() + ": the model's size " + std::to_string(model.width) + "x" +
                 std::to_string(model.height) + " is not positive");
   }
+  for (const Strand& s : model.strands) {
+    s.mesh.validate(("strand " + std::to_string(s.id) + " mesh").c_str());
+  }
   write_folder_atomically(folder, [&](const fs::path& tmp) {
     json doc;
     doc["format"] = kModelFormat;
