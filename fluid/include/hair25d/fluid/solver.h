@@ -94,10 +94,11 @@ class Solver {
  private:
   Options options_;
   std::unique_ptr<LatticeBase> lattice_;
+  std::vector<int> first_segment_;       // global id of each filament's first segment, + total
+  std::vector<Vec2> segment_normals_;    // unit, by global segment id
+  std::vector<double> segment_lengths_;  // by global segment id
   std::vector<std::vector<SegmentForce>> segment_forces_;
-  std::vector<std::vector<std::int32_t>> segment_ids_;  // global id of each segment
-  std::vector<std::vector<double>> segment_lengths_;
-  std::vector<Vec2> segment_normals_;
+  std::vector<int> obstacle_ids_;  // labels present, ascending
   std::int64_t steps_ = 0;
   bool diverged_ = false;
 };
