@@ -1,0 +1,33 @@
+// From pairwise relations to a drawing order (paper §4.5, "apply topological
+// sort"): regions at the same depth are merged, the strongest relations are
+// kept, and any relation that would close a cycle is overridden.
+#pragma once
+
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "hair25d/core/hair_model.h"
+
+namespace hair25d::layering {
+
+struct DepthOrder {
+  // Region id → depth: 0 is drawn first (back-most); a region above another
+  // always has a larger depth, regions related by kEqual share one.
+  std::map<int, int> depth;
+  // The relations, with those contradicting the order flipped to agree with it
+  // and marked `overridden` (their score keeps the original sign).
+  std::vector<RegionRelation> relations;
+  std::vector<std::pair<int, int>> overridden;  // (a, b) of overridden relations
+};
+
+// Orders `regions` (ids; every id named by a relation must be listed) by the
+// relations. Relations are taken strongest first (user-fixed ones before all,
+// then by |score|); one that would close a cycle is overridden. Depth is the
+// longest chain of "below" relations under a region, so it does not depend on
+// how regions are numbered. Throws hair25d::Error for a relation naming an
+// unlisted region or a region related to itself.
+DepthOrder order_regions(const std::vector<int>& regions,
+                         const std::vector<RegionRelation>& relations);
+
+}  // namespace hair25d::layering

@@ -1,0 +1,95 @@
+// Cartoon hair layering (paper §4): from a drawing and its region label map to
+// a relation (above / below / equal, with a score) for every pair of
+// neighbouring regions and a drawing order, optionally with user-fixed pairs.
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hair25d/core/geometry.h"
+#include "hair25d/core/hair_model.h"
+#include "hair25d/core/image.h"
+#include "hair25d/core/progress.h"
+#include "hair25d/layering/boundary_graph.h"
+
+namespace hair25d::layering {
+
+struct Options {
+  double junction_weight = 0.25;  // w in Eq. (1)
+  // Cap of φ_ij = tan(|(θ mod π) − π/2|) in Eq. (2); θ near 0 or π would be infinite.
+  double coupling_cap = 4.0;
+  // Width of the drawn lines in pixels; <= 0 estimates it from the outlines
+  // of the label map, or from the image when the map has none.
+  double line_width = 0.0;
+  // A boundary is occluding when its line contrast (grey levels, 0..255) is at
+  // least this; <= 0 sets it from the image's own statistics (a fraction of the
+  // typical contrast of its boundaries, above its noise level).
+  double line_threshold = 0.0;
+  double line_threshold_fraction = 0.4;  // of the typical boundary contrast, when automatic
+  // Junction angles are measured on a line fitted to the boundary within this
+  // arc length of the junction, in line widths (never under 3 pixels).
+  double fit_reach_widths = 2.0;
+  // A pair of regions is "equal" when less than this share of their common
+  // boundary length is occluding.
+  double equal_fraction = 0.5;
+  // Give label-0 outline pixels to the regions they separate first (FORMATS.md).
+  bool fill_outlines = true;
+  // Boundaries between hair and background take part in Eq. (2) (they carry
+  // the strands' outlines through junctions); relations with background are
+  // never reported.
+  bool background_states = true;
+  // User decisions kept when re-solving (the studio's "flip this arrow"):
+  // their boundaries are clamped to the given relation.
+  std::vector<RegionRelation> fixed;
+
+  // False, naming the option, its value and the rule, if unusable.
+  bool is_valid(std::string* error) const;
+};
+
+// What was measured on one boundary (diagnostics and overlays).
+struct BoundaryReport {
+  int left = 0, right = 0;       // labels, left/right walking start → end
+  double length = 0.0;           // pixels
+  double line_contrast = 0.0;    // median grey-level contrast of a dark line on it
+  bool occluding = false;
+  double phi_j = 0.0;            // Φ̂_J, left region above right when positive
+  double phi_r = 0.0;            // Φ_R / ‖L‖²
+  double phi = 0.0;              // Eq. (1)
+  int state = 0;                 // +1 left above, −1 right above, 0 no state
+};
+
+// Where the relation of a pair is drawn: a point on their longest common
+// boundary and the unit normal there pointing from a's side into b's side.
+struct RelationAnchor {
+  Vec2 point = Vec2::Zero();
+  Vec2 normal = Vec2(1, 0);
+};
+
+struct Result {
+  // One per pair of neighbouring hair regions (a < b), plus fixed pairs;
+  // relations contradicting the order are flipped and marked overridden.
+  std::vector<RegionRelation> relations;
+  std::vector<RelationAnchor> anchors;  // parallel to `relations`
+  std::map<int, int> depth;             // region id → depth, 0 = back-most
+  std::vector<std::pair<int, int>> overridden;  // pairs dropped to break cycles
+  // Diagnostics.
+  BoundaryGraph graph;                  // on `labels`
+  std::vector<BoundaryReport> boundaries;  // parallel to graph.boundaries
+  LabelMap labels;                      // the regions after outline filling
+  double line_width = 0.0;              // used, pixels
+  double line_threshold = 0.0;          // used, grey levels
+  int states = 0;                       // boundary states in Eq. (2)
+  int dropped_couplings = 0;            // frustrated couplings left out (0: exact)
+  std::string summary;                  // one line: what was solved and how
+};
+
+// Layers the hair regions of `regions` (non-zero labels; 0 = background and
+// outlines) drawn in `image`. Throws hair25d::Error when the sizes differ,
+// there are fewer than two hair regions, no two hair regions meet at a
+// junction, or the options are invalid.
+Result layer_regions(const Image& image, const LabelMap& regions, const Options& options = {},
+                     Progress* progress = nullptr);
+
+}  // namespace hair25d::layering

@@ -1,0 +1,179 @@
+// Crack-grid tracing: every boundary is a chain of unit edges between pixel
+// corners, so lengths, areas and junction positions are exact and the cost is
+// one pass over the corners.
+#include "hair25d/layering/boundary_graph.h"
+
+#include <array>
+#include <cstdint>
+
+#include "hair25d/core/error.h"
+
+namespace hair25d::layering {
+namespace {
+
+// Directions of travel on the screen: right, down, left, up.
+constexpr std::array<int, 4> kDx = {1, 0, -1, 0};
+constexpr std::array<int, 4> kDy = {0, 1, 0, -1};
+int opposite(int d) { return (d + 2) & 3; }
+
+class CrackGrid {
+ public:
+  explicit CrackGrid(const LabelMap& labels)
+      : labels_(labels), w_(labels.width()), h_(labels.height()) {}
+
+  int label(int x, int y) const {
+    return (x < 0 || y < 0 || x >= w_ || y >= h_) ? kOutsideLabel : labels_.at(x, y);
+  }
+  // The four pixels around corner (x, y): top-left, top-right, bottom-left, bottom-right.
+  std::array<int, 4> around(int x, int y) const {
+    return {label(x - 1, y - 1), label(x, y - 1), label(x - 1, y), label(x, y)};
+  }
+  // Whether the crack edge leaving corner (x, y) in direction d exists.
+  static bool has_edge(const std::array<int, 4>& q, int d) {
+    switch (d) {
+      case 0: return q[1] != q[3];  // right: between top-right and bottom-right
+      case 1: return q[2] != q[3];  // down: between bottom-left and bottom-right
+      case 2: return q[0] != q[2];  // left: between top-left and bottom-left
+      default: return q[0] != q[1];  // up: between top-left and top-right
+    }
+  }
+  // Undirected index of the crack edge leaving corner (x, y) in direction d.
+  std::size_t edge_index(int x, int y, int d) const {
+    const std::size_t horizontal = static_cast<std::size_t>(h_ + 1) * w_;
+    switch (d) {
+      case 0: return static_cast<std::size_t>(y) * w_ + x;
+      case 2: return static_cast<std::size_t>(y) * w_ + (x - 1);
+      case 1: return horizontal + static_cast<std::size_t>(y) * (w_ + 1) + x;
+      default: return horizontal + static_cast<std::size_t>(y - 1) * (w_ + 1) + x;
+    }
+  }
+  std::size_t edge_count() const {
+    return static_cast<std::size_t>(h_ + 1) * w_ + static_cast<std::size_t>(w_ + 1) * h_;
+  }
+  // Labels on the left and right of travel from corner (x, y) in direction d
+  // (screen orientation: y grows downwards).
+  void sides(int x, int y, int d, int* left, int* right) const {
+    switch (d) {
+      case 0: *left = label(x, y - 1); *right = label(x, y); break;
+      case 1: *left = label(x, y); *right = label(x - 1, y); break;
+      case 2: *left = label(x - 1, y); *right = label(x - 1, y - 1); break;
+      default: *left = label(x - 1, y - 1); *right = label(x, y - 1); break;
+    }
+  }
+  int width() const { return w_; }
+  int height() const { return h_; }
+
+ private:
+  const LabelMap& labels_;
+  int w_, h_;
+};
+
+bool is_junction(const std::array<int, 4>& q) {
+  int distinct = 1;
+  for (int i = 1; i < 4; ++i) {
+    bool seen = false;
+    for (int j = 0; j < i; ++j) seen = seen || q[j] == q[i];
+    if (!seen) ++distinct;
+  }
+  return distinct >= 3;
+}
+
+// At a non-junction corner reached by travelling in direction `arrived`, the
+// direction to leave in. Degree-2 corners have one choice; at a saddle (two
+// labels meeting diagonally) the pixels of the smaller label are joined.
+int continue_direction(const std::array<int, 4>& q, int arrived) {
+  const int back = opposite(arrived);
+  int degree = 0;
+  for (int d = 0; d < 4; ++d) degree += CrackGrid::has_edge(q, d) ? 1 : 0;
+  if (degree == 2) {
+    for (int d = 0; d < 4; ++d)
+      if (d != back && CrackGrid::has_edge(q, d)) return d;
+  }
+  // Saddle: q = {A, B, B, A}. Joining the A diagonal (top-left with
+  // bottom-right) leaves top-right enclosed by up+right and bottom-left by
+  // down+left; joining B pairs up+left and right+down.
+  const bool join_main_diagonal = q[0] < q[1];
+  static constexpr std::array<int, 4> kPairMain = {3, 2, 1, 0};   // right<->up, down<->left
+  static constexpr std::array<int, 4> kPairOther = {1, 0, 3, 2};  // right<->down, left<->up
+  return join_main_diagonal ? kPairMain[back] : kPairOther[back];
+}
+
+}  // namespace
+
+double Boundary::length() const {
+  // Crack edges have unit length, so the count of segments is the length.
+  if (points.empty()) return 0.0;
+  return closed() ? static_cast<double>(points.size()) : static_cast<double>(points.size() - 1);
+}
+
+BoundaryGraph build_boundary_graph(const LabelMap& labels) {
+  if (labels.empty())
+    throw Error("layering: label map is empty (" + std::to_string(labels.width()) + "x" +
+                std::to_string(labels.height()) + "); need at least one pixel");
+  const CrackGrid grid(labels);
+  const int w = grid.width();
+  const int h = grid.height();
+  BoundaryGraph graph;
+  graph.width = w;
+  graph.height = h;
+
+  const std::size_t corners = static_cast<std::size_t>(w + 1) * (h + 1);
+  std::vector<int> junction_at(corners, -1);
+  for (int y = 0; y <= h; ++y) {
+    for (int x = 0; x <= w; ++x) {
+      if (is_junction(grid.around(x, y))) {
+        junction_at[static_cast<std::size_t>(y) * (w + 1) + x] =
+            static_cast<int>(graph.junctions.size());
+        graph.junctions.push_back({Vec2(x, y), {}});
+      }
+    }
+  }
+
+  std::vector<std::uint8_t> visited(grid.edge_count(), 0);
+  auto trace = [&](int x0, int y0, int d0) {
+    Boundary b;
+    grid.sides(x0, y0, d0, &b.left, &b.right);
+    b.start = junction_at[static_cast<std::size_t>(y0) * (w + 1) + x0];
+    b.points.emplace_back(x0, y0);
+    int x = x0, y = y0, d = d0;
+    for (;;) {
+      visited[grid.edge_index(x, y, d)] = 1;
+      x += kDx[d];
+      y += kDy[d];
+      const int j = junction_at[static_cast<std::size_t>(y) * (w + 1) + x];
+      if (j >= 0) {
+        b.points.emplace_back(x, y);
+        b.end = j;
+        break;
+      }
+      d = continue_direction(grid.around(x, y), d);
+      if (x == x0 && y == y0 && visited[grid.edge_index(x, y, d)]) break;  // closed loop
+      b.points.emplace_back(x, y);
+    }
+    const int id = static_cast<int>(graph.boundaries.size());
+    if (b.start >= 0) {
+      graph.junctions[b.start].boundaries.push_back(id);
+      graph.junctions[b.end].boundaries.push_back(id);
+    }
+    graph.boundaries.push_back(std::move(b));
+  };
+
+  for (const Junction& junction : std::vector<Junction>(graph.junctions)) {
+    const int x = static_cast<int>(junction.position.x());
+    const int y = static_cast<int>(junction.position.y());
+    const auto q = grid.around(x, y);
+    for (int d = 0; d < 4; ++d)
+      if (CrackGrid::has_edge(q, d) && !visited[grid.edge_index(x, y, d)]) trace(x, y, d);
+  }
+  // What is left are closed loops with no junction (a region inside another).
+  for (int y = 0; y <= h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!CrackGrid::has_edge(grid.around(x, y), 0) || visited[grid.edge_index(x, y, 0)])
+        continue;
+      trace(x, y, 0);
+    }
+  }
+  return graph;
+}
+
+}  // namespace hair25d::layering

@@ -1,0 +1,338 @@
+#include "hair25d/layering/layering.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "hair25d/core/error.h"
+#include "hair25d/layering/depth_order.h"
+#include "hair25d/layering/metrics.h"
+#include "hair25d/layering/optimizer.h"
+#include "line_response.h"
+
+namespace hair25d::layering {
+namespace {
+
+constexpr double kClamp = 1e6;  // unary that pins a user-fixed boundary
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+bool positive_finite(double v) { return std::isfinite(v) && v > 0; }
+
+// One end of a boundary at a junction, walked away from the junction.
+struct Ray {
+  int boundary = 0;
+  bool at_start = true;
+  Vec2 direction;
+};
+
+std::pair<int, int> key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+
+Relation relation_of_sign(double s) { return s >= 0 ? Relation::kAbove : Relation::kBelow; }
+
+}  // namespace
+
+bool Options::is_valid(std::string* error) const {
+  auto fail = [&](const std::string& what) {
+    if (error) *error = "layering::Options::" + what;
+    return false;
+  };
+  if (!(std::isfinite(junction_weight) && junction_weight >= 0))
+    return fail("junction_weight = " + num(junction_weight) + "; must be finite and >= 0");
+  if (!positive_finite(coupling_cap))
+    return fail("coupling_cap = " + num(coupling_cap) + "; must be finite and > 0");
+  if (!std::isfinite(line_width))
+    return fail("line_width = " + num(line_width) + "; must be finite (<= 0: estimate)");
+  if (!std::isfinite(line_threshold))
+    return fail("line_threshold = " + num(line_threshold) + "; must be finite (<= 0: automatic)");
+  if (!(line_threshold_fraction > 0 && line_threshold_fraction < 1))
+    return fail("line_threshold_fraction = " + num(line_threshold_fraction) +
+                "; must be in (0, 1)");
+  if (!positive_finite(fit_reach_widths))
+    return fail("fit_reach_widths = " + num(fit_reach_widths) + "; must be finite and > 0");
+  if (!(equal_fraction >= 0 && equal_fraction <= 1))
+    return fail("equal_fraction = " + num(equal_fraction) + "; must be in [0, 1]");
+  for (const RegionRelation& r : fixed)
+    if (r.a <= 0 || r.b <= 0 || r.a == r.b)
+      return fail("fixed has the pair (" + std::to_string(r.a) + ", " + std::to_string(r.b) +
+                  "); must be two different hair region ids > 0");
+  return true;
+}
+
+Result layer_regions(const Image& image, const LabelMap& regions, const Options& options,
+                     Progress* progress) {
+  std::string why;
+  if (!options.is_valid(&why)) throw Error(why);
+  if (regions.empty()) throw Error("layering: the region map is empty; need at least one pixel");
+  if (image.width() != regions.width() || image.height() != regions.height())
+    throw Error("layering: the region map is " + std::to_string(regions.width()) + "x" +
+                std::to_string(regions.height()) + " but the image is " +
+                std::to_string(image.width()) + "x" + std::to_string(image.height()) +
+                "; they must have the same size");
+  const std::vector<int> ids = regions.labels();
+  if (ids.size() < 2)
+    throw Error("layering: the region map has " + std::to_string(ids.size()) +
+                " hair region(s); layering needs at least two");
+  for (const RegionRelation& r : options.fixed)
+    for (int id : {r.a, r.b})
+      if (!std::binary_search(ids.begin(), ids.end(), id))
+        throw Error("layering::Options::fixed names region " + std::to_string(id) +
+                    ", which is not in the region map");
+  report(progress, "layering", 0.0, "boundaries");
+
+  Result out;
+  OutlineFill fill;
+  if (options.fill_outlines) {
+    fill = fill_outlines(regions);
+    out.labels = std::move(fill.labels);
+  } else {
+    out.labels = regions;
+  }
+  out.line_width = options.line_width > 0   ? options.line_width
+                   : fill.line_width > 0    ? fill.line_width
+                                            : detail::LineResponse::estimate_line_width(image);
+  out.graph = build_boundary_graph(out.labels);
+  const BoundaryGraph& graph = out.graph;
+  const auto& bs = graph.boundaries;
+  const int nb = static_cast<int>(bs.size());
+  out.boundaries.resize(nb);
+
+  // --- Occluding boundaries: on a drawn line (§4.1). ---
+  report(progress, "layering", 0.2, "line response");
+  const detail::LineResponse lines(image, out.line_width);
+  std::set<std::pair<int, int>> fixed_equal;
+  for (const RegionRelation& r : options.fixed)
+    if (r.relation == Relation::kEqual) fixed_equal.insert(key(r.a, r.b));
+  std::vector<std::pair<double, double>> weighted;  // (contrast, length)
+  for (int i = 0; i < nb; ++i) {
+    const Boundary& b = bs[i];
+    BoundaryReport& rep = out.boundaries[i];
+    rep.left = b.left;
+    rep.right = b.right;
+    rep.length = b.length();
+    if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+    Polyline curve = b.points;
+    if (b.closed()) curve.push_back(curve.front());
+    rep.line_contrast = lines.boundary_contrast(curve, 1.5 * out.line_width);
+    weighted.emplace_back(rep.line_contrast, rep.length);
+  }
+  if (options.line_threshold > 0) {
+    out.line_threshold = options.line_threshold;
+  } else {
+    // Most boundaries of a drawing are drawn lines: the contrast below which a
+    // quarter of the boundary length lies is a robust "typical line".
+    std::sort(weighted.begin(), weighted.end());
+    double total = 0.0;
+    for (const auto& [c, len] : weighted) total += len;
+    double typical = 0.0, acc = 0.0;
+    for (const auto& [c, len] : weighted) {
+      acc += len;
+      typical = c;
+      if (acc >= 0.25 * total) break;
+    }
+    const double floor = std::max(6.0, 4.0 * lines.noise_sigma());
+    out.line_threshold = std::max(floor, options.line_threshold_fraction * typical);
+  }
+  for (int i = 0; i < nb; ++i) {
+    const Boundary& b = bs[i];
+    BoundaryReport& rep = out.boundaries[i];
+    if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+    rep.occluding = rep.line_contrast >= out.line_threshold &&
+                    !fixed_equal.contains(key(b.left, b.right));
+  }
+
+  // --- Junction angles, Φ_J, Φ_R, Φ (§4.2–4.4). ---
+  report(progress, "layering", 0.4, "metrics");
+  const double reach = std::max(3.0, options.fit_reach_widths * out.line_width);
+  const int nj = static_cast<int>(graph.junctions.size());
+  std::vector<std::vector<Ray>> rays(nj);
+  std::vector<char> cusp(nj, 0);
+  for (int i = 0; i < nb; ++i) {
+    const Boundary& b = bs[i];
+    if (b.closed()) continue;
+    rays[b.start].push_back({i, true, leaving_direction(b.points, reach)});
+    Polyline back(b.points.rbegin(), b.points.rend());
+    rays[b.end].push_back({i, false, leaving_direction(back, reach)});
+    const bool on_border = b.left == kOutsideLabel || b.right == kOutsideLabel;
+    if (!on_border && !out.boundaries[i].occluding) cusp[b.start] = cusp[b.end] = 1;
+  }
+  bool hair_junction = false;
+  for (int j = 0; j < nj; ++j) {
+    std::vector<Vec2> dirs;
+    for (const Ray& r : rays[j]) dirs.push_back(r.direction);
+    const RaySectors around = sectors_around(dirs);
+    const int n = static_cast<int>(dirs.size());
+    for (int k = 0; k < n; ++k) {
+      const Ray& r = rays[j][around.order[k]];
+      const Boundary& b = bs[r.boundary];
+      if (b.left > 0 && b.right > 0) hair_junction = true;
+      const double after = around.sectors[k];
+      const double before = around.sectors[(k + n - 1) % n];
+      // Walking away from the start, `left` fills the sector before the ray;
+      // walking away from the end the sides swap.
+      const double alpha = r.at_start ? before : after;
+      const double beta = r.at_start ? after : before;
+      if (!cusp[j]) out.boundaries[r.boundary].phi_j += junction_metric(alpha, beta);
+    }
+  }
+  if (!hair_junction)
+    throw Error("layering: no two hair regions meet at a junction (" +
+                std::to_string(ids.size()) + " regions, " + std::to_string(nj) +
+                " junctions); layering needs regions that meet where three or more do");
+  for (int i = 0; i < nb; ++i) {
+    const Boundary& b = bs[i];
+    BoundaryReport& rep = out.boundaries[i];
+    Polyline curve = b.points;
+    if (b.closed()) curve.push_back(curve.front());
+    const double chord2 = (curve.back() - curve.front()).squaredNorm();
+    // A boundary that nearly returns to where it started has no usable chord:
+    // its own size, length/π, stands in (a circle then scores π/4).
+    const double scale2 = std::max({chord2, std::pow(rep.length / std::numbers::pi, 2), 1.0});
+    rep.phi_r = overlap_metric(curve) / scale2;
+    rep.phi = options.junction_weight * rep.phi_j + rep.phi_r;
+  }
+
+  // --- Eq. (2): boundary states by one minimum cut (§4.5). ---
+  report(progress, "layering", 0.6, "optimisation");
+  std::map<std::pair<int, int>, Relation> fixed_dir;  // (a<b) → relation of a to b
+  for (const RegionRelation& r : options.fixed)
+    if (r.relation != Relation::kEqual)
+      fixed_dir[key(r.a, r.b)] = r.a < r.b ? r.relation : reversed(r.relation);
+  std::vector<int> state_of(nb, -1);
+  StateProblem problem;
+  std::vector<int> boundary_of;
+  for (int i = 0; i < nb; ++i) {
+    const Boundary& b = bs[i];
+    const BoundaryReport& rep = out.boundaries[i];
+    if (!rep.occluding || b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+    if (!options.background_states && (b.left == 0 || b.right == 0)) continue;
+    double unary = rep.phi;
+    auto f = fixed_dir.find(key(b.left, b.right));
+    if (f != fixed_dir.end()) {
+      const bool left_above = (f->second == Relation::kAbove) == (b.left < b.right);
+      unary = left_above ? kClamp : -kClamp;
+    }
+    state_of[i] = static_cast<int>(problem.unary.size());
+    problem.unary.push_back(unary);
+    boundary_of.push_back(i);
+  }
+  for (int j = 0; j < nj; ++j) {
+    const auto& rs = rays[j];
+    for (std::size_t p = 0; p < rs.size(); ++p) {
+      for (std::size_t q = p + 1; q < rs.size(); ++q) {
+        const int bi = rs[p].boundary, bj = rs[q].boundary;
+        if (bi == bj || state_of[bi] < 0 || state_of[bj] < 0) continue;
+        const Boundary& u = bs[bi];
+        const Boundary& v = bs[bj];
+        // The region the two boundaries share; "agree" means it lies on the
+        // same side (above or below) of both.
+        int shared = 0, count = 0;
+        for (int l : {u.left, u.right})
+          if (l == v.left || l == v.right) shared = l, ++count;
+        if (count != 1) continue;
+        const double theta = std::acos(std::clamp(rs[p].direction.dot(rs[q].direction), -1.0, 1.0));
+        const double weight = coupling_weight(theta, options.coupling_cap);
+        if (weight <= 0) continue;
+        const bool same = (shared == u.left) == (shared == v.left);
+        problem.couplings.push_back({state_of[bi], state_of[bj], weight, same});
+      }
+    }
+  }
+  const StateSolution solution = solve_states(problem);
+  out.states = static_cast<int>(problem.unary.size());
+  out.dropped_couplings = solution.dropped_couplings;
+  // How much each state is held by the energy: half the cost of flipping it.
+  std::vector<double> support(problem.unary.size());
+  for (std::size_t s = 0; s < problem.unary.size(); ++s)
+    support[s] = problem.unary[s] * solution.x[s];
+  for (const StateCoupling& c : problem.couplings) {
+    const double e = c.weight * (c.same ? 1.0 : -1.0) * solution.x[c.i] * solution.x[c.j];
+    support[c.i] += e;
+    support[c.j] += e;
+  }
+  for (std::size_t s = 0; s < boundary_of.size(); ++s)
+    out.boundaries[boundary_of[s]].state = solution.x[s];
+
+  // --- Relations per pair of hair regions. ---
+  report(progress, "layering", 0.8, "relations");
+  struct PairAccumulator {
+    double total = 0, occluding = 0, score = 0;
+    int longest = -1;
+  };
+  std::map<std::pair<int, int>, PairAccumulator> pairs;
+  for (int i = 0; i < nb; ++i) {
+    const Boundary& b = bs[i];
+    if (b.left <= 0 || b.right <= 0) continue;
+    PairAccumulator& acc = pairs[key(b.left, b.right)];
+    const BoundaryReport& rep = out.boundaries[i];
+    acc.total += rep.length;
+    if (acc.longest < 0 || rep.length > bs[acc.longest].length()) acc.longest = i;
+    if (state_of[i] < 0) continue;
+    acc.occluding += rep.length;
+    // Oriented to the smaller id: x = +1 means the left region is above.
+    const int toward_a = (b.left < b.right ? 1 : -1) * solution.x[state_of[i]];
+    acc.score += toward_a * (std::max(support[state_of[i]], 0.0) + 1e-3) * rep.length;
+  }
+  auto anchor_of = [&](int boundary, int a) {
+    const Boundary& b = bs[boundary];
+    const Polyline& pts = b.points;
+    const std::size_t m = pts.size() / 2;
+    const Vec2 t = pts[std::min(pts.size() - 1, m + 2)] - pts[m >= 2 ? m - 2 : 0];
+    // On the screen the left of travel t is (t.y, −t.x).
+    Vec2 left_normal = Vec2(t.y(), -t.x());
+    if (left_normal.squaredNorm() == 0) left_normal = Vec2(1, 0);
+    left_normal.normalize();
+    return RelationAnchor{pts[m], b.left == a ? Vec2(-left_normal) : left_normal};
+  };
+  for (const auto& [k, acc] : pairs) {
+    RegionRelation r;
+    r.a = k.first;
+    r.b = k.second;
+    if (acc.occluding < options.equal_fraction * acc.total || acc.occluding == 0) {
+      r.relation = Relation::kEqual;
+      r.score = 0.0;
+    } else {
+      r.score = acc.score / acc.occluding;
+      r.relation = relation_of_sign(r.score);
+    }
+    out.relations.push_back(r);
+    out.anchors.push_back(anchor_of(acc.longest, r.a));
+  }
+  for (const RegionRelation& f : options.fixed) {
+    const auto k = key(f.a, f.b);
+    const Relation rel = f.a < f.b ? f.relation : reversed(f.relation);
+    auto it = std::find_if(out.relations.begin(), out.relations.end(),
+                           [&](const RegionRelation& r) { return r.a == k.first && r.b == k.second; });
+    if (it == out.relations.end()) {
+      out.relations.push_back({k.first, k.second, rel, 0.0, true, false});
+      out.anchors.push_back({});
+      continue;
+    }
+    it->relation = rel;
+    it->user_fixed = true;
+  }
+
+  DepthOrder order = order_regions(ids, out.relations);
+  out.relations = std::move(order.relations);
+  out.depth = std::move(order.depth);
+  out.overridden = std::move(order.overridden);
+  std::ostringstream s;
+  s << out.states << " boundary states, " << problem.couplings.size() << " couplings, "
+    << (solution.exact() ? "exact minimum cut"
+                         : "minimum cut without " + std::to_string(solution.dropped_couplings) +
+                               " frustrated couplings")
+    << "; " << out.relations.size() << " relations, " << out.overridden.size()
+    << " overridden to break cycles";
+  out.summary = s.str();
+  report(progress, "layering", 1.0, "done");
+  return out;
+}
+
+}  // namespace hair25d::layering

@@ -1,0 +1,136 @@
+#include "line_response.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "hair25d/core/error.h"
+
+namespace hair25d::layering::detail {
+namespace {
+
+cv::Mat grey_of(const Image& image) {
+  cv::Mat grey(image.height(), image.width(), CV_32F);
+  for (int y = 0; y < image.height(); ++y) {
+    float* row = grey.ptr<float>(y);
+    for (int x = 0; x < image.width(); ++x) {
+      const Rgba& p = image.at(x, y);
+      // Transparent pixels read as white paper.
+      const double a = p.a / 255.0;
+      const double lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
+      row[x] = static_cast<float>(a * lum + (1.0 - a) * 255.0);
+    }
+  }
+  return grey;
+}
+
+double median_of(std::vector<double>& v) {
+  if (v.empty()) return 0.0;
+  auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+LineResponse::LineResponse(const Image& image, double line_width)
+    : w_(image.width()), h_(image.height()), line_width_(std::max(1.0, line_width)) {
+  try {
+    cv::Mat grey = grey_of(image);
+    // Noise: MAD of a 3x3 Laplacian on the raw grey image, over pixels where
+    // it is small (flat areas), scaled for a Gaussian.
+    cv::Mat lap;
+    cv::Laplacian(grey, lap, CV_32F, 1);
+    std::vector<double> mags;
+    mags.reserve(static_cast<std::size_t>(w_) * h_ / 16 + 1);
+    for (int y = 0; y < h_; y += 4)
+      for (int x = 0; x < w_; x += 4) mags.push_back(std::abs(lap.at<float>(y, x)));
+    // A 4-neighbour Laplacian of i.i.d. noise has σ·√20.
+    noise_sigma_ = median_of(mags) * 1.4826 / std::sqrt(20.0);
+    // Smooth at about a quarter line width: tones (screentone dots, JPEG
+    // ringing) average out while a line keeps most of its depth.
+    const double sigma = std::max(0.6, 0.25 * line_width_);
+    cv::Mat smooth;
+    cv::GaussianBlur(grey, smooth, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
+    grey_.assign(smooth.begin<float>(), smooth.end<float>());
+  } catch (const cv::Exception& e) {
+    throw Error(std::string("layering: OpenCV failed while measuring lines: ") + e.what());
+  }
+}
+
+double LineResponse::sample(double x, double y) const {
+  x = std::clamp(x - 0.5, 0.0, w_ - 1.0);  // pixel centres are at +0.5
+  y = std::clamp(y - 0.5, 0.0, h_ - 1.0);
+  const int x0 = std::min(static_cast<int>(x), w_ - 2 < 0 ? 0 : w_ - 2);
+  const int y0 = std::min(static_cast<int>(y), h_ - 2 < 0 ? 0 : h_ - 2);
+  const int x1 = std::min(x0 + 1, w_ - 1);
+  const int y1 = std::min(y0 + 1, h_ - 1);
+  const double fx = x - x0, fy = y - y0;
+  auto at = [&](int xx, int yy) { return static_cast<double>(grey_[yy * w_ + xx]); };
+  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) +
+         fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
+}
+
+double LineResponse::boundary_contrast(const Polyline& curve, double skip) const {
+  if (curve.size() < 2) return 0.0;
+  const Polyline pts = resample_polyline(curve, 1.0);
+  const int n = static_cast<int>(pts.size());
+  const double total = polyline_length(curve);
+  // Near short boundaries keep at least the middle third.
+  skip = std::min(skip, total / 3.0);
+  const double half = 0.5 * line_width_ + 1.0;  // search for the line centre
+  const double side = line_width_ + 1.5;        // paper on both sides
+  const int span = std::max(2, static_cast<int>(std::lround(line_width_)));
+  std::vector<double> values;
+  values.reserve(n);
+  double along = 0.0;
+  for (int i = 0; i < n; ++i) {
+    if (i > 0) along += (pts[i] - pts[i - 1]).norm();
+    if (along < skip || along > total - skip) continue;
+    const Vec2 t = pts[std::min(n - 1, i + span)] - pts[std::max(0, i - span)];
+    if (t.squaredNorm() == 0.0) continue;
+    const Vec2 nrm = Vec2(-t.y(), t.x()).normalized();
+    double centre = 1e9;
+    for (double s = -half; s <= half + 1e-9; s += 0.5)
+      centre = std::min(centre, sample(pts[i].x() + s * nrm.x(), pts[i].y() + s * nrm.y()));
+    const Vec2 a = pts[i] + side * nrm;
+    const Vec2 b = pts[i] - side * nrm;
+    values.push_back(std::min(sample(a.x(), a.y()), sample(b.x(), b.y())) - centre);
+  }
+  return median_of(values);
+}
+
+double LineResponse::estimate_line_width(const Image& image) {
+  // Dark runs: pixels well below the local paper level. Widths of runs along
+  // rows and columns; the mode of the short ones is the typical line width.
+  const cv::Mat grey = grey_of(image);
+  cv::Mat bright;
+  cv::dilate(grey, bright, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(15, 15)));
+  std::vector<int> histogram(32, 0);
+  auto scan = [&](bool rows) {
+    const int outer = rows ? grey.rows : grey.cols;
+    const int inner = rows ? grey.cols : grey.rows;
+    for (int o = 0; o < outer; o += 2) {
+      int run = 0;
+      for (int i = 0; i < inner; ++i) {
+        const int y = rows ? o : i, x = rows ? i : o;
+        const bool dark = grey.at<float>(y, x) < 0.5f * bright.at<float>(y, x);
+        if (dark) {
+          ++run;
+        } else {
+          if (run > 0 && run < static_cast<int>(histogram.size())) ++histogram[run];
+          run = 0;
+        }
+      }
+    }
+  };
+  scan(true);
+  scan(false);
+  const auto best = std::max_element(histogram.begin() + 1, histogram.end());
+  if (*best == 0) return 2.0;
+  // Runs cross lines at all angles, so the mode slightly overestimates.
+  return static_cast<double>(best - histogram.begin());
+}
+
+}  // namespace hair25d::layering::detail

@@ -1,0 +1,40 @@
+// Is a boundary on a drawn line (paper §4.1)? The paper sums the Laplacian
+// along it; we measure a dark bar directly — the line centre darker than both
+// sides one line width away — which is robust to step edges between cel
+// tones, where a Laplacian answers too.
+#pragma once
+
+#include <vector>
+
+#include "hair25d/core/geometry.h"
+#include "hair25d/core/image.h"
+
+namespace hair25d::layering::detail {
+
+class LineResponse {
+ public:
+  // Grey levels of `image` smoothed at a scale from the line width.
+  LineResponse(const Image& image, double line_width);
+
+  // Median over samples along `curve` (pixel corners) of
+  // min(I(side+), I(side−)) − min over the line's cross-section, ignoring
+  // `skip` pixels at each end (junction areas where the sides are lines too).
+  double boundary_contrast(const Polyline& curve, double skip) const;
+
+  // Estimated standard deviation of pixel noise (grey levels) from the
+  // median absolute deviation of a Laplacian, for a floor of the threshold.
+  double noise_sigma() const { return noise_sigma_; }
+
+  // Line width estimated from the image alone: the most common width of dark
+  // runs across rows and columns, for maps that carry no outlines.
+  static double estimate_line_width(const Image& image);
+
+ private:
+  double sample(double x, double y) const;
+  int w_ = 0, h_ = 0;
+  double line_width_ = 1.0;
+  double noise_sigma_ = 0.0;
+  std::vector<float> grey_;
+};
+
+}  // namespace hair25d::layering::detail
