@@ -1,0 +1,35 @@
+// The deformation mesh of one completed strand (paper §6.1 deforms it with the
+// skeleton): a quality constrained Delaunay mesh of its outline, with interior
+// vertices and bounded edge length, by CGAL's Delaunay mesher.
+#pragma once
+
+#include <string>
+
+#include "hair25d/core/geometry.h"
+#include "hair25d/core/tri_mesh.h"
+
+namespace hair25d::skeleton {
+
+struct MeshOptions {
+  double max_edge = 12.0;        // pixels: longest triangle edge wanted inside
+  double min_angle_deg = 20.0;   // wanted smallest angle (≤ 20.7° guarantees termination)
+  int max_vertices = 20000;      // refinement stops here whatever the quality
+  double outline_spacing = 0.0;  // pixels between outline samples; 0 = max_edge / 2
+
+  // False, with a message naming the option, its value and the rule, if unusable.
+  bool is_valid(std::string* error) const;
+};
+
+enum class MeshStatus { kRefined, kVertexLimit };
+
+struct MeshResult {
+  TriMesh2 mesh;  // counter-clockwise triangles; on_curve marks outline edges
+  MeshStatus status = MeshStatus::kRefined;
+};
+
+// Meshes the inside of a closed outline (either orientation, not closed by
+// repetition). Throws hair25d::Error for invalid options, fewer than 3 distinct
+// points, non-finite coordinates or zero area.
+MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options = {});
+
+}  // namespace hair25d::skeleton

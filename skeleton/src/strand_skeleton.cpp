@@ -1,0 +1,211 @@
+#include "hair25d/skeleton/strand_skeleton.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "hair25d/core/error.h"
+#include "medial_graph.h"
+#include "polygon_sampling.h"
+#include "tips.h"
+
+namespace hair25d::skeleton {
+namespace {
+
+using detail::MedialGraph;
+
+// Tree distances and parents from `source` (the graph is a forest).
+void shortest_paths(const MedialGraph& g, int source, std::vector<double>* dist,
+                    std::vector<int>* parent) {
+  const int n = static_cast<int>(g.nodes.size());
+  dist->assign(n, std::numeric_limits<double>::infinity());
+  parent->assign(n, -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  (*dist)[source] = 0.0;
+  queue.push({0.0, source});
+  while (!queue.empty()) {
+    const auto [d, u] = queue.top();
+    queue.pop();
+    if (d > (*dist)[u]) continue;
+    for (int v : g.adjacent[u]) {
+      const double nd = d + (g.nodes[u] - g.nodes[v]).norm();
+      if (nd < (*dist)[v]) {
+        (*dist)[v] = nd;
+        (*parent)[v] = u;
+        queue.push({nd, v});
+      }
+    }
+  }
+}
+
+int nearest_node(const MedialGraph& g, const Vec2& p, const std::vector<bool>* allowed) {
+  int best = -1;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    if (allowed != nullptr && !(*allowed)[i]) continue;
+    const double d = (g.nodes[i] - p).squaredNorm();
+    if (d < best_d) {
+      best_d = d;
+      best = static_cast<int>(i);
+    }
+  }
+  return best;
+}
+
+// Resamples the subtree made of the paths tip -> root into a Skeleton whose
+// parents come before their children.
+Skeleton resample_tree(const MedialGraph& g, int root, const std::vector<int>& parent,
+                       const std::vector<int>& tip_nodes, double spacing) {
+  const int n = static_cast<int>(g.nodes.size());
+  std::vector<bool> used(n, false);
+  for (int t : tip_nodes)
+    for (int v = t; v >= 0 && !used[v]; v = parent[v]) used[v] = true;
+  std::vector<std::vector<int>> children(n);
+  for (int v = 0; v < n; ++v)
+    if (used[v] && v != root && parent[v] >= 0) children[parent[v]].push_back(v);
+
+  Skeleton s;
+  s.nodes.push_back(g.nodes[root]);
+  s.parent.push_back(-1);
+  // Each queue item: a graph key node and its index in the output skeleton.
+  std::queue<std::pair<int, int>> queue;
+  queue.push({root, 0});
+  while (!queue.empty()) {
+    const auto [key, out_index] = queue.front();
+    queue.pop();
+    for (int child : children[key]) {
+      Polyline branch{g.nodes[key]};
+      int v = child;
+      while (true) {
+        branch.push_back(g.nodes[v]);
+        if (children[v].size() != 1) break;
+        v = children[v][0];
+      }
+      const Polyline resampled = resample_polyline(branch, spacing);
+      int prev = out_index;
+      for (std::size_t k = 1; k < resampled.size(); ++k) {
+        s.nodes.push_back(resampled[k]);
+        s.parent.push_back(prev);
+        prev = static_cast<int>(s.nodes.size()) - 1;
+      }
+      if (children[v].empty())
+        s.tips.push_back(prev);
+      else
+        queue.push({v, prev});
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+Result build_skeleton(const Input& input, const Options& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw Error(why);
+  if (!input.covered.empty() && input.covered.size() != input.outline.size()) {
+    throw Error("skeleton::build_skeleton: covered has " + std::to_string(input.covered.size()) +
+                " flags for " + std::to_string(input.outline.size()) +
+                " outline points; must be empty or one per point");
+  }
+  if (input.root_hint &&
+      (!std::isfinite(input.root_hint->x()) || !std::isfinite(input.root_hint->y()))) {
+    throw Error("skeleton::build_skeleton: root_hint is not finite");
+  }
+  std::vector<int> kept;
+  const Polyline clean = detail::clean_polygon(input.outline, "skeleton::build_skeleton", &kept);
+
+  Result result;
+  const double area = std::abs(signed_area(clean));
+  if (area < 1.0) {
+    Vec2 centre = Vec2::Zero();
+    for (const Vec2& p : clean) centre += p;
+    centre /= static_cast<double>(clean.size());
+    result.skeleton.nodes = {centre};
+    result.skeleton.parent = {-1};
+    result.skeleton.tips = {};
+    result.root = centre;
+    result.status = SkeletonStatus::kDegenerate;
+    return result;
+  }
+
+  std::vector<int> source;
+  const Polyline samples = detail::resample_closed(clean, options.sample_spacing, &source);
+  std::vector<bool> covered;
+  if (!input.covered.empty()) {
+    covered.resize(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i) covered[i] = input.covered[kept[source[i]]];
+  }
+  const MedialGraph g = detail::build_medial_graph(samples);
+  if (g.nodes.empty()) {
+    result.skeleton.nodes = {samples.front()};
+    result.skeleton.parent = {-1};
+    result.root = samples.front();
+    result.status = SkeletonStatus::kDegenerate;
+    return result;
+  }
+  const int n = static_cast<int>(g.nodes.size());
+  std::vector<bool> leaf(n);
+  for (int i = 0; i < n; ++i) leaf[i] = g.adjacent[i].size() <= 1;
+
+  // Tip corners -> their end-triangle nodes (the corner itself).
+  const std::vector<int> corners = detail::sharp_corners(samples, covered, options);
+  std::vector<int> tip_nodes;
+  std::vector<Vec2> tip_points;
+  for (int c : corners) {
+    int node = g.apex_of_sample[c];
+    if (node < 0) node = nearest_node(g, samples[c], nullptr);
+    tip_nodes.push_back(node);
+    tip_points.push_back(samples[c]);
+  }
+
+  // Root: the medial-axis end nearest to the hint; without one, the end
+  // farthest along the axis from the sharpest tip (or a diameter end).
+  std::vector<double> dist;
+  std::vector<int> parent;
+  int root = -1;
+  if (input.root_hint) {
+    std::vector<bool> candidates = leaf;
+    for (int t : tip_nodes) candidates[t] = false;
+    root = nearest_node(g, *input.root_hint, &candidates);
+    if (root < 0) root = nearest_node(g, *input.root_hint, nullptr);
+  } else {
+    const int from = tip_nodes.empty() ? 0 : tip_nodes.front();
+    shortest_paths(g, from, &dist, &parent);
+    double best = -1.0;
+    for (int i = 0; i < n; ++i) {
+      if (std::isfinite(dist[i]) && dist[i] > best && leaf[i]) {
+        best = dist[i];
+        root = i;
+      }
+    }
+    if (root < 0) root = from;
+  }
+  result.root = g.nodes[root];
+  shortest_paths(g, root, &dist, &parent);
+
+  // A tip must be reachable and not the root end itself.
+  const double separation =
+      options.min_tip_separation > 0 ? options.min_tip_separation : 2.0 * options.corner_arm;
+  std::vector<int> tips;
+  for (std::size_t k = 0; k < tip_nodes.size(); ++k) {
+    const int t = tip_nodes[k];
+    if (!std::isfinite(dist[t]) || dist[t] < separation) continue;
+    if (std::find(tips.begin(), tips.end(), t) != tips.end()) continue;
+    tips.push_back(t);
+    result.tip_corners.push_back(tip_points[k]);
+  }
+  result.status = SkeletonStatus::kTips;
+  if (tips.empty()) {
+    int far = root;
+    for (int i = 0; i < n; ++i)
+      if (std::isfinite(dist[i]) && dist[i] > dist[far]) far = i;
+    tips.push_back(far);
+    result.status = SkeletonStatus::kFarthestTip;
+  }
+  result.skeleton = resample_tree(g, root, parent, tips, options.node_spacing);
+  return result;
+}
+
+}  // namespace hair25d::skeleton

@@ -1,0 +1,18 @@
+// Tip corners on a uniformly sampled closed outline (paper §6: "sharp corners
+// ... locally above the neighbouring regions").
+#pragma once
+
+#include <vector>
+
+#include "hair25d/core/geometry.h"
+#include "hair25d/skeleton/strand_skeleton.h"
+
+namespace hair25d::skeleton::detail {
+
+// Indices of sharp convex corners of `samples`, sharpest first, at least
+// `separation` pixels apart along the outline; `covered` (#samples or empty)
+// removes hidden corners.
+std::vector<int> sharp_corners(const Polyline& samples, const std::vector<bool>& covered,
+                               const Options& options);
+
+}  // namespace hair25d::skeleton::detail
