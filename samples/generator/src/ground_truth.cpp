@@ -1,0 +1,248 @@
+#include "ground_truth.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <opencv2/imgproc.hpp>
+
+#include "render.h"
+
+namespace hair25d::generator {
+
+namespace {
+
+constexpr double kStrokeWidth = 3.0;
+// A stroke point keeps this far (pixels, at its nearest pixel centre) from the
+// region's edge: 1.5 for the brush radius, 0.71 for the rounding to a pixel,
+// and some margin so strokes sit "well inside".
+constexpr double kMinDepth = 3.0;
+constexpr int kMinContact = 3;  // boundary pixels for two regions to be neighbours
+constexpr int kHairStrokes = 2;
+constexpr int kBackgroundComponents = 3;
+constexpr int kBackgroundStrokes = 2;
+
+struct Component {
+  int owner = 0;
+  int area = 0;
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // inclusive box
+};
+
+// 4-connected pieces of equal owner, line pixels excluded (so a one-pixel
+// diagonal line still separates), numbered in scan order of their first pixel.
+std::vector<Component> label_components(const cv::Mat& owner, std::vector<int>& comp) {
+  const int w = owner.cols, h = owner.rows;
+  comp.assign(static_cast<std::size_t>(w) * h, -1);
+  const int* own = owner.ptr<int>(0);
+  std::vector<Component> out;
+  std::vector<int> stack;
+  for (int start = 0; start < w * h; ++start) {
+    if (own[start] == kLineOwner || comp[start] >= 0) continue;
+    Component c;
+    c.owner = own[start];
+    c.x0 = c.x1 = start % w;
+    c.y0 = c.y1 = start / w;
+    const int id = static_cast<int>(out.size());
+    comp[start] = id;
+    stack.assign(1, start);
+    while (!stack.empty()) {
+      const int p = stack.back();
+      stack.pop_back();
+      const int x = p % w, y = p / w;
+      ++c.area;
+      c.x0 = std::min(c.x0, x);
+      c.x1 = std::max(c.x1, x);
+      c.y0 = std::min(c.y0, y);
+      c.y1 = std::max(c.y1, y);
+      const int next[4] = {x > 0 ? p - 1 : -1, x + 1 < w ? p + 1 : -1, y > 0 ? p - w : -1,
+                           y + 1 < h ? p + w : -1};
+      for (int q : next) {
+        if (q >= 0 && comp[q] < 0 && own[q] == c.owner) {
+          comp[q] = id;
+          stack.push_back(q);
+        }
+      }
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+// Polylines along the middle of component `id`: the deepest pixel of each slice
+// across its main axis, joined where the joining segment stays deep inside.
+std::vector<Polyline> inner_strokes(const std::vector<int>& comp, int width, int id,
+                                    const Component& c, int max_strokes) {
+  const int bw = c.x1 - c.x0 + 3, bh = c.y1 - c.y0 + 3;  // one empty pixel around
+  cv::Mat mask(bh, bw, CV_8U, cv::Scalar(0));
+  for (int y = c.y0; y <= c.y1; ++y) {
+    const int* row = comp.data() + static_cast<std::size_t>(y) * width;
+    auto* m = mask.ptr<uchar>(y - c.y0 + 1);
+    for (int x = c.x0; x <= c.x1; ++x) m[x - c.x0 + 1] = row[x] == id ? 255 : 0;
+  }
+  cv::Mat dist;
+  cv::distanceTransform(mask, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  double dmax = 0;
+  cv::minMaxLoc(dist, nullptr, &dmax);
+  if (dmax < kMinDepth) return {};
+  const double thr = std::max(kMinDepth, 0.5 * dmax);
+
+  std::vector<Eigen::Vector3d> cand;  // x, y, depth
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (int y = 0; y < bh; ++y) {
+    const auto* d = dist.ptr<float>(y);
+    for (int x = 0; x < bw; ++x) {
+      if (d[x] >= thr) {
+        cand.emplace_back(x, y, d[x]);
+        mean += Eigen::Vector2d(x, y);
+      }
+    }
+  }
+  mean /= static_cast<double>(cand.size());
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const auto& p : cand) {
+    const Eigen::Vector2d d = p.head<2>() - mean;
+    cov += d * d.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+  const Eigen::Vector2d axis = eig.eigenvectors().col(1);
+  double smin = 1e300, smax = -1e300;
+  for (const auto& p : cand) {
+    const double s = axis.dot(p.head<2>() - mean);
+    smin = std::min(smin, s);
+    smax = std::max(smax, s);
+  }
+  const int bins = std::clamp(static_cast<int>((smax - smin) / std::max(8.0, 2.0 * thr)), 1, 8);
+  std::vector<int> best(static_cast<std::size_t>(bins), -1);
+  for (std::size_t i = 0; i < cand.size(); ++i) {
+    const double s = axis.dot(cand[i].head<2>() - mean);
+    const int b = std::min(bins - 1, static_cast<int>((s - smin) / (smax - smin + 1e-9) * bins));
+    if (best[b] < 0 || cand[i].z() > cand[best[b]].z()) best[b] = static_cast<int>(i);
+  }
+  auto deep_enough = [&](const Vec2& a, const Vec2& b) {
+    const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() * 2.0)));
+    for (int k = 0; k <= steps; ++k) {
+      const Vec2 p = a + (b - a) * (static_cast<double>(k) / steps);
+      const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+      if (x < 0 || y < 0 || x >= bw || y >= bh || dist.at<float>(y, x) < kMinDepth) return false;
+    }
+    return true;
+  };
+  std::vector<Polyline> chains;
+  Polyline chain;
+  for (int b = 0; b < bins; ++b) {
+    if (best[b] < 0) continue;
+    const Vec2 p(cand[best[b]].x(), cand[best[b]].y());
+    if (!chain.empty() && !deep_enough(chain.back(), p)) {
+      chains.push_back(chain);
+      chain.clear();
+    }
+    chain.push_back(p);
+  }
+  if (!chain.empty()) chains.push_back(chain);
+  std::stable_sort(chains.begin(), chains.end(), [](const Polyline& a, const Polyline& b) {
+    return polyline_length(a) > polyline_length(b);
+  });
+  if (static_cast<int>(chains.size()) > max_strokes) chains.resize(max_strokes);
+  for (Polyline& l : chains) {
+    for (Vec2& p : l) p += Vec2(c.x0 - 1, c.y0 - 1);
+  }
+  return chains;
+}
+
+}  // namespace
+
+GroundTruth make_ground_truth(const Scene& scene, const cv::Mat& owner) {
+  const int w = owner.cols, h = owner.rows;
+  std::vector<int> comp;
+  const std::vector<Component> comps = label_components(owner, comp);
+  auto is_hair = [&](const Component& c) {
+    return c.owner > 0 && scene.shapes[static_cast<std::size_t>(c.owner) - 1].hair;
+  };
+
+  GroundTruth gt;
+  gt.strokes.head_center = scene.head_center;
+  std::vector<int> region_of(comps.size(), 0);
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    if (!is_hair(comps[i])) continue;
+    auto lines = inner_strokes(comp, w, static_cast<int>(i), comps[i], kHairStrokes);
+    if (lines.empty()) continue;
+    const int id = static_cast<int>(gt.region_list.size()) + 1;
+    region_of[i] = id;
+    const Shape& s = scene.shapes[static_cast<std::size_t>(comps[i].owner) - 1];
+    gt.region_list.push_back({id, s.strand, s.name});
+    for (Polyline& l : lines) gt.strokes.strokes.push_back({id, kStrokeWidth, std::move(l)});
+  }
+  // Background strokes on the largest pieces that are not hair (paper, face, body).
+  std::vector<std::size_t> others;
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    if (!is_hair(comps[i])) others.push_back(i);
+  }
+  std::stable_sort(others.begin(), others.end(),
+                   [&](std::size_t a, std::size_t b) { return comps[a].area > comps[b].area; });
+  if (others.size() > static_cast<std::size_t>(kBackgroundComponents)) {
+    others.resize(kBackgroundComponents);
+  }
+  for (std::size_t i : others) {
+    for (Polyline& l : inner_strokes(comp, w, static_cast<int>(i), comps[i], kBackgroundStrokes)) {
+      gt.strokes.strokes.push_back({0, kStrokeWidth, std::move(l)});
+    }
+  }
+
+  // Lines and dropped slivers go to the nearest kept piece (breadth first), so
+  // regions separated only by a line become 4-neighbours.
+  std::vector<int> grown(comp.size(), -1);
+  std::vector<int> queue;
+  queue.reserve(comp.size());
+  for (std::size_t p = 0; p < comp.size(); ++p) {
+    const int c = comp[p];
+    if (c >= 0 && (!is_hair(comps[c]) || region_of[c] > 0)) {
+      grown[p] = c;
+      queue.push_back(static_cast<int>(p));
+    }
+  }
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int p = queue[head], x = p % w, y = p / w;
+    const int next[4] = {x > 0 ? p - 1 : -1, x + 1 < w ? p + 1 : -1, y > 0 ? p - w : -1,
+                         y + 1 < h ? p + w : -1};
+    for (int q : next) {
+      if (q >= 0 && grown[q] < 0) {
+        grown[q] = grown[p];
+        queue.push_back(q);
+      }
+    }
+  }
+  std::map<std::pair<int, int>, int> contact;
+  auto touch = [&](int p, int q) {
+    const int a = grown[p] >= 0 ? region_of[grown[p]] : 0;
+    const int b = grown[q] >= 0 ? region_of[grown[q]] : 0;
+    if (a > 0 && b > 0 && a != b) ++contact[{std::min(a, b), std::max(a, b)}];
+  };
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const int p = y * w + x;
+      if (x + 1 < w) touch(p, p + 1);
+      if (y + 1 < h) touch(p, p + w);
+    }
+  }
+  std::vector<int> owner_of(gt.region_list.size() + 1, 0);
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    if (region_of[i] > 0) owner_of[region_of[i]] = comps[i].owner;
+  }
+  for (const auto& [key, count] : contact) {
+    if (count < kMinContact) continue;
+    const auto [a, b] = key;
+    Relation r = Relation::kEqual;
+    if (gt.region_list[a - 1].strand != gt.region_list[b - 1].strand) {
+      r = owner_of[a] < owner_of[b] ? Relation::kBelow : Relation::kAbove;
+    }
+    gt.pairs.push_back({a, b, r});
+  }
+
+  gt.regions = LabelMap(w, h, 0);
+  for (std::size_t p = 0; p < comp.size(); ++p) {
+    if (comp[p] >= 0) gt.regions.data()[p] = region_of[comp[p]];
+  }
+  return gt;
+}
+
+}  // namespace hair25d::generator
