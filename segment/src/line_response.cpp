@@ -1,0 +1,160 @@
+#include "line_response.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace hair25d::segment::detail {
+
+cv::Mat grey_image(const Image& image) {
+  cv::Mat grey(image.height(), image.width(), CV_32F);
+  for (int y = 0; y < image.height(); ++y) {
+    float* row = grey.ptr<float>(y);
+    for (int x = 0; x < image.width(); ++x) {
+      const Rgba& p = image.at(x, y);
+      const float a = p.a / 255.0f;
+      const float lum = 0.299f * p.r + 0.587f * p.g + 0.114f * p.b;
+      row[x] = a * lum + (1.0f - a) * 255.0f;
+    }
+  }
+  return grey;
+}
+
+namespace {
+
+float bilinear(const cv::Mat& m, float x, float y) {
+  x = std::clamp(x, 0.0f, static_cast<float>(m.cols - 1));
+  y = std::clamp(y, 0.0f, static_cast<float>(m.rows - 1));
+  const int x0 = std::min(static_cast<int>(x), m.cols - 2 < 0 ? 0 : m.cols - 2);
+  const int y0 = std::min(static_cast<int>(y), m.rows - 2 < 0 ? 0 : m.rows - 2);
+  const int x1 = std::min(x0 + 1, m.cols - 1);
+  const int y1 = std::min(y0 + 1, m.rows - 1);
+  const float fx = x - x0, fy = y - y0;
+  const float a = m.at<float>(y0, x0), b = m.at<float>(y0, x1);
+  const float c = m.at<float>(y1, x0), d = m.at<float>(y1, x1);
+  return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy;
+}
+
+}  // namespace
+
+LineField compute_line_field(const cv::Mat& grey, const std::vector<double>& scales,
+                             float low_threshold) {
+  const int w = grey.cols, h = grey.rows;
+  LineField f;
+  f.response = cv::Mat::zeros(h, w, CV_32F);
+  f.nx = cv::Mat::zeros(h, w, CV_32F);
+  f.ny = cv::Mat::zeros(h, w, CV_32F);
+  f.offset = cv::Mat::zeros(h, w, CV_32F);
+  f.sigma = cv::Mat::zeros(h, w, CV_32F);
+  cv::Mat scale_index(h, w, CV_8U, cv::Scalar(255));
+  cv::Mat dn(h, w, CV_32F, cv::Scalar(0));  // directional first derivative along n
+  cv::Mat l1(h, w, CV_32F, cv::Scalar(0));  // eigenvalue across the line
+  std::vector<cv::Mat> blurred;
+  const cv::Mat k_d2 = (cv::Mat_<float>(1, 3) << 1.0f, -2.0f, 1.0f);
+  const cv::Mat k_d1 = (cv::Mat_<float>(1, 3) << -0.5f, 0.0f, 0.5f);
+  const cv::Mat k_id = (cv::Mat_<float>(1, 1) << 1.0f);
+  for (std::size_t s = 0; s < scales.size(); ++s) {
+    const double sigma = scales[s];
+    cv::Mat b;
+    cv::GaussianBlur(grey, b, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
+    cv::Mat ixx, iyy, ixy, ix, iy;
+    cv::sepFilter2D(b, ixx, CV_32F, k_d2, k_id, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
+    cv::sepFilter2D(b, iyy, CV_32F, k_id, k_d2, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
+    cv::sepFilter2D(b, ixy, CV_32F, k_d1, k_d1, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
+    cv::sepFilter2D(b, ix, CV_32F, k_d1, k_id, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
+    cv::sepFilter2D(b, iy, CV_32F, k_id, k_d1, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
+    const float s2 = static_cast<float>(sigma * sigma);
+    for (int y = 0; y < h; ++y) {
+      const float* pxx = ixx.ptr<float>(y);
+      const float* pyy = iyy.ptr<float>(y);
+      const float* pxy = ixy.ptr<float>(y);
+      const float* px = ix.ptr<float>(y);
+      const float* py = iy.ptr<float>(y);
+      float* resp = f.response.ptr<float>(y);
+      for (int x = 0; x < w; ++x) {
+        const float a = pxx[x], c = pyy[x], bxy = pxy[x];
+        const float half = 0.5f * (a - c);
+        const float root = std::sqrt(half * half + bxy * bxy);
+        const float lambda = 0.5f * (a + c) + root;  // largest: across a dark valley
+        const float r = s2 * lambda;
+        if (r <= resp[x]) continue;
+        // Eigenvector of the largest eigenvalue.
+        float ex, ey;
+        if (half >= 0.0f) {
+          ex = half + root;
+          ey = bxy;
+        } else {
+          ex = bxy;
+          ey = root - half;
+        }
+        const float len = std::sqrt(ex * ex + ey * ey);
+        if (len < 1e-12f) {
+          ex = 1.0f;
+          ey = 0.0f;
+        } else {
+          ex /= len;
+          ey /= len;
+        }
+        resp[x] = r;
+        f.nx.at<float>(y, x) = ex;
+        f.ny.at<float>(y, x) = ey;
+        dn.at<float>(y, x) = ex * px[x] + ey * py[x];
+        l1.at<float>(y, x) = lambda;
+        scale_index.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(s);
+      }
+    }
+    blurred.push_back(std::move(b));
+  }
+  // A dark line is darker than both of its sides; the second derivative
+  // alone also answers beside a step between two flat tones.
+  for (int y = 0; y < h; ++y) {
+    float* resp = f.response.ptr<float>(y);
+    for (int x = 0; x < w; ++x) {
+      if (resp[x] <= low_threshold) {
+        resp[x] = std::max(resp[x], 0.0f);
+        continue;
+      }
+      const int s = scale_index.at<std::uint8_t>(y, x);
+      const cv::Mat& b = blurred[s];
+      const float sigma = static_cast<float>(scales[s]);
+      const float d = std::max(1.5f, 2.0f * sigma);
+      const float ex = f.nx.at<float>(y, x), ey = f.ny.at<float>(y, x);
+      const float centre = b.at<float>(y, x);
+      const float side =
+          std::min(bilinear(b, x + d * ex, y + d * ey), bilinear(b, x - d * ex, y - d * ey));
+      const float depth = side - centre;
+      resp[x] = std::max(0.0f, std::min(resp[x], depth));
+      const float lambda = l1.at<float>(y, x);
+      float t = lambda > 1e-6f ? -dn.at<float>(y, x) / lambda : 0.0f;
+      f.offset.at<float>(y, x) = std::clamp(t, -0.5f, 0.5f);
+      f.sigma.at<float>(y, x) = sigma;
+    }
+  }
+  return f;
+}
+
+cv::Mat suppress_non_maxima(const LineField& field, float low_threshold) {
+  const int w = field.response.cols, h = field.response.rows;
+  cv::Mat out = cv::Mat::zeros(h, w, CV_8U);
+  constexpr float kSin22 = 0.38268343f;
+  for (int y = 0; y < h; ++y) {
+    const float* resp = field.response.ptr<float>(y);
+    for (int x = 0; x < w; ++x) {
+      const float r = resp[x];
+      if (r <= low_threshold) continue;
+      const float ex = field.nx.at<float>(y, x), ey = field.ny.at<float>(y, x);
+      const int dx = ex > kSin22 ? 1 : (ex < -kSin22 ? -1 : 0);
+      const int dy = ey > kSin22 ? 1 : (ey < -kSin22 ? -1 : 0);
+      const int xa = x + dx, ya = y + dy, xb = x - dx, yb = y - dy;
+      const float ra =
+          (xa >= 0 && ya >= 0 && xa < w && ya < h) ? field.response.at<float>(ya, xa) : 0.0f;
+      const float rb =
+          (xb >= 0 && yb >= 0 && xb < w && yb < h) ? field.response.at<float>(yb, xb) : 0.0f;
+      // Ties go to one side only, so a flat top of two equal pixels keeps one.
+      if (r >= ra && r > rb) out.at<std::uint8_t>(y, x) = 1;
+    }
+  }
+  return out;
+}
+
+}  // namespace hair25d::segment::detail

@@ -1,0 +1,76 @@
+// Segmentation from the cases' strokes must reproduce their regions: mean
+// region IoU >= 0.95, outline pixels left out (paper §3; issue 2).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "hair25d/core/annotation.h"
+#include "hair25d/core/atomic_file.h"
+#include "hair25d/core/image_io.h"
+#include "hair25d/segment/mesh.h"
+#include "hair25d/segment/overlay.h"
+#include "hair25d/segment/segmenter.h"
+#include "segment_eval.h"
+#ifdef HAIR25D_HAVE_GENERATOR
+#include "hair25d/generator/generator.h"
+#endif
+
+namespace hair25d::segment {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Optional: HAIR25D_SEGMENT_DEBUG_DIR=<dir> writes each case's overlay there.
+void maybe_write_overlay(const std::string& name, const Image& image, const SegmentResult& r,
+                         const LabelMap& regions, const LabelMap& truth) {
+  const char* dir = std::getenv("HAIR25D_SEGMENT_DEBUG_DIR");
+  if (dir == nullptr) return;
+  fs::create_directories(dir);
+  save_image(fs::path(dir) / (name + "_overlay.png"), draw_overlay(image, r.segmentation, regions));
+  save_image(fs::path(dir) / (name + "_truth.png"), draw_overlay(image, Segmentation{}, truth));
+}
+
+double case_mean_iou(const std::string& name, const AnnotatedCase& c, double line_width) {
+  const SegmentResult r = segment_image(c.image, &*c.strokes);
+  const LabelMap predicted = rasterize_triangle_values(
+      r.segmentation.mesh, r.segmentation.triangle_region, c.image.width(), c.image.height());
+  maybe_write_overlay(name, c.image, r, predicted, c.regions);
+  const auto scores =
+      testing::region_ious(c.regions, predicted, testing::outline_exclusion(c.regions, line_width));
+  std::string worst;
+  for (const auto& s : scores)
+    if (s.iou < 0.9)
+      worst += " region " + std::to_string(s.label) + " (" + std::to_string(s.truth_pixels) +
+               " px) IoU " + std::to_string(s.iou) + ";";
+  const double m = testing::mean_iou(scores);
+  std::printf(
+      "[ segment ] %s: %zu regions, mean IoU %.4f, %d triangles, %zu curves, line width %.2f%s\n",
+      name.c_str(), scores.size(), m, r.segmentation.mesh.triangle_count(),
+      r.segmentation.curves.size(), r.line_width, worst.c_str());
+  return m;
+}
+
+TEST(SegmentAccuracy, AnnotatedCasesReachMeanIoU095) {
+  const fs::path root = fs::path(HAIR25D_TEST_DATA_DIR) / "annotated";
+  const auto cases = find_annotated_cases(root);
+  ASSERT_EQ(cases.size(), 6u);
+  double sum = 0.0;
+  for (const fs::path& folder : cases) {
+    const AnnotatedCase c = read_annotated_case(folder);
+    ASSERT_TRUE(c.strokes.has_value()) << folder;
+    // The annotation records the drawing's line width; outlines are that wide.
+    const auto doc = nlohmann::json::parse(read_text_file(folder / "layering.json"));
+    const double line_width = doc.value("line_width", 6.0);
+    const double m = case_mean_iou(c.name, c, line_width);
+    EXPECT_GE(m, 0.90) << c.name;
+    sum += m;
+  }
+  const double mean = sum / static_cast<double>(cases.size());
+  std::printf("[ segment ] annotated cases: mean IoU %.4f\n", mean);
+  EXPECT_GE(mean, 0.95);
+}
+
+}  // namespace
+}  // namespace hair25d::segment
