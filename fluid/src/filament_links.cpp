@@ -6,6 +6,7 @@
 // links, at the cost of O(length) work per segment per step. An immersed boundary spreads
 // the wall over ~2 cells, so a zero-thickness plate leaks unless the coupling is iterated.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "d2q9.h"
@@ -41,12 +42,43 @@ bool link_cut(const Vec2& a, const Vec2& b, const Vec2& p, const Vec2& q, double
 
 }  // namespace
 
-std::vector<CutLink> cut_links(const std::vector<Filament>& filaments, int width, int height,
-                               std::vector<int>* first_segment) {
+LinkCutter::LinkCutter(int width, int height)
+    : width_(width),
+      height_(height),
+      mask_(static_cast<std::size_t>(width) * height, 0),
+      slot_(static_cast<std::size_t>(width) * height, 0) {}
+
+void LinkCutter::sort_by_cell(std::vector<std::int32_t>& cells) {
+  scratch_.resize(cells.size());
+  auto pass = [&](const std::vector<std::int32_t>& in, std::vector<std::int32_t>& out, int buckets,
+                  auto key) {
+    count_.assign(buckets + 1, 0);
+    for (std::int32_t c : in) ++count_[key(c) + 1];
+    for (int b = 0; b < buckets; ++b) count_[b + 1] += count_[b];
+    for (std::int32_t c : in) out[count_[key(c)]++] = c;
+  };
+  pass(cells, scratch_, width_, [&](std::int32_t c) { return c % width_; });
+  pass(scratch_, cells, height_, [&](std::int32_t c) { return c / width_; });
+}
+
+void LinkCutter::add(std::int32_t cell, int dir, const Vec2& v, std::int32_t owner) {
+  std::uint8_t& m = mask_[cell];
+  const auto bit = static_cast<std::uint8_t>(1u << (dir - 1));
+  if (m & bit) return;  // already cut by an earlier segment, which keeps it
+  if (m == 0) touched_.push_back(cell);
+  m |= bit;
+  raw_.push_back(CutLink{cell, static_cast<std::uint8_t>(dir), static_cast<float>(v.x()),
+                         static_cast<float>(v.y()), owner});
+}
+
+void LinkCutter::cut(const std::vector<Filament>& filaments, std::vector<CutLink>* links,
+                     std::vector<int>* first_segment) {
   using d2q9::kCx;
   using d2q9::kCy;
   using d2q9::kOpp;
-  std::vector<CutLink> links;
+  constexpr double kLink = 1.4142135623730951 + 1e-9;  // longest link
+  touched_.clear();
+  raw_.clear();
   first_segment->assign(1, 0);
   int segment = 0;
   // Each undirected link is visited once from its node a, towards a + c for these directions.
@@ -57,44 +89,54 @@ std::vector<CutLink> cut_links(const std::vector<Filament>& filaments, int width
       const Vec2& q = fil.points[k + 1];
       const Vec2 vp = fil.velocities.empty() ? Vec2::Zero() : fil.velocities[k];
       const Vec2 vq = fil.velocities.empty() ? Vec2::Zero() : fil.velocities[k + 1];
-      // Nodes sit at cell + 0.5; a link from node a reaches one cell further.
-      const int x0 = std::max(-1, static_cast<int>(std::floor(std::min(p.x(), q.x()) - 1.5)));
-      const int x1 = std::min(width, static_cast<int>(std::ceil(std::max(p.x(), q.x()) + 0.5)));
-      const int y0 = std::max(-1, static_cast<int>(std::floor(std::min(p.y(), q.y()) - 1.5)));
-      const int y1 = std::min(height, static_cast<int>(std::ceil(std::max(p.y(), q.y()) + 0.5)));
+      const Vec2 d = q - p;
+      const double len = d.norm();
+      // Node a = (x + 1/2, y + 1/2) has links reaching 1 in x either way and 0..1 in y.
+      const int x0 = std::max(-1, static_cast<int>(std::ceil(std::min(p.x(), q.x()) - 1.5)));
+      const int x1 = std::min(width_, static_cast<int>(std::floor(std::max(p.x(), q.x()) + 0.5)));
+      const int y0 = std::max(-1, static_cast<int>(std::ceil(std::min(p.y(), q.y()) - 1.5)));
+      const int y1 = std::min(height_, static_cast<int>(std::floor(std::max(p.y(), q.y()) - 0.5)));
       for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
           const Vec2 a(x + 0.5, y + 0.5);
+          // Side of a relative to the segment's line (times |d|); along a link it changes
+          // linearly, so each link's far end costs one add.
+          const double sa = cross(d, a - p);
+          // No link of a node farther than one link length from the line can cross it.
+          if (std::abs(sa) > kLink * len) continue;
           for (int i : kHalf) {
+            const double sb = sa + d.x() * kCy[i] - d.y() * kCx[i];
+            if ((sa > 0 && sb > 0) || (sa < 0 && sb < 0)) continue;
             const int bx = x + kCx[i], by = y + kCy[i];
-            const Vec2 b(bx + 0.5, by + 0.5);
             double t = 0.0;
-            if (!link_cut(a, b, p, q, &t)) continue;
+            if (!link_cut(a, Vec2(bx + 0.5, by + 0.5), p, q, &t)) continue;
             const Vec2 v = (1.0 - t) * vp + t * vq;
             // The population travelling a -> b arrives at b along i; the one b -> a at a along
             // opp(i).
-            if (bx >= 0 && bx < width && by >= 0 && by < height)
-              links.push_back(
-                  {by * width + bx, static_cast<std::uint8_t>(i), v.x(), v.y(), segment});
-            if (x >= 0 && x < width && y >= 0 && y < height)
-              links.push_back(
-                  {y * width + x, static_cast<std::uint8_t>(kOpp[i]), v.x(), v.y(), segment});
+            if (bx >= 0 && bx < width_ && by >= 0 && by < height_)
+              add(by * width_ + bx, i, v, segment);
+            if (x >= 0 && x < width_ && y >= 0 && y < height_)
+              add(y * width_ + x, kOpp[i], v, segment);
           }
         }
     }
     first_segment->push_back(segment);
   }
-  // A link cut by two segments (at a shared node, or where filaments cross) bounces once;
-  // stable sort keeps the first segment as its owner.
-  std::stable_sort(links.begin(), links.end(), [](const CutLink& l, const CutLink& r) {
-    return l.cell != r.cell ? l.cell < r.cell : l.dir < r.dir;
-  });
-  links.erase(std::unique(links.begin(), links.end(),
-                          [](const CutLink& l, const CutLink& r) {
-                            return l.cell == r.cell && l.dir == r.dir;
-                          }),
-              links.end());
-  return links;
+  // Order by (cell, dir) without sorting the links: sort the cells, give each its offset, then
+  // scatter every link to offset + rank of its direction among the cell's cut directions.
+  // Two counting passes (x, then y) sort the cells in O(cells + width + height).
+  sort_by_cell(touched_);
+  std::int32_t offset = 0;
+  for (std::int32_t cell : touched_) {
+    slot_[cell] = offset;
+    offset += std::popcount(mask_[cell]);
+  }
+  links->resize(offset);
+  for (const CutLink& l : raw_) {
+    const unsigned below = mask_[l.cell] & ((1u << (l.dir - 1)) - 1u);
+    (*links)[slot_[l.cell] + std::popcount(below)] = l;
+  }
+  for (std::int32_t cell : touched_) mask_[cell] = 0;
 }
 
 }  // namespace hair25d::fluid

@@ -16,15 +16,40 @@ namespace hair25d::fluid {
 // One lattice link cut by a filament, seen from the fluid cell that receives the bounced
 // population: the population arriving at `cell` along direction `dir` comes back from the wall.
 struct CutLink {
-  std::int32_t cell = 0;      // y * width + x
-  std::uint8_t dir = 0;       // D2Q9 direction of the incoming population (1..8)
-  double ux = 0.0, uy = 0.0;  // wall velocity at the crossing
-  std::int32_t owner = 0;     // global segment id
+  std::int32_t cell = 0;       // y * width + x
+  std::uint8_t dir = 0;        // D2Q9 direction of the incoming population (1..8)
+  float ux = 0.0f, uy = 0.0f;  // wall velocity at the crossing
+  std::int32_t owner = 0;      // global segment id
+};
+
+// Finds the links cut by the filaments. Keeps per-cell scratch so a call costs O(links) and
+// no sort over all of them: hair skeletons move, so this runs every step.
+class LinkCutter {
+ public:
+  LinkCutter(int width, int height);
+  // All links cut, sorted by (cell, dir), one per (cell, dir): the first segment that cuts a
+  // link owns it. `first_segment` gets the global id of each filament's first segment, then
+  // the total.
+  void cut(const std::vector<Filament>& filaments, std::vector<CutLink>* links,
+           std::vector<int>* first_segment);
+
+ private:
+  void add(std::int32_t cell, int dir, const Vec2& v, std::int32_t owner);
+  void sort_by_cell(std::vector<std::int32_t>& cells);
+  int width_, height_;
+  std::vector<std::uint8_t> mask_;     // per cell: bit d = direction d already cut
+  std::vector<std::int32_t> slot_;     // per touched cell: offset of its first link in the output
+  std::vector<std::int32_t> touched_;  // cells with a cut link
+  std::vector<CutLink> raw_;           // unique links in the order found
+  std::vector<std::int32_t> scratch_, count_;
 };
 
 class LatticeBase {
  public:
+  LatticeBase(int width, int height) : cutter(width, height) {}
   virtual ~LatticeBase() = default;
+  LinkCutter cutter;  // scratch of set_filaments, kept to avoid reallocation
+  std::vector<CutLink> cut_scratch;
   // One time step; returns the sum of |u|^2 over the bulk (NaN or huge when diverged).
   virtual double step() = 0;
   // `links` sorted by (cell, dir), unique.
@@ -43,10 +68,5 @@ class LatticeBase {
 
 // `options` must be valid; `labels` is height x width, 0 fluid, k > 0 obstacle k.
 std::unique_ptr<LatticeBase> make_lattice(const Options& options, const Eigen::MatrixXi& labels);
-
-// All links cut by the filaments, sorted by (cell, dir) and unique. Also returns per filament
-// the global id of its first segment through `first_segment` (size = filaments + 1).
-std::vector<CutLink> cut_links(const std::vector<Filament>& filaments, int width, int height,
-                               std::vector<int>* first_segment);
 
 }  // namespace hair25d::fluid

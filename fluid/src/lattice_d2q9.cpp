@@ -106,7 +106,7 @@ class Lattice final : public LatticeBase {
 
 template <typename T>
 Lattice<T>::Lattice(const Options& o, const Eigen::MatrixXi& labels)
-    : width_(o.width), height_(o.height), threads_(o.threads) {
+    : LatticeBase(o.width, o.height), width_(o.width), height_(o.height), threads_(o.threads) {
   // Waking a second thread costs a few microseconds per step: below ~8k cells one thread wins
   // (and does not fight over a loaded machine).
   threads_ = std::max(1, std::min(threads_, width_ * height_ / kCellsPerThread));

@@ -136,9 +136,9 @@ void Solver::set_filaments(const std::vector<Filament>& filaments) {
                     " cells/step");
   }
   std::vector<int> first;
-  const std::vector<CutLink> links = cut_links(filaments, options_.width, options_.height, &first);
+  lattice_->cutter.cut(filaments, &lattice_->cut_scratch, &first);
   const int total = first.back();
-  lattice_->set_cut_links(links, total);
+  lattice_->set_cut_links(lattice_->cut_scratch, total);
   first_segment_ = std::move(first);
   segment_normals_.resize(total);
   segment_lengths_.resize(total);

@@ -1,0 +1,185 @@
+// Speed of the D2Q9 wind solver: million lattice updates per second (MLUPS) from a grid that
+// fits in cache (256 x 192) to one that does not (2048 x 1024), on 1 and 2 threads, with moving
+// hair-like filaments in the flow; and in the same run the memory bandwidth (STREAM-style
+// triad) and the fraction of the bandwidth roofline the solver reaches (72 bytes per cell
+// update in float, 144 in double: 9 populations read and 9 written).
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <vector>
+
+#include "hair25d/fluid/solver.h"
+
+namespace {
+
+using hair25d::Polyline;
+using hair25d::Vec2;
+namespace fluid = hair25d::fluid;
+
+// STREAM triad a = b + s c over arrays far larger than the 32 MiB L3, counted bytes
+// (2 reads + 1 write of 8 bytes, no write-allocate), best of `runs`, on `threads` threads.
+double triad_bandwidth(int threads, int runs = 7) {
+  const std::size_t n = std::size_t{1} << 24;  // 3 x 128 MiB
+  std::vector<double> a(n), b(n), c(n);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    a[i] = 0.0;
+    b[i] = 1.0;
+    c[i] = 2.0;
+  }
+  double best = 0.0;
+  for (int r = 0; r < runs; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double s = 3.0 + r;
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::size_t i = 0; i < n; ++i) a[i] = b[i] + s * c[i];
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    benchmark::DoNotOptimize(a.data());
+    best = std::max(best, 3.0 * 8.0 * static_cast<double>(n) / seconds);
+  }
+  return best;
+}
+
+std::map<int, double>& bandwidth() {
+  static std::map<int, double> by_threads;
+  return by_threads;
+}
+
+void BM_Triad(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  double bw = 0.0;
+  for (auto _ : state) bw = triad_bandwidth(threads, 3);
+  state.counters["GB/s"] = bw / 1e9;
+}
+BENCHMARK(BM_Triad)
+    ->Arg(1)
+    ->Arg(2)
+    ->Iterations(1)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true)
+    ->UseRealTime();
+
+// Hair-like filaments: `count` wavy polylines hanging across the stream, 2 cells per segment.
+std::vector<fluid::Filament> hair(int width, int height, int count, double phase) {
+  std::vector<fluid::Filament> out;
+  for (int k = 0; k < count; ++k) {
+    fluid::Filament f;
+    const double x0 = width * (0.3 + 0.4 * k / std::max(1, count - 1));
+    const double len = 0.5 * height;
+    for (double s = 0; s <= len; s += 2.0) {
+      const double sway = 3.0 * std::sin(0.05 * s + phase + k);
+      f.points.push_back(Vec2(x0 + sway + 0.2 * s, 0.2 * height + s));
+      f.velocities.push_back(Vec2(0.01 * std::cos(0.05 * s + phase + k), 0.0));
+    }
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+void BM_Step(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  const int height = static_cast<int>(state.range(1));
+  const int threads = static_cast<int>(state.range(2));
+  const bool dbl = state.range(3) != 0;
+  const int filaments = static_cast<int>(state.range(4));
+  fluid::Options o;
+  o.width = width;
+  o.height = height;
+  o.tau = 0.56;
+  o.threads = threads;
+  o.precision = dbl ? fluid::Precision::kDouble : fluid::Precision::kFloat;
+  o.left.kind = fluid::SideKind::kInlet;
+  o.left.velocity = Vec2(0.05, 0.0);
+  o.right.kind = fluid::SideKind::kOutflow;
+  o.top.kind = o.bottom.kind = fluid::SideKind::kWall;
+  fluid::Solver solver(o);
+  solver.step(5);
+  int frame = 0;
+  std::size_t segments = 0;
+  for (auto _ : state) {
+    // The filaments move every step, as the hair skeletons do.
+    if (filaments > 0) {
+      const auto f = hair(width, height, filaments, 0.01 * frame);
+      segments = 0;
+      for (const auto& fil : f) segments += fil.points.size() - 1;
+      solver.set_filaments(f);
+    }
+    solver.step(1);
+    ++frame;
+  }
+  const double cells = static_cast<double>(width) * height;
+  state.counters["MLUPS"] = benchmark::Counter(
+      cells * static_cast<double>(state.iterations()) / 1e6, benchmark::Counter::kIsRate);
+  state.counters["segments"] = static_cast<double>(segments);
+  const double bytes = dbl ? 144.0 : 72.0;
+  const auto bw = bandwidth().find(threads);
+  if (bw != bandwidth().end()) {
+    // Roofline in MLUPS; the fraction is computed per repetition, the median is reported.
+    state.counters["roofline_MLUPS"] = bw->second / bytes / 1e6;
+    state.counters["roofline_frac"] =
+        benchmark::Counter(cells * static_cast<double>(state.iterations()) * bytes / bw->second,
+                           benchmark::Counter::kIsRate);
+  }
+}
+
+void step_args(benchmark::internal::Benchmark* b) {
+  const int sizes[][2] = {{256, 192}, {512, 384}, {1024, 768}, {2048, 1024}};
+  for (int dbl : {0, 1})
+    for (const auto& s : sizes)
+      for (int threads : {1, 2})
+        for (int fil : {0, 24}) {
+          if (dbl && fil) continue;
+          b->Args({s[0], s[1], threads, dbl, fil});
+        }
+  b->ArgNames({"w", "h", "threads", "double", "filaments"});
+}
+BENCHMARK(BM_Step)
+    ->Apply(step_args)
+    ->MinTime(0.3)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true)
+    ->UseRealTime();
+
+// Cost of cutting the lattice links of moving filaments alone (done every step).
+void BM_SetFilaments(benchmark::State& state) {
+  fluid::Options o;
+  o.width = 512;
+  o.height = 384;
+  o.left.kind = o.right.kind = o.top.kind = o.bottom.kind = fluid::SideKind::kWall;
+  fluid::Solver solver(o);
+  const int count = static_cast<int>(state.range(0));
+  int frame = 0;
+  std::size_t segments = 0;
+  for (auto _ : state) {
+    const auto f = hair(o.width, o.height, count, 0.01 * frame++);
+    segments = 0;
+    for (const auto& fil : f) segments += fil.points.size() - 1;
+    solver.set_filaments(f);
+  }
+  state.counters["segments/s"] =
+      benchmark::Counter(static_cast<double>(segments) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SetFilaments)->Arg(8)->Arg(64)->Repetitions(5)->ReportAggregatesOnly(true);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // The bandwidth the roofline fractions refer to is measured first, in this same run.
+  for (int threads : {1, 2}) {
+    bandwidth()[threads] = triad_bandwidth(threads);
+    std::printf("triad bandwidth, %d thread(s): %.2f GB/s (counted bytes, best of 7)\n", threads,
+                bandwidth()[threads] / 1e9);
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
