@@ -188,25 +188,30 @@ GroundTruth make_ground_truth(const Scene& scene, const cv::Mat& owner) {
     }
   }
 
-  // Lines and dropped slivers go to the nearest kept piece (breadth first), so
-  // regions separated only by a line become 4-neighbours.
-  std::vector<int> grown(comp.size(), -1);
+  // Line pixels go to the nearest piece (breadth first), so regions separated
+  // only by a line become 4-neighbours. Slivers too thin to be regions still
+  // grow as pieces of their own: two regions on either side of a sliver of a
+  // third strand do not meet.
+  // Growth stops half a line width (plus a pixel) out, so where several
+  // outlines pile up into a thick blot of ink the regions around it do not
+  // meet: neighbours are at most a line width (plus 3 pixels) apart.
+  const int reach = static_cast<int>(std::ceil(scene.line_width / 2.0)) + 1;
+  std::vector<int> grown(comp.begin(), comp.end());
+  std::vector<int> depth(comp.size(), 0);
   std::vector<int> queue;
   queue.reserve(comp.size());
   for (std::size_t p = 0; p < comp.size(); ++p) {
-    const int c = comp[p];
-    if (c >= 0 && (!is_hair(comps[c]) || region_of[c] > 0)) {
-      grown[p] = c;
-      queue.push_back(static_cast<int>(p));
-    }
+    if (comp[p] >= 0) queue.push_back(static_cast<int>(p));
   }
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const int p = queue[head], x = p % w, y = p / w;
+    if (depth[p] >= reach) continue;
     const int next[4] = {x > 0 ? p - 1 : -1, x + 1 < w ? p + 1 : -1, y > 0 ? p - w : -1,
                          y + 1 < h ? p + w : -1};
     for (int q : next) {
       if (q >= 0 && grown[q] < 0) {
         grown[q] = grown[p];
+        depth[q] = depth[p] + 1;
         queue.push_back(q);
       }
     }
