@@ -6,6 +6,8 @@
 #include <numbers>
 #include <set>
 #include <sstream>
+#include <cstdio>
+#include <cstdlib>
 
 #include "hair25d/core/error.h"
 #include "hair25d/layering/depth_order.h"
@@ -120,7 +122,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
     Polyline curve = b.points;
     if (b.closed()) curve.push_back(curve.front());
-    rep.line_contrast = lines.boundary_contrast(curve, 1.5 * out.line_width);
+    rep.line_contrast =
+        lines.boundary_contrast(curve, 1.5 * out.line_width, out.labels, b.left, b.right);
     weighted.emplace_back(rep.line_contrast, rep.length);
   }
   if (options.line_threshold > 0) {
@@ -179,7 +182,29 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       // walking away from the end the sides swap.
       const double alpha = r.at_start ? before : after;
       const double beta = r.at_start ? after : before;
-      if (!cusp[j]) out.boundaries[r.boundary].phi_j += junction_metric(alpha, beta);
+      static const int jmode = std::getenv("JMODE") ? std::atoi(std::getenv("JMODE")) : 0;
+      double cont = 0.0;
+      if (jmode != 0) {
+        // Continuation: how straight the best boundary sharing left / right continues.
+        const int A = r.at_start ? b.left : b.right;   // region on the left walking away
+        double ca = -2, cb = -2;
+        for (const Ray& o : rays[j]) {
+          if (&o == &r || o.boundary == r.boundary) continue;
+          const Boundary& ob = bs[o.boundary];
+          const double c = -r.direction.dot(o.direction);
+          const bool has_a = ob.left == A || ob.right == A;
+          const int Bl = r.at_start ? b.right : b.left;
+          const bool has_b = ob.left == Bl || ob.right == Bl;
+          if (has_a && !has_b) ca = std::max(ca, c);
+          if (has_b && !has_a) cb = std::max(cb, c);
+        }
+        if (ca < -1.5) ca = 0;
+        if (cb < -1.5) cb = 0;
+        if (jmode == 2) { ca = std::max(0.0, ca); cb = std::max(0.0, cb); }
+        // oriented to b.left above
+        cont = (ca - cb) * (r.at_start ? 1.0 : -1.0);
+      }
+      if (!cusp[j]) out.boundaries[r.boundary].phi_j += jmode == 0 ? junction_metric(alpha, beta) : jmode == 3 ? junction_metric(alpha, beta) + cont : cont;
     }
   }
   if (!hair_junction)
@@ -223,8 +248,11 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     problem.unary.push_back(unary);
     boundary_of.push_back(i);
   }
+  const int coupling_mode = std::getenv("CMODE") ? std::atoi(std::getenv("CMODE")) : 0;
   for (int j = 0; j < nj; ++j) {
     const auto& rs = rays[j];
+    struct Candidate { int bi, bj; double theta; bool same; };
+    std::vector<Candidate> cands;
     for (std::size_t p = 0; p < rs.size(); ++p) {
       for (std::size_t q = p + 1; q < rs.size(); ++q) {
         const int bi = rs[p].boundary, bj = rs[q].boundary;
@@ -238,14 +266,30 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
           if (l == v.left || l == v.right) shared = l, ++count;
         if (count != 1) continue;
         const double theta = std::acos(std::clamp(rs[p].direction.dot(rs[q].direction), -1.0, 1.0));
-        const double weight = coupling_weight(theta, options.coupling_cap);
-        if (weight <= 0) continue;
         const bool same = (shared == u.left) == (shared == v.left);
-        problem.couplings.push_back({state_of[bi], state_of[bj], weight, same});
+        cands.push_back({bi, bj, theta, same});
       }
+    }
+    if (coupling_mode == 2) cands.clear();
+    if (coupling_mode == 1 && !cands.empty()) {
+      auto best = std::max_element(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.theta < b.theta; });
+      Candidate c = *best;
+      cands.clear();
+      if (c.theta >= 0.75 * std::numbers::pi) cands.push_back(c);
+    }
+    for (const Candidate& c : cands) {
+      const double weight = coupling_weight(c.theta, options.coupling_cap);
+      if (weight <= 0) continue;
+      problem.couplings.push_back({state_of[c.bi], state_of[c.bj], weight, c.same});
     }
   }
   const StateSolution solution = solve_states(problem);
+  if (std::getenv("LAYDBG")) {
+    for (const auto& c : problem.couplings) {
+      const int bi = boundary_of[c.i], bj = boundary_of[c.j];
+      std::fprintf(stderr, "C B%d(%d|%d x%d u%.2f) B%d(%d|%d x%d u%.2f) w %.2f same %d\n", bi, bs[bi].left, bs[bi].right, solution.x[c.i], problem.unary[c.i], bj, bs[bj].left, bs[bj].right, solution.x[c.j], problem.unary[c.j], c.weight, c.same);
+    }
+  }
   out.states = static_cast<int>(problem.unary.size());
   out.dropped_couplings = solution.dropped_couplings;
   // How much each state is held by the energy: half the cost of flipping it.

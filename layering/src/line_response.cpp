@@ -10,6 +10,8 @@
 namespace hair25d::layering::detail {
 namespace {
 
+constexpr int kOutside = -2147483647;
+
 cv::Mat grey_of(const Image& image) {
   cv::Mat grey(image.height(), image.width(), CV_32F);
   for (int y = 0; y < image.height(); ++y) {
@@ -72,7 +74,8 @@ double LineResponse::sample(double x, double y) const {
          fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
 }
 
-double LineResponse::boundary_contrast(const Polyline& curve, double skip) const {
+double LineResponse::boundary_contrast(const Polyline& curve, double skip, const LabelMap& labels,
+                                       int left, int right) const {
   if (curve.size() < 2) return 0.0;
   const Polyline pts = resample_polyline(curve, 1.0);
   const int n = static_cast<int>(pts.size());
@@ -80,8 +83,12 @@ double LineResponse::boundary_contrast(const Polyline& curve, double skip) const
   // Near short boundaries keep at least the middle third.
   skip = std::min(skip, total / 3.0);
   const double half = 0.5 * line_width_ + 1.0;  // search for the line centre
-  const double side = line_width_ + 1.5;        // paper on both sides
+  const double reach = 3.0 * line_width_ + 2.0;  // search for paper
   const int span = std::max(2, static_cast<int>(std::lround(line_width_)));
+  auto label_at = [&](const Vec2& q) {
+    const int x = static_cast<int>(std::floor(q.x())), y = static_cast<int>(std::floor(q.y()));
+    return labels.contains(x, y) ? labels.at(x, y) : kOutside;
+  };
   std::vector<double> values;
   values.reserve(n);
   double along = 0.0;
@@ -90,13 +97,22 @@ double LineResponse::boundary_contrast(const Polyline& curve, double skip) const
     if (along < skip || along > total - skip) continue;
     const Vec2 t = pts[std::min(n - 1, i + span)] - pts[std::max(0, i - span)];
     if (t.squaredNorm() == 0.0) continue;
-    const Vec2 nrm = Vec2(-t.y(), t.x()).normalized();
+    // On the screen the left of travel t is (t.y, −t.x).
+    const Vec2 to_left = Vec2(t.y(), -t.x()).normalized();
     double centre = 1e9;
-    for (double s = -half; s <= half + 1e-9; s += 0.5)
-      centre = std::min(centre, sample(pts[i].x() + s * nrm.x(), pts[i].y() + s * nrm.y()));
-    const Vec2 a = pts[i] + side * nrm;
-    const Vec2 b = pts[i] - side * nrm;
-    values.push_back(std::min(sample(a.x(), a.y()), sample(b.x(), b.y())) - centre);
+    for (double s = -half; s <= half + 1e-9; s += 0.5) {
+      const Vec2 q = pts[i] + s * to_left;
+      centre = std::min(centre, sample(q.x(), q.y()));
+    }
+    double paper_left = -1.0, paper_right = -1.0;
+    for (double s = 1.0; s <= reach; s += 1.0) {
+      const Vec2 ql = pts[i] + s * to_left;
+      const Vec2 qr = pts[i] - s * to_left;
+      if (label_at(ql) == left) paper_left = std::max(paper_left, sample(ql.x(), ql.y()));
+      if (label_at(qr) == right) paper_right = std::max(paper_right, sample(qr.x(), qr.y()));
+    }
+    if (paper_left < 0 || paper_right < 0) continue;
+    values.push_back(std::min(paper_left, paper_right) - centre);
   }
   return median_of(values);
 }

@@ -17,9 +17,13 @@ class LineResponse {
   LineResponse(const Image& image, double line_width);
 
   // Median over samples along `curve` (pixel corners) of
-  // min(I(side+), I(side−)) − min over the line's cross-section, ignoring
-  // `skip` pixels at each end (junction areas where the sides are lines too).
-  double boundary_contrast(const Polyline& curve, double skip) const;
+  // min(paper left, paper right) − darkest point of the line's cross-section,
+  // ignoring `skip` pixels at each end. "Paper" on a side is the brightest
+  // point within three line widths along the normal that still lies in that
+  // side's region of `labels` (`left`/`right`): crowded lines beside the
+  // boundary (hair tips) do not hide its own line.
+  double boundary_contrast(const Polyline& curve, double skip, const LabelMap& labels, int left,
+                           int right) const;
 
   // Estimated standard deviation of pixel noise (grey levels) from the
   // median absolute deviation of a Laplacian, for a floor of the threshold.
