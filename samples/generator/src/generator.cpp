@@ -115,8 +115,10 @@ AnnotatedCase generate_case(const Options& options) {
     c.region_list = gt.region_list;
     c.pairs = gt.pairs;
     c.strokes = gt.strokes;
-    for (const Shape& s : scene.shapes) {
-      if (s.hair) c.strand_masks.emplace(s.strand, shape_mask(scene, s));
+    if (options.strand_masks) {
+      for (const Shape& s : scene.shapes) {
+        if (s.hair) c.strand_masks.emplace(s.strand, shape_mask(scene, s));
+      }
     }
     return c;
   } catch (const cv::Exception& e) {

@@ -81,7 +81,7 @@ Palette make_palette(const Options& options, Rng& rng) {
 Head make_head(const Options& options, Rng& rng) {
   const double w = options.width, h = options.height, m = std::min(w, h);
   Head head;
-  head.radius = m * rng.uniform(0.15, 0.22);
+  head.radius = m * rng.uniform(0.17, 0.25);
   const double r = head.radius;
   double cy = h * rng.uniform(0.33, 0.42);
   cy = std::max(cy, 1.4 * r + 0.02 * h);  // keep the top of the hair in the picture
@@ -107,7 +107,8 @@ Shape make_back_mass(const Head& head, const Palette& pal, int image_height, Rng
     s.outline.emplace_back(cx + rb * std::cos(a), cy + rb * squash * std::sin(a));
   }
   const Vec2 right_top(cx + rb, cy), left_top(cx - rb, cy);
-  const Vec2 right_bottom(cx + rb * flare, bottom), left_bottom(cx - rb * flare, bottom);
+  const Vec2 right_bottom(cx + rb * flare, bottom);
+  Vec2 left_bottom(cx - rb * flare, bottom);
   append_bezier(s.outline, right_top, right_top + Vec2(0, (bottom - cy) * 0.4),
                 right_bottom - Vec2(0, (bottom - cy) * 0.3), right_bottom, 12);
   const int style = rng.uniform_int(0, 2);
@@ -126,7 +127,7 @@ Shape make_back_mass(const Head& head, const Palette& pal, int image_height, Rng
                   left_bottom + Vec2(0.3 * rb, sag), left_bottom, 24);
     s.outline.pop_back();
   } else {  // a straight cut, slightly tilted
-    s.outline.emplace_back(left_bottom.x() + 1.0, bottom + rng.uniform(-0.2, 0.2) * r);
+    left_bottom.y() += rng.uniform(-0.2, 0.2) * r;
   }
   s.outline.push_back(left_bottom);
   append_bezier(s.outline, left_bottom, left_bottom - Vec2(0, (bottom - cy) * 0.3),
@@ -198,7 +199,7 @@ Shape make_body(const Head& head, const Palette& pal, int image_height, Rng& rng
 }
 
 Shape make_strand(StrandKind kind, const Head& head, const Palette& pal, const Options& options,
-                  int side, Rng& rng) {
+                  int side, double slot, Rng& rng) {
   const double r = head.radius, cx = head.centre.x(), cy = head.centre.y();
   Vec2 root(0, 0), dir(0, 1);
   double length = r, width = 0.2 * r;
@@ -206,7 +207,9 @@ Shape make_strand(StrandKind kind, const Head& head, const Palette& pal, const O
   switch (kind) {
     case StrandKind::kBang:
     case StrandKind::kUnderCap: {
-      const double a = rng.uniform(kPi + 0.3, 2 * kPi - 0.3);
+      // Stratified along the crown so bangs spread over the forehead.
+      const double u = slot >= 0.0 ? slot : rng.uniform();
+      const double a = kPi + 0.3 + (kPi - 0.6) * u;
       const double rho =
           kind == StrandKind::kBang ? r * rng.uniform(0.45, 0.9) : r * rng.uniform(0.3, 0.7);
       root = {cx + rho * std::cos(a), cy + 0.9 * rho * std::sin(a)};

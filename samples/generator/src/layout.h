@@ -38,7 +38,9 @@ Shape make_body(const Head& head, const Palette& pal, int image_height, Rng& rng
 // goes and how long and wide it is.
 enum class StrandKind { kBang, kUnderCap, kSideFront, kBehindFace, kTail };
 
+// `side`: -1 left, 1 right (side locks, tails); `slot` in [0, 1): where along
+// the crown a bang's root goes (< 0: anywhere).
 Shape make_strand(StrandKind kind, const Head& head, const Palette& pal, const Options& options,
-                  int side, Rng& rng);
+                  int side, double slot, Rng& rng);
 
 }  // namespace hair25d::generator

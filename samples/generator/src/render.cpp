@@ -142,12 +142,18 @@ void fill_layer(const Scene& sc, const Shape& s, const cv::Rect& roi, int scale,
       if (!s.hair) return;
       const cv::Mat param = shading_param(s, roi, scale);
       const Colour light = (s.colour * 1.12).cwiseMin(1.0);
+      constexpr int kSteps = 256;
+      std::vector<cv::Vec3b> ramp(kSteps);
+      for (int i = 0; i < kSteps; ++i) {
+        ramp[i] = rgb8(light + (dark - light) * (i / (kSteps - 1.0)));
+      }
       for (int y = 0; y < roi.height; ++y) {
         const auto* p = param.ptr<float>(y);
         const auto* m = mask.ptr<uchar>(y);
         auto* row = layer.ptr<cv::Vec3b>(y);
         for (int x = 0; x < roi.width; ++x) {
-          if (m[x]) row[x] = rgb8(light + (dark - light) * static_cast<double>(p[x]));
+          if (m[x])
+            row[x] = ramp[std::clamp(static_cast<int>(p[x] * (kSteps - 1) + 0.5f), 0, kSteps - 1)];
         }
       }
       return;
@@ -187,10 +193,27 @@ cv::Mat render_picture(const Scene& sc, int scale) {
     if (roi.empty()) continue;
     const cv::Point origin = roi.tl();
     const auto outline = to_fixed(s.outline, scale, origin);
-    cv::Mat mask(roi.size(), CV_8U, cv::Scalar(0));
-    cv::fillPoly(mask, std::vector{outline}, cv::Scalar(255), cv::LINE_8, kShift);
-    cv::Mat layer(roi.size(), CV_8UC3);
-    fill_layer(sc, s, roi, scale, mask, layer);
+    cv::Mat target = canvas(roi);
+    // Most shapes are drawn straight onto the canvas; a layer clipped by the
+    // shape's mask is needed only where paint could leave the shape (fork
+    // lines) or is computed per pixel.
+    const bool per_pixel =
+        s.hair && (sc.shading == Shading::kGradient || sc.shading == Shading::kScreentone ||
+                   (sc.shading == Shading::kTwoTone && !s.geometry));
+    cv::Mat layer = target;
+    cv::Mat mask;
+    if (per_pixel || !s.inner_lines.empty()) {
+      mask = cv::Mat(roi.size(), CV_8U, cv::Scalar(0));
+      cv::fillPoly(mask, std::vector{outline}, cv::Scalar(255), cv::LINE_8, kShift);
+      layer = cv::Mat(roi.size(), CV_8UC3);
+      fill_layer(sc, s, roi, scale, mask, layer);
+    } else {
+      cv::fillPoly(target, std::vector{outline}, rgb(s.colour), cv::LINE_8, kShift);
+      if (sc.shading == Shading::kTwoTone && !s.band.empty()) {
+        cv::fillPoly(target, std::vector{to_fixed(s.band, scale, origin)}, rgb(s.colour * 0.72),
+                     cv::LINE_8, kShift);
+      }
+    }
     for (const FilledEllipse& e : s.decorations) {
       cv::fillPoly(
           layer,
@@ -201,8 +224,7 @@ cv::Mat render_picture(const Scene& sc, int scale) {
       cv::polylines(layer, std::vector{to_fixed(l, scale, origin)}, false, ink, line, cv::LINE_8,
                     kShift);
     }
-    cv::Mat target = canvas(roi);
-    layer.copyTo(target, mask);
+    if (!mask.empty()) layer.copyTo(target, mask);
     cv::polylines(target, std::vector{outline}, true, ink, line, cv::LINE_8, kShift);
   }
   if (scale == 1) return canvas;

@@ -57,27 +57,29 @@ Scene make_scene(const Options& options, Rng& rng) {
   Rng strands_rng = rng.fork();
   for (int side : {-1, 1}) {
     for (int i = 0; i < tails_per_side; ++i) {
-      shapes.push_back(make_strand(StrandKind::kTail, head, pal, options, side, strands_rng));
+      shapes.push_back(make_strand(StrandKind::kTail, head, pal, options, side, -1.0, strands_rng));
     }
   }
   shapes.push_back(make_back_mass(head, pal, options.height, rng));
   if (body) shapes.push_back(make_body(head, pal, options.height, rng));
   for (int i = 0; i < behind; ++i) {
     shapes.push_back(make_strand(StrandKind::kBehindFace, head, pal, options,
-                                 strands_rng.chance(0.5) ? 1 : -1, strands_rng));
+                                 strands_rng.chance(0.5) ? 1 : -1, -1.0, strands_rng));
   }
   shapes.push_back(make_face(head, pal, rng));
   for (int i = 0; i < under; ++i) {
-    shapes.push_back(make_strand(StrandKind::kUnderCap, head, pal, options, 0, strands_rng));
+    shapes.push_back(make_strand(StrandKind::kUnderCap, head, pal, options, 0,
+                                 (i + strands_rng.uniform()) / under, strands_rng));
   }
   if (cap) shapes.push_back(make_cap(head, pal, rng));
   std::vector<Shape> front_shapes;
   for (int i = 0; i < side_front; ++i) {
-    front_shapes.push_back(
-        make_strand(StrandKind::kSideFront, head, pal, options, i % 2 == 0 ? -1 : 1, strands_rng));
+    front_shapes.push_back(make_strand(StrandKind::kSideFront, head, pal, options,
+                                       i % 2 == 0 ? -1 : 1, -1.0, strands_rng));
   }
   for (int i = 0; i < bangs; ++i) {
-    front_shapes.push_back(make_strand(StrandKind::kBang, head, pal, options, 0, strands_rng));
+    front_shapes.push_back(make_strand(StrandKind::kBang, head, pal, options, 0,
+                                       (i + strands_rng.uniform()) / bangs, strands_rng));
   }
   shuffle(front_shapes, strands_rng);
   for (Shape& s : front_shapes) shapes.push_back(std::move(s));

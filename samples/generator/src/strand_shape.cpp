@@ -115,8 +115,9 @@ Polyline band_polygon(const StrandGeometry& g, int side, double t0, double t1, d
     if (g.t[i] < t0 || g.t[i] > t1) continue;
     const double u = (g.t[i] - t0) / std::max(1e-9, t1 - t0);
     const Vec2 nl = normal_at(g, i) * (side > 0 ? 1.0 : -1.0);
-    // Slightly outside the edge so no sliver of base colour shows under the line.
-    edge.push_back(g.centre[i] + nl * (g.width[i] / 2 + 1.0));
+    // The very points of the side, so the band meets the outline without a
+    // sliver of base colour and never pokes out of the strand.
+    edge.push_back(side > 0 ? g.left[i] : g.right[i]);
     inner.push_back(g.centre[i] + nl * (g.width[i] / 2) * (1.0 - 2.0 * depth * std::sin(kPi * u)));
   }
   Polyline out = edge;

@@ -19,14 +19,15 @@ enum class Shading {
 };
 
 struct Options {
-  int width = 640;             // pixels
-  int height = 480;            // pixels
-  int strand_count = 12;       // hair strands (regions can be more: split strands)
-  double line_width = 3.0;     // outline width, pixels (anti-aliased)
+  int width = 640;          // pixels
+  int height = 480;         // pixels
+  int strand_count = 12;    // hair strands (regions can be more: split strands)
+  double line_width = 3.0;  // outline width, pixels (anti-aliased)
   Shading shading = Shading::kFlat;
-  double noise_sigma = 0.0;    // Gaussian pixel noise, 0..255 scale
-  int jpeg_quality = 0;        // > 0: pass the drawing through JPEG at this quality
-  bool coloured_lines = false; // lines in a dark hair colour instead of black
+  double noise_sigma = 0.0;     // Gaussian pixel noise, 0..255 scale
+  int jpeg_quality = 0;         // > 0: pass the drawing through JPEG at this quality
+  bool coloured_lines = false;  // lines in a dark hair colour instead of black
+  bool strand_masks = true;     // fill strand_masks (a full-size map a strand; off saves time)
   std::uint64_t seed = 1;
 
   // False, naming the option, its value and the rule, if unusable.
@@ -38,6 +39,20 @@ struct Options {
 // boundary with its true relation, strokes one stroke per region and some
 // background strokes, strand_masks each strand's whole shape. Throws
 // hair25d::Error if the options are invalid.
+//
+// Details the tests rely on:
+// - strand ids 1..strand_count follow the painter's order: a larger id lies
+//   above; regions of one strand are "equal" (split by an occluder, or the two
+//   halves of a forked strand);
+// - regions are 4-connected pieces of one strand's fill between lines; pieces
+//   too thin to hold a width-3 stroke 3 pixels from their edge are left 0;
+// - two regions are a pair when they meet across one line: after each region
+//   grows by ceil(line_width / 2) + 1 pixels into the line around it, they
+//   share at least 3 pixel edges;
+// - every pixel under a stroke (width 3) lies in the stroke's region (label 0
+//   strokes: on background, face or body);
+// - head_center is the centre of the cranium circle the hair is laid around;
+// - noise and JPEG change the picture only, never the ground truth.
 AnnotatedCase generate_case(const Options& options);
 
 }  // namespace hair25d::generator
