@@ -6,8 +6,6 @@
 #include <numbers>
 #include <set>
 #include <sstream>
-#include <cstdio>
-#include <cstdlib>
 
 #include "hair25d/core/error.h"
 #include "hair25d/layering/depth_order.h"
@@ -57,6 +55,8 @@ bool Options::is_valid(std::string* error) const {
   if (!(line_threshold_fraction > 0 && line_threshold_fraction < 1))
     return fail("line_threshold_fraction = " + num(line_threshold_fraction) +
                 "; must be in (0, 1)");
+  if (!(smooth_angle >= 0 && smooth_angle <= std::numbers::pi))
+    return fail("smooth_angle = " + num(smooth_angle) + "; must be in [0, π]");
   if (!positive_finite(fit_reach_widths))
     return fail("fit_reach_widths = " + num(fit_reach_widths) + "; must be finite and > 0");
   if (!(equal_fraction >= 0 && equal_fraction <= 1))
@@ -182,29 +182,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       // walking away from the end the sides swap.
       const double alpha = r.at_start ? before : after;
       const double beta = r.at_start ? after : before;
-      static const int jmode = std::getenv("JMODE") ? std::atoi(std::getenv("JMODE")) : 0;
-      double cont = 0.0;
-      if (jmode != 0) {
-        // Continuation: how straight the best boundary sharing left / right continues.
-        const int A = r.at_start ? b.left : b.right;   // region on the left walking away
-        double ca = -2, cb = -2;
-        for (const Ray& o : rays[j]) {
-          if (&o == &r || o.boundary == r.boundary) continue;
-          const Boundary& ob = bs[o.boundary];
-          const double c = -r.direction.dot(o.direction);
-          const bool has_a = ob.left == A || ob.right == A;
-          const int Bl = r.at_start ? b.right : b.left;
-          const bool has_b = ob.left == Bl || ob.right == Bl;
-          if (has_a && !has_b) ca = std::max(ca, c);
-          if (has_b && !has_a) cb = std::max(cb, c);
-        }
-        if (ca < -1.5) ca = 0;
-        if (cb < -1.5) cb = 0;
-        if (jmode == 2) { ca = std::max(0.0, ca); cb = std::max(0.0, cb); }
-        // oriented to b.left above
-        cont = (ca - cb) * (r.at_start ? 1.0 : -1.0);
-      }
-      if (!cusp[j]) out.boundaries[r.boundary].phi_j += jmode == 0 ? junction_metric(alpha, beta) : jmode == 3 ? junction_metric(alpha, beta) + cont : cont;
+      if (!cusp[j]) out.boundaries[r.boundary].phi_j += junction_metric(alpha, beta);
     }
   }
   if (!hair_junction)
@@ -248,7 +226,6 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     problem.unary.push_back(unary);
     boundary_of.push_back(i);
   }
-  const int coupling_mode = std::getenv("CMODE") ? std::atoi(std::getenv("CMODE")) : 0;
   for (int j = 0; j < nj; ++j) {
     const auto& rs = rays[j];
     struct Candidate { int bi, bj; double theta; bool same; };
@@ -270,12 +247,16 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
         cands.push_back({bi, bj, theta, same});
       }
     }
-    if (coupling_mode == 2) cands.clear();
-    if (coupling_mode == 1 && !cands.empty()) {
-      auto best = std::max_element(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.theta < b.theta; });
-      Candidate c = *best;
+    if (options.coupling == Coupling::kSmoothestPair && !cands.empty()) {
+      // Three boundaries at a junction pairwise share a region, so their three
+      // couplings can never all be satisfied, and with measured (noisy)
+      // angles the non-smooth pairs weigh as much as the metric itself. The
+      // pair Fig. 10 is about — the one continuing smoothly — is kept alone.
+      const Candidate best = *std::max_element(
+          cands.begin(), cands.end(),
+          [](const Candidate& a, const Candidate& b) { return a.theta < b.theta; });
       cands.clear();
-      if (c.theta >= 0.75 * std::numbers::pi) cands.push_back(c);
+      if (best.theta >= options.smooth_angle) cands.push_back(best);
     }
     for (const Candidate& c : cands) {
       const double weight = coupling_weight(c.theta, options.coupling_cap);
@@ -284,12 +265,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     }
   }
   const StateSolution solution = solve_states(problem);
-  if (std::getenv("LAYDBG")) {
-    for (const auto& c : problem.couplings) {
-      const int bi = boundary_of[c.i], bj = boundary_of[c.j];
-      std::fprintf(stderr, "C B%d(%d|%d x%d u%.2f) B%d(%d|%d x%d u%.2f) w %.2f same %d\n", bi, bs[bi].left, bs[bi].right, solution.x[c.i], problem.unary[c.i], bj, bs[bj].left, bs[bj].right, solution.x[c.j], problem.unary[c.j], c.weight, c.same);
-    }
-  }
+
   out.states = static_cast<int>(problem.unary.size());
   out.dropped_couplings = solution.dropped_couplings;
   // How much each state is held by the energy: half the cost of flipping it.

@@ -16,10 +16,19 @@
 
 namespace hair25d::layering {
 
+// Which boundaries meeting at a junction are coupled in Eq. (2).
+enum class Coupling {
+  kSmoothestPair,  // only the pair continuing most smoothly, if θ >= smooth_angle
+  kAllPairs,       // every pair sharing a region, as the paper writes Eq. (2)
+  kNone,           // no pairwise term: each boundary follows its own Φ
+};
+
 struct Options {
   double junction_weight = 0.25;  // w in Eq. (1)
   // Cap of φ_ij = tan(|(θ mod π) − π/2|) in Eq. (2); θ near 0 or π would be infinite.
   double coupling_cap = 4.0;
+  Coupling coupling = Coupling::kSmoothestPair;
+  double smooth_angle = 2.356194490192345;  // 3π/4: a smooth continuation, radians
   // Width of the drawn lines in pixels; <= 0 estimates it from the outlines
   // of the label map, or from the image when the map has none.
   double line_width = 0.0;
@@ -30,7 +39,7 @@ struct Options {
   double line_threshold_fraction = 0.4;  // of the typical boundary contrast, when automatic
   // Junction angles are measured on a line fitted to the boundary within this
   // arc length of the junction, in line widths (never under 3 pixels).
-  double fit_reach_widths = 2.0;
+  double fit_reach_widths = 4.0;
   // A pair of regions is "equal" when less than this share of their common
   // boundary length is occluding.
   double equal_fraction = 0.5;
