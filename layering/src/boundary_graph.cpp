@@ -120,7 +120,15 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   const std::size_t corners = static_cast<std::size_t>(w + 1) * (h + 1);
   std::vector<int> junction_at(corners, -1);
   for (int y = 0; y <= h; ++y) {
+    // Inside the image a corner whose four pixels agree (almost all) is
+    // skipped by comparing two rows directly.
+    const int* above = y > 0 ? labels.data() + static_cast<std::size_t>(y - 1) * w : nullptr;
+    const int* below = y < h ? labels.data() + static_cast<std::size_t>(y) * w : nullptr;
     for (int x = 0; x <= w; ++x) {
+      if (above && below && x > 0 && x < w) {
+        const int a = above[x - 1];
+        if (a == above[x] && a == below[x - 1] && a == below[x]) continue;
+      }
       if (is_junction(grid.around(x, y))) {
         junction_at[static_cast<std::size_t>(y) * (w + 1) + x] =
             static_cast<int>(graph.junctions.size());

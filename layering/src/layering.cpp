@@ -37,6 +37,20 @@ std::pair<int, int> key(int a, int b) { return {std::min(a, b), std::max(a, b)};
 
 Relation relation_of_sign(double s) { return s >= 0 ? Relation::kAbove : Relation::kBelow; }
 
+// The distinct non-zero labels, sorted, in one pass (LabelMap::labels sorts
+// every pixel). Runs of one label are skipped cheaply.
+std::vector<int> distinct_labels(const LabelMap& map) {
+  std::set<int> seen;
+  int last = 0;
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    const int v = map.data()[i];
+    if (v == last) continue;
+    last = v;
+    if (v != 0) seen.insert(v);
+  }
+  return {seen.begin(), seen.end()};
+}
+
 }  // namespace
 
 bool Options::is_valid(std::string* error) const {
@@ -78,7 +92,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                 std::to_string(regions.height()) + " but the image is " +
                 std::to_string(image.width()) + "x" + std::to_string(image.height()) +
                 "; they must have the same size");
-  const std::vector<int> ids = regions.labels();
+  const std::vector<int> ids = distinct_labels(regions);
   if (ids.size() < 2)
     throw Error("layering: the region map has " + std::to_string(ids.size()) +
                 " hair region(s); layering needs at least two");

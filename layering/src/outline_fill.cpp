@@ -17,6 +17,7 @@ namespace {
 constexpr int kOrtho = 5;
 constexpr int kDiag = 7;
 constexpr int kUnit = 5;
+constexpr double kMaxReach = 10.0;  // pixels grown at most: outlines up to ~20 px wide
 
 struct Growth {
   std::vector<int> dist;   // chamfer distance (fifths of a pixel) to the nearest region
@@ -25,17 +26,27 @@ struct Growth {
 
 // Dial's algorithm: a multi-source shortest path on the 8-neighbour grid with a
 // ring of buckets, linear in the pixel count.
-Growth grow(const LabelMap& labels) {
+Growth grow(const LabelMap& labels, int limit) {
   const int w = labels.width();
   const int h = labels.height();
   const std::size_t n = labels.size();
   Growth g{std::vector<int>(n, std::numeric_limits<int>::max()), std::vector<int>(n, 0)};
   std::array<std::vector<int>, kDiag + 1> ring;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (labels.data()[i] != 0) {
+  const int* lab = labels.data();
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const int i = y * w + x;
+      if (lab[i] == 0) continue;
       g.dist[i] = 0;
-      g.owner[i] = labels.data()[i];
-      ring[0].push_back(static_cast<int>(i));
+      g.owner[i] = lab[i];
+      // Only region pixels on the edge of label 0 start a front.
+      const bool edge = (x > 0 && lab[i - 1] == 0) || (x + 1 < w && lab[i + 1] == 0) ||
+                        (y > 0 && lab[i - w] == 0) || (y + 1 < h && lab[i + w] == 0) ||
+                        (x > 0 && y > 0 && lab[i - w - 1] == 0) ||
+                        (x + 1 < w && y > 0 && lab[i - w + 1] == 0) ||
+                        (x > 0 && y + 1 < h && lab[i + w - 1] == 0) ||
+                        (x + 1 < w && y + 1 < h && lab[i + w + 1] == 0);
+      if (edge) ring[0].push_back(i);
     }
   }
   static constexpr std::array<int, 8> kNx = {1, -1, 0, 0, 1, 1, -1, -1};
@@ -57,7 +68,7 @@ Growth grow(const LabelMap& labels) {
         if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
         const int j = ny * w + nx;
         const int nd = d + (m < 4 ? kOrtho : kDiag);
-        if (nd < g.dist[j]) {
+        if (nd <= limit && nd < g.dist[j]) {
           g.dist[j] = nd;
           g.owner[j] = g.owner[i];
           ring[nd % ring.size()].push_back(j);
@@ -86,7 +97,11 @@ OutlineFill fill_outlines(const LabelMap& labels, const OutlineFillOptions& opti
   if (!options.is_valid(&why)) throw Error("layering: " + why);
   if (labels.empty()) throw Error("layering: label map is empty; need at least one pixel");
   const int w = labels.width();
-  const Growth g = grow(labels);
+  // Lines wider than this are not outlines but background gaps; growing no
+  // farther keeps the cost to a band around the regions.
+  const int limit = static_cast<int>(std::ceil(
+      (options.max_distance > 0 ? options.max_distance : kMaxReach) * kUnit));
+  const Growth g = grow(labels, limit);
 
   // Where fronts of two regions meet inside label-0 pixels, each side has come
   // about half a line width: the typical meeting distance measures the lines.
@@ -111,10 +126,11 @@ OutlineFill fill_outlines(const LabelMap& labels, const OutlineFillOptions& opti
   }
   out.radius = options.max_distance > 0 ? options.max_distance
                                         : (out.line_width > 0 ? out.line_width + 1.5 : 0.0);
+  out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
   out.labels = labels;
-  const int limit = static_cast<int>(std::floor(out.radius * kUnit));
+  const int radius = static_cast<int>(std::floor(out.radius * kUnit));
   for (std::size_t i = 0; i < labels.size(); ++i)
-    if (labels.data()[i] == 0 && g.owner[i] != 0 && g.dist[i] <= limit)
+    if (labels.data()[i] == 0 && g.owner[i] != 0 && g.dist[i] <= radius)
       out.labels.data()[i] = g.owner[i];
   return out;
 }
