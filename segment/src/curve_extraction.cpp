@@ -31,6 +31,10 @@ bool CurveOptions::is_valid(std::string* error) const {
   if (!(high_threshold >= low_threshold && std::isfinite(high_threshold)))
     return fail("high_threshold = " + std::to_string(high_threshold) +
                 "; must be finite and >= low_threshold (" + std::to_string(low_threshold) + ")");
+  if (speck_size < 0 || speck_size > 32)
+    return fail("speck_size = " + std::to_string(speck_size) + "; must be in [0, 32]");
+  if (!(blob_weight >= 0.0 && blob_weight <= 2.0))
+    return fail("blob_weight = " + std::to_string(blob_weight) + "; must be in [0, 2]");
   if (!(min_curve_length >= 0.0 && std::isfinite(min_curve_length)))
     return fail("min_curve_length = " + std::to_string(min_curve_length) + "; must be >= 0");
   if (!(spur_factor >= 0.0 && std::isfinite(spur_factor)))
@@ -48,9 +52,11 @@ CurveResult extract_curves(const Image& image, const CurveOptions& options) {
   // The Hessian needs a few pixels of context; smaller images have no lines.
   if (image.width() < 4 || image.height() < 4) return result;
   try {
-    const cv::Mat grey = detail::grey_image(image);
+    cv::Mat grey = detail::grey_image(image);
+    detail::remove_dots(grey, options.speck_size, static_cast<float>(3.0 * options.high_threshold));
     const float low = static_cast<float>(options.low_threshold);
-    const detail::LineField field = detail::compute_line_field(grey, options.scales, low);
+    const detail::LineField field = detail::compute_line_field(
+        grey, options.scales, low, static_cast<float>(options.blob_weight));
     const cv::Mat ridge = detail::suppress_non_maxima(field, low);
     result.ridge_pixels = cv::countNonZero(ridge);
     if (result.ridge_pixels == 0) return result;

@@ -20,6 +20,31 @@ cv::Mat grey_image(const Image& image) {
   return grey;
 }
 
+void remove_dots(cv::Mat& grey, int max_size, float contrast) {
+  if (max_size <= 0 || grey.rows < 3 || grey.cols < 3) return;
+  // Dark specks are pixels clearly darker than the light pixels around them
+  // (black-hat) that form small isolated blobs; lines are long connected runs.
+  const int k = 2 * max_size + 1;
+  const cv::Mat disk = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(k, k));
+  cv::Mat closed;
+  cv::morphologyEx(grey, closed, cv::MORPH_CLOSE, disk, cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
+  cv::Mat dark = (closed - grey) > contrast;
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(dark, labels, stats, centroids, 4, CV_32S);
+  std::vector<char> speck(n, 0);
+  for (int i = 1; i < n; ++i) {
+    const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
+    speck[i] = w <= max_size && h <= max_size;
+  }
+  for (int y = 0; y < grey.rows; ++y) {
+    const int* lab = labels.ptr<int>(y);
+    float* g = grey.ptr<float>(y);
+    const float* c = closed.ptr<float>(y);
+    for (int x = 0; x < grey.cols; ++x)
+      if (lab[x] > 0 && speck[lab[x]]) g[x] = c[x];
+  }
+}
+
 namespace {
 
 float bilinear(const cv::Mat& m, float x, float y) {
@@ -38,7 +63,7 @@ float bilinear(const cv::Mat& m, float x, float y) {
 }  // namespace
 
 LineField compute_line_field(const cv::Mat& grey, const std::vector<double>& scales,
-                             float low_threshold) {
+                             float low_threshold, float blob_weight) {
   const int w = grey.cols, h = grey.rows;
   LineField f;
   f.response = cv::Mat::zeros(h, w, CV_32F);
@@ -75,8 +100,11 @@ LineField compute_line_field(const cv::Mat& grey, const std::vector<double>& sca
         const float a = pxx[x], c = pyy[x], bxy = pxy[x];
         const float half = 0.5f * (a - c);
         const float root = std::sqrt(half * half + bxy * bxy);
-        const float lambda = 0.5f * (a + c) + root;  // largest: across a dark valley
-        const float r = s2 * lambda;
+        const float lambda = 0.5f * (a + c) + root;   // largest: across a dark valley
+        const float lambda2 = 0.5f * (a + c) - root;  // along the line: ~0 on a line
+        // A dark dot (screentone) curves the same way in every direction: the
+        // second eigenvalue takes it out; on a line it is near zero.
+        const float r = s2 * (lambda - blob_weight * std::max(lambda2, 0.0f));
         if (r <= resp[x]) continue;
         // Eigenvector of the largest eigenvalue.
         float ex, ey;

@@ -19,11 +19,17 @@ struct LineField {
 // Grey levels 0-255 (luminance), transparent pixels composited over white.
 cv::Mat grey_image(const Image& image);
 
+// Replaces isolated dark specks no larger than max_size × max_size pixels and
+// at least `contrast` grey levels darker than their surroundings (screentone
+// dots, dirt) by the surrounding tone, in place.
+void remove_dots(cv::Mat& grey, int max_size, float contrast);
+
 // Strength of dark lines at the best of `scales`: the scale-normalised largest
 // Hessian eigenvalue, capped by how much darker the centre is than both sides
-// so that the edge between two flat tones (cel shading) gives no line.
+// so that the edge between two flat tones (cel shading) gives no line, and
+// less blob_weight × the second eigenvalue so that dots (screentone) give none.
 LineField compute_line_field(const cv::Mat& grey, const std::vector<double>& scales,
-                             float low_threshold);
+                             float low_threshold, float blob_weight);
 
 // CV_8U 1 where the response is above `low_threshold` and not smaller than
 // its two neighbours across the line.

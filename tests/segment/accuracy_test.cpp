@@ -11,6 +11,7 @@
 #include "hair25d/core/image_io.h"
 #include "hair25d/segment/mesh.h"
 #include "hair25d/segment/overlay.h"
+#include "hair25d/segment/regions.h"
 #include "hair25d/segment/segmenter.h"
 #include "segment_eval.h"
 #ifdef HAIR25D_HAVE_GENERATOR
@@ -30,6 +31,11 @@ void maybe_write_overlay(const std::string& name, const Image& image, const Segm
   fs::create_directories(dir);
   save_image(fs::path(dir) / (name + "_overlay.png"), draw_overlay(image, r.segmentation, regions));
   save_image(fs::path(dir) / (name + "_truth.png"), draw_overlay(image, Segmentation{}, truth));
+  const auto faces = automatic_regions(r.segmentation.mesh);
+  save_image(fs::path(dir) / (name + "_faces.png"),
+             draw_overlay(image, Segmentation{},
+                          rasterize_triangle_values(r.segmentation.mesh, faces, image.width(),
+                                                    image.height())));
 }
 
 double case_mean_iou(const std::string& name, const AnnotatedCase& c, double line_width) {
@@ -71,6 +77,53 @@ TEST(SegmentAccuracy, AnnotatedCasesReachMeanIoU095) {
   std::printf("[ segment ] annotated cases: mean IoU %.4f\n", mean);
   EXPECT_GE(mean, 0.95);
 }
+
+#ifdef HAIR25D_HAVE_GENERATOR
+// Generated drawings over the styles the issue names: anti-aliased lines 2-6
+// px wide, coloured lines, cel shading, gradients, screentone, noise, JPEG.
+TEST(SegmentAccuracy, GeneratedCasesReachMeanIoU095) {
+  struct Variant {
+    const char* name;
+    generator::Options o;
+  };
+  std::vector<Variant> variants;
+  auto add = [&](const char* name, auto tweak) {
+    generator::Options o;
+    o.width = 720;
+    o.height = 560;
+    o.strand_count = 14;
+    o.strand_masks = false;
+    o.seed = 11 + variants.size();
+    tweak(o);
+    variants.push_back({name, o});
+  };
+  add("flat_w3", [](auto&) {});
+  add("flat_w2", [](auto& o) { o.line_width = 2.0; });
+  add("flat_w6", [](auto& o) { o.line_width = 6.0; });
+  add("two_tone", [](auto& o) { o.shading = generator::Shading::kTwoTone; });
+  add("gradient", [](auto& o) { o.shading = generator::Shading::kGradient; });
+  add("screentone", [](auto& o) { o.shading = generator::Shading::kScreentone; });
+  add("coloured_lines", [](auto& o) { o.coloured_lines = true; });
+  add("noise", [](auto& o) { o.noise_sigma = 6.0; });
+  add("jpeg", [](auto& o) { o.jpeg_quality = 60; });
+  add("tall", [](auto& o) {
+    o.width = 480;
+    o.height = 760;
+    o.line_width = 4.0;
+  });
+  double sum = 0.0;
+  for (const Variant& v : variants) {
+    const AnnotatedCase c = generator::generate_case(v.o);
+    ASSERT_TRUE(c.strokes.has_value());
+    const double m = case_mean_iou(std::string("generated_") + v.name, c, v.o.line_width);
+    EXPECT_GE(m, 0.85) << v.name;
+    sum += m;
+  }
+  const double mean = sum / static_cast<double>(variants.size());
+  std::printf("[ segment ] generated cases: mean IoU %.4f\n", mean);
+  EXPECT_GE(mean, 0.95);
+}
+#endif
 
 }  // namespace
 }  // namespace hair25d::segment

@@ -19,6 +19,12 @@ struct CurveOptions {
   // response above high_threshold and goes on while it stays above low_threshold.
   double high_threshold = 18.0;
   double low_threshold = 7.0;
+  // Isolated dark specks that fit in speck_size × speck_size pixels
+  // (screentone dots, dirt) are painted over before lines are looked for; 0 keeps them.
+  int speck_size = 6;
+  // Dots (screentone) answer in both Hessian directions, lines in one: the
+  // response is λ1 − blob_weight · max(λ2, 0).
+  double blob_weight = 1.0;
   // Curves shorter than this (pixels) that touch nothing are dropped.
   double min_curve_length = 8.0;
   // Side branches shorter than spur_factor × line width that end freely are
