@@ -40,6 +40,25 @@ int side_index(SideName s) {
 
 std::size_t round_up(std::size_t n, std::size_t m) { return (n + m - 1) / m * m; }
 
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Where along the link a -> b (a outside, b inside) the polygon's boundary is, as a fraction
+// in [0, 1]; 1/2 when no edge is found (degenerate input).
+double wall_fraction(const Polyline& poly, const Vec2& a, const Vec2& b) {
+  double best = 2.0;
+  const Vec2 e = b - a;
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    const Vec2& p = poly[k];
+    const Vec2 d = poly[(k + 1) % poly.size()] - p;
+    const double den = cross(e, d);
+    if (den == 0.0) continue;
+    const double t = cross(p - a, d) / den;  // along the link
+    const double s = cross(p - a, e) / den;  // along the edge
+    if (t >= 0.0 && t <= 1.0 && s >= 0.0 && s <= 1.0) best = std::min(best, t);
+  }
+  return best <= 1.0 ? best : 0.5;
+}
+
 template <typename T>
 class Lattice final : public LatticeBase {
  public:
@@ -67,6 +86,7 @@ class Lattice final : public LatticeBase {
     std::int32_t cell;         // y * width + x
     std::uint16_t solid_mask;  // bit i: the neighbour the population i comes from is solid
     std::int32_t link_begin, link_end;
+    std::int32_t wall_q = -1;  // index into wall_q_ for interpolated walls, -1: half-way
   };
   struct Link {
     std::uint8_t dir;
@@ -98,6 +118,9 @@ class Lattice final : public LatticeBase {
   int max_label_ = 0;
   std::vector<std::int32_t> solid_idx_;
   std::vector<Special> static_special_, special_;
+  // Per static boundary cell with a polygon neighbour: for each direction i, the fraction q of
+  // the link from the node towards x - c_i at which the polygon's boundary lies.
+  std::vector<std::array<float, 9>> wall_q_;
   std::vector<Link> links_;
   int segment_count_ = 0;
   std::vector<std::vector<Vec2>> segment_acc_, obstacle_acc_;  // per thread
@@ -157,6 +180,7 @@ Lattice<T>::Lattice(const Options& o, const Eigen::MatrixXi& labels)
       max_label_ = std::max(max_label_, l);
       if (l > 0) solid_idx_.push_back(static_cast<std::int32_t>(idx(x, y)));
     }
+  const int first_polygon_label = max_label_ + 1 - static_cast<int>(o.obstacle_polygons.size());
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
       if (labels_[y * width_ + x] != 0) continue;
@@ -166,9 +190,33 @@ Lattice<T>::Lattice(const Options& o, const Eigen::MatrixXi& labels)
         if (nx >= 0 && nx < width_ && ny >= 0 && ny < height_ && labels_[ny * width_ + nx] > 0)
           mask |= static_cast<std::uint16_t>(1u << i);
       }
-      if (mask)
-        static_special_.push_back(
-            {static_cast<std::int32_t>(idx(x, y)), y * width_ + x, mask, 0, 0});
+      if (!mask) continue;
+      Special sp{static_cast<std::int32_t>(idx(x, y)), y * width_ + x, mask, 0, 0, -1};
+      if (o.interpolated_walls && !o.obstacle_polygons.empty()) {
+        std::array<float, 9> q;
+        q.fill(0.5f);
+        bool any = false;
+        for (int i = 1; i < 9; ++i) {
+          if (!(mask & (1u << i))) continue;
+          const int label = labels_[(y - kCy[i]) * width_ + (x - kCx[i])];
+          const int poly = label - first_polygon_label;
+          if (poly < 0) continue;
+          double t = wall_fraction(o.obstacle_polygons[poly], Vec2(x + 0.5, y + 0.5),
+                                   Vec2(x + 0.5 - kCx[i], y + 0.5 - kCy[i]));
+          // Below 1/2 the scheme also reads the next node away from the wall: it must be fluid.
+          const int fx = x + kCx[i], fy = y + kCy[i];
+          const bool next_fluid =
+              fx >= 0 && fx < width_ && fy >= 0 && fy < height_ && labels_[fy * width_ + fx] == 0;
+          if (t < 0.5 && !next_fluid) t = 0.5;
+          q[i] = static_cast<float>(t);
+          any = any || t != 0.5;
+        }
+        if (any) {
+          sp.wall_q = static_cast<std::int32_t>(wall_q_.size());
+          wall_q_.push_back(q);
+        }
+      }
+      static_special_.push_back(sp);
     }
   special_ = static_special_;
   segment_acc_.assign(threads_, {});
@@ -205,8 +253,11 @@ void Lattice<T>::set_cut_links(const std::vector<CutLink>& links, int segment_co
     const std::int32_t cs = s < static_special_.size() ? static_special_[s].cell : INT32_MAX;
     const std::int32_t cl = l < links.size() ? links[l].cell : INT32_MAX;
     const std::int32_t cell = std::min(cs, cl);
-    Special sp{0, cell, 0, static_cast<std::int32_t>(links_.size()), 0};
-    if (cs == cell) sp.solid_mask = static_special_[s++].solid_mask;
+    Special sp{0, cell, 0, static_cast<std::int32_t>(links_.size()), 0, -1};
+    if (cs == cell) {
+      sp.solid_mask = static_special_[s].solid_mask;
+      sp.wall_q = static_special_[s++].wall_q;
+    }
     while (l < links.size() && links[l].cell == cell) {
       const CutLink& c = links[l++];
       links_.push_back({c.dir, T(c.ux), T(c.uy), c.owner});
@@ -295,10 +346,20 @@ void Lattice<T>::boundary(std::size_t begin, std::size_t end, int tid) {
         seg[link.owner] += Vec2((-cx - ux) * fo - (cx - ux) * fi, (-cy - uy) * fo - (cy - uy) * fi);
       } else if (sp.solid_mask & (1u << i)) {
         const T out = src_[o][id];
-        f[i] = out;
+        const float q = sp.wall_q >= 0 ? wall_q_[sp.wall_q][i] : 0.5f;
+        if (q == 0.5f) {
+          f[i] = out;
+        } else if (q < 0.5f) {
+          // Bouzidi: the wall is nearer than half-way; blend with the next node from the wall.
+          const T tq = T(2 * q);
+          f[i] = tq * out + (T(1) - tq) * src_[o][id + off_[i]];
+        } else {
+          const T inv = T(1 / (2 * q));
+          f[i] = inv * out + (T(1) - inv) * src_[i][id];
+        }
         const int x = sp.cell % width_ - kCx[i], y = sp.cell / width_ - kCy[i];
         const int label = labels_[y * width_ + x];
-        const double m = 2.0 * (static_cast<double>(out) + w);
+        const double m = static_cast<double>(out) + static_cast<double>(f[i]) + 2.0 * w;
         obs[label - 1] += Vec2(-cx * m, -cy * m);
       } else {
         f[i] = src_[i][id - off_[i]];
@@ -316,7 +377,7 @@ template <typename T>
 T Lattice<T>::halo_value(int hx, int hy, int i, int x, int y) const {
   const bool cross[4] = {hx < 0, hx >= width_, hy < 0, hy >= height_};
   const std::ptrdiff_t id = idx(x, y);
-  // Walls win over inlets at corners, inlets over outflow and periodic sides.
+  // Walls win over inlets at corners, inlets over outlets, outlets over periodic sides.
   for (SideKind kind : {SideKind::kWall, SideKind::kInlet}) {
     for (int s = 0; s < 4; ++s) {
       if (!cross[s] || kind_[s] != kind) continue;
@@ -329,12 +390,23 @@ T Lattice<T>::halo_value(int hx, int hy, int i, int x, int y) const {
       return out + T(6.0 * kW[i]) * rho * (T(kCx[i]) * ux + T(kCy[i]) * uy);
     }
   }
+  for (int s = 0; s < 4; ++s) {
+    if (!cross[s] || kind_[s] != SideKind::kOutflow) continue;
+    // Pressure outlet by anti-bounce-back at density 1 with the velocity of the cell: it pins
+    // the density, so the mass pushed in by the inlet cannot pile up (a zero-gradient copy
+    // of the populations lets it grow without bound).
+    T rho, ux, uy;
+    moments(id, rho, ux, uy);
+    const T cu = T(kCx[i]) * ux + T(kCy[i]) * uy;
+    const T w = T(kW[i]);
+    return -src_[kOpp[i]][id] +
+           T(2) * w * ((T(1) + T(4.5) * cu * cu - T(1.5) * (ux * ux + uy * uy)) - T(1));
+  }
   int qx = hx, qy = hy;
-  if (cross[kSideLeft]) qx = kind_[kSideLeft] == SideKind::kPeriodic ? hx + width_ : 0;
-  if (cross[kSideRight]) qx = kind_[kSideRight] == SideKind::kPeriodic ? hx - width_ : width_ - 1;
-  if (cross[kSideTop]) qy = kind_[kSideTop] == SideKind::kPeriodic ? hy + height_ : 0;
-  if (cross[kSideBottom])
-    qy = kind_[kSideBottom] == SideKind::kPeriodic ? hy - height_ : height_ - 1;
+  if (cross[kSideLeft]) qx = hx + width_;
+  if (cross[kSideRight]) qx = hx - width_;
+  if (cross[kSideTop]) qy = hy + height_;
+  if (cross[kSideBottom]) qy = hy - height_;
   return src_[i][idx(qx, qy)];
 }
 

@@ -275,5 +275,45 @@ TEST(FluidValidation, TransposedGridGivesTransposedFlow) {
   EXPECT_NEAR(pa.y(), pb.x(), 1e-12);
 }
 
+// Schafer & Turek (1996) benchmark 2D-1: channel 2.2 x 0.41, cylinder of diameter 0.1 at
+// (0.2, 0.2), parabolic inflow with mean speed 0.2, Re = 20; published Cd = 5.5795 (range
+// 5.57-5.59), Cl = 0.0106. Here with 10 cells per diameter and a staircase cylinder.
+TEST(FluidValidation, CylinderDragMatchesSchaferTurek) {
+  const int D = 10;
+  const int W = 22 * D, H = 41 * D / 10;
+  const double umax = 0.1;  // lattice; mean 2/3 of it
+  const double umean = 2.0 / 3.0 * umax;
+  Options o;
+  o.width = W;
+  o.height = H;
+  o.tau = tau_of_viscosity(umean * D / 20.0);
+  o.left.kind = SideKind::kInlet;
+  o.left.velocity = Vec2(umax, 0);
+  for (int j = 0; j < H; ++j) {
+    const double y = j + 0.5;
+    o.left.profile.push_back(4.0 * y * (H - y) / (H * H));
+  }
+  o.right.kind = SideKind::kOutflow;
+  o.top.kind = o.bottom.kind = SideKind::kWall;
+  Polyline circle;
+  for (int k = 0; k < 64; ++k) {
+    const double a = 2 * std::numbers::pi * k / 64;
+    circle.push_back(Vec2(2.0 * D, 2.0 * D) + 0.5 * D * Vec2(std::cos(a), std::sin(a)));
+  }
+  o.obstacle_polygons.push_back(circle);
+  o.threads = 2;
+  const SteadyFlow flow = solve_steady(o, {60000, 500, 1e-6});
+  EXPECT_EQ(flow.result.stop, SteadyResult::Stop::kConverged) << flow.result.why();
+  const Vec2 f = flow.obstacle_forces.at(0).force;
+  const double cd = 2 * f.x() / (umean * umean * D);
+  const double cl = 2 * f.y() / (umean * umean * D);
+  std::printf(
+      "[ info ] Schafer-Turek 2D-1, D = %d cells: Cd = %.4f (published 5.5795), Cl = %.4f "
+      "after %d steps\n",
+      D, cd, cl, flow.result.steps);
+  EXPECT_NEAR(cd / 5.5795, 1.0, 0.05);
+  EXPECT_LT(std::abs(cl), 0.1);
+}
+
 }  // namespace
 }  // namespace hair25d::fluid

@@ -28,7 +28,7 @@ enum class SideKind {
               // periodic)
   kWall,      // no-slip wall half a cell outside the grid; `velocity` makes it a moving wall (lid)
   kInlet,     // velocity inlet: `velocity` (times `profile`), imposed by moving-wall bounce-back
-  kOutflow,   // zero-gradient outflow: the missing populations are copied from the last cell
+  kOutflow,   // open outlet at density 1 (pressure outlet, anti-bounce-back): flow leaves freely
 };
 
 enum class SideName { kLeft, kRight, kTop, kBottom };
@@ -65,6 +65,11 @@ struct Options {
   // solid when its node lies inside. Forces are reported per label.
   Eigen::MatrixXi obstacle_labels;
   std::vector<Polyline> obstacle_polygons;
+  // Polygon obstacles: bounce back at the polygon's true boundary along each link
+  // (interpolated bounce-back, Bouzidi et al. 2001), second-order accurate for curved walls.
+  // false: half-way bounce-back on the staircase of solid cells, which conserves mass exactly.
+  // Obstacles given as a mask always use the staircase.
+  bool interpolated_walls = true;
 
   // Empty string or nullptr-safe: names the option, its value and the rule broken, e.g.
   // "fluid::Options::tau = 0.48; must be > 0.5".
