@@ -1,0 +1,110 @@
+// Cartoon hair completion (paper §5): from hair regions and their depth
+// relations to whole strands — pieces split by an occluder joined (case 1),
+// occluded roots and tips grown under their occluders (cases 2 and 3) — with
+// the hidden colours inpainted and the background behind the hair filled.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hair25d/completion/active_contour.h"
+#include "hair25d/completion/inpaint.h"
+#include "hair25d/core/geometry.h"
+#include "hair25d/core/hair_model.h"
+#include "hair25d/core/image.h"
+#include "hair25d/core/progress.h"
+
+namespace hair25d::completion {
+
+struct Options {
+  // Outline pixels (label 0, dark) are given to the nearest region within this
+  // many pixels first (FORMATS.md).
+  int outline_reach = 4;
+  int dark_luma = 140;  // a pixel darker than this (0..255) can be an outline pixel
+  // A region's boundary pixel is occluded when an occluder pixel lies within
+  // this many pixels; occluding runs closer than `merge_gap` are merged.
+  int occluder_reach = 2;
+  double merge_gap = 8.0;        // pixels along the boundary
+  double min_edge_length = 4.0;  // pixels; shorter occluding runs are ignored
+  double tangent_arm = 10.0;     // pixels of visible outline used for a tangent
+
+  // Case 1 matching (§5.1).
+  double max_join_angle_deg = 70.0;   // tangent vs the join chord, at each end
+  double max_colour_distance = 90.0;  // RGB distance of the pieces' colours
+  double min_join_coverage = 0.85;    // share of the join patch under occluders
+  double min_width_ratio = 0.2;       // narrower / wider occluding edge
+  double max_join_cost = 2.1;
+
+  // Cases 2 and 3 (§5.2–5.4).
+  ContourOptions contour;
+  double fit_length = 16.0;          // pixels of visible outline the Hamiltonian is fitted to
+  double fit_regularization = 0.02;  // pull of the fit towards a straight flow (A = 0)
+  bool sharp_tips = true;            // case 3 makes a sharp tip (§5.3)
+
+  // Colour (§5.4).
+  bool inpaint_strands = true;
+  bool inpaint_background = true;
+  InpaintOptions inpaint;
+  int background_max_side = 320;  // the background is filled at most this size, then upscaled
+
+  // False, with a message naming the option, its value and the rule, if unusable.
+  bool is_valid(std::string* error) const;
+};
+
+struct Input {
+  const Image* image = nullptr;           // the drawing
+  const LabelMap* regions = nullptr;      // hair region ids, 0 = background and outlines
+  std::vector<RegionRelation> relations;  // between neighbouring regions
+  // Where the head is (strokes.json head_center); without it, the centroid of
+  // all hair pixels (hair frames the face, so this falls on the head).
+  std::optional<Vec2> head_center;
+};
+
+enum class EdgeCase { kJoined, kRoot, kTip, kNotCompleted };
+const char* to_string(EdgeCase c);
+
+// One occluding edge of a region and what completion did with it.
+struct EdgeReport {
+  int region = 0;
+  Vec2 p{0, 0}, q{0, 0};  // outermost endpoints
+  EdgeCase completion = EdgeCase::kNotCompleted;
+  int joined_region = 0;                       // case 1: the region it was joined to
+  ContourStop stop = ContourStop::kConverged;  // cases 2, 3
+  int hidden_pixels = 0;                       // pixels this edge added under the occluders
+};
+
+struct CompletedStrand {
+  std::vector<int> regions;  // source region ids, sorted
+  // Crop of the image: 0 outside, 1 visible (the strand's own pixels), 2 completed.
+  LabelMap mask;
+  Eigen::Vector2i origin{0, 0};   // image pixel of mask(0, 0)
+  Polyline outline;               // the completed shape, one closed polygon, pixels
+  Image texture;                  // RGBA crop at `origin`, transparent outside the mask
+  std::optional<Vec2> root_hint;  // centre of a completed root, if there is one
+  int visible_pixels = 0, completed_pixels = 0;
+};
+
+struct Result {
+  LabelMap regions;  // the input regions with outline pixels assigned
+  std::vector<CompletedStrand> strands;
+  std::vector<EdgeReport> edges;
+  Image background;        // the drawing with the hair removed and filled
+  Vec2 head_center{0, 0};  // used (given or estimated)
+  bool head_center_estimated = false;
+  int joins = 0, roots = 0, tips = 0;
+  InpaintResult strand_inpaint, background_inpaint;
+  std::string summary;
+};
+
+// Completes every strand. Throws hair25d::Error for missing image or regions,
+// sizes that differ, relations naming unknown regions or invalid options.
+Result complete_strands(const Input& input, const Options& options = {},
+                        Progress* progress = nullptr);
+
+// Gives label-0 outline pixels (darker than `dark_luma`) to the nearest region
+// within `reach` pixels (FORMATS.md); other pixels keep their label.
+LabelMap assign_outline_pixels(const Image& image, const LabelMap& regions, int reach,
+                               int dark_luma);
+
+}  // namespace hair25d::completion

@@ -1,0 +1,34 @@
+// Exemplar-based inpainting after Criminisi, Pérez and Toyama (2004), used by
+// paper §5.4 for the colours of completed hair and for the background behind
+// the hair. Fast: SSD over square patches, candidates only in a bounded search
+// window around the patch being filled (widened only when it holds none).
+#pragma once
+
+#include <string>
+
+#include "hair25d/core/image.h"
+
+namespace hair25d::completion {
+
+struct InpaintOptions {
+  int patch_radius = 4;    // patches are (2r+1)², 9×9 by default
+  int search_radius = 24;  // candidates within this many pixels of the target patch
+  int search_step = 1;     // candidate stride inside the window (2 = 4× faster)
+  // False, with a message naming the option, its value and the rule, if unusable.
+  bool is_valid(std::string* error) const;
+};
+
+struct InpaintResult {
+  int filled = 0;    // pixels filled
+  int patches = 0;   // patches copied
+  int unfilled = 0;  // target pixels left (no source patch anywhere)
+};
+
+// Fills the pixels of `image` where `fill` is non-zero by copying patches whose
+// pixels are all sources: `source` non-zero, or, when `source` is empty, every
+// pixel not in `fill`. Pixels outside `fill` are never changed. Throws
+// hair25d::Error if the sizes differ or the options are invalid.
+InpaintResult inpaint_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
+                               const InpaintOptions& options = {});
+
+}  // namespace hair25d::completion

@@ -1,0 +1,223 @@
+#include "hair25d/completion/completion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <opencv2/imgproc.hpp>
+#include <set>
+#include <sstream>
+
+#include "context.h"
+#include "hair25d/core/error.h"
+#include "raster.h"
+#include "strand_assembly.h"
+
+namespace hair25d::completion {
+namespace {
+
+struct UnionFind {
+  std::map<int, int> parent;
+  int find(int x) {
+    auto it = parent.find(x);
+    if (it == parent.end()) return parent[x] = x;
+    if (it->second == x) return x;
+    return it->second = find(it->second);
+  }
+  void unite(int a, int b) { parent[find(a)] = find(b); }
+};
+
+void check_input(const Input& input, const Options& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw Error(why);
+  if (input.image == nullptr || input.image->empty())
+    throw Error("completion::complete_strands: no image; an image is required");
+  if (input.regions == nullptr || input.regions->empty())
+    throw Error("completion::complete_strands: no region map; a region map is required");
+  if (input.image->width() != input.regions->width() ||
+      input.image->height() != input.regions->height()) {
+    throw Error("completion::complete_strands: regions are " +
+                std::to_string(input.regions->width()) + "x" +
+                std::to_string(input.regions->height()) + ", the image " +
+                std::to_string(input.image->width()) + "x" + std::to_string(input.image->height()) +
+                "; they must be the same size");
+  }
+  if (input.head_center &&
+      (!std::isfinite(input.head_center->x()) || !std::isfinite(input.head_center->y())))
+    throw Error("completion::complete_strands: head_center is not finite");
+}
+
+}  // namespace
+
+const char* to_string(EdgeCase c) {
+  switch (c) {
+    case EdgeCase::kJoined:
+      return "joined";
+    case EdgeCase::kRoot:
+      return "root";
+    case EdgeCase::kTip:
+      return "tip";
+    case EdgeCase::kNotCompleted:
+      return "not-completed";
+  }
+  return "unknown";
+}
+
+Result complete_strands(const Input& input, const Options& options, Progress* progress) {
+  check_input(input, options);
+  const Image& image = *input.image;
+  Result result;
+  detail::Context ctx;
+  ctx.image = &image;
+  ctx.original = input.regions;
+  ctx.options = &options;
+  ctx.labels =
+      assign_outline_pixels(image, *input.regions, options.outline_reach, options.dark_luma);
+  report(progress, "completion", 0.05, "regions");
+  detail::describe_regions(ctx);
+
+  UnionFind strands;
+  for (const auto& [id, info] : ctx.regions) strands.find(id);
+  for (const RegionRelation& r : input.relations) {
+    if (!ctx.regions.count(r.a) || !ctx.regions.count(r.b)) {
+      throw Error("completion::complete_strands: relation " + std::to_string(r.a) + " / " +
+                  std::to_string(r.b) + " names a region that is not in the region map");
+    }
+    if (r.relation == Relation::kEqual)
+      strands.unite(r.a, r.b);  // same depth and touching: halves of one strand
+    else if (r.relation == Relation::kBelow)
+      ctx.regions[r.a].occluders.insert(r.b);
+    else
+      ctx.regions[r.b].occluders.insert(r.a);
+  }
+
+  // Head centre: given, else the centroid of the hair (it frames the face).
+  if (input.head_center) {
+    ctx.head = *input.head_center;
+  } else {
+    double sx = 0, sy = 0, n = 0;
+    for (const auto& [id, info] : ctx.regions) {
+      sx += info.centroid.x() * info.pixels;
+      sy += info.centroid.y() * info.pixels;
+      n += info.pixels;
+    }
+    ctx.head = n > 0 ? Vec2(sx / n, sy / n) : Vec2(image.width() / 2.0, image.height() / 2.0);
+    result.head_center_estimated = true;
+  }
+  result.head_center = ctx.head;
+
+  // Single-occluder edges ("atoms"), and merged runs of them as further
+  // candidates for case 1 (a strand may pass under two neighbouring occluders).
+  std::vector<detail::Edge> atoms;
+  std::map<int, std::vector<int>> atoms_of_region;
+  for (const auto& [id, info] : ctx.regions) {
+    std::vector<detail::Edge> found = detail::find_edges(ctx, info, static_cast<int>(atoms.size()));
+    for (detail::Edge& e : found) {
+      atoms_of_region[id].push_back(static_cast<int>(atoms.size()));
+      atoms.push_back(std::move(e));
+    }
+  }
+  std::vector<detail::Edge> candidates = atoms;
+  for (const auto& [id, list] : atoms_of_region) {
+    std::vector<detail::Edge> mine;
+    for (int a : list) mine.push_back(atoms[a]);
+    for (detail::Edge& e : detail::merge_edges(ctx, ctx.regions.at(id), mine))
+      if (e.atoms.size() > 1) candidates.push_back(std::move(e));
+  }
+  report(progress, "completion", 0.2, "matching");
+
+  // Case 1, then 2 and 3 for the edges left (§5.4).
+  detail::StrandPieces pieces;
+  std::vector<EdgeReport> reports;
+  auto new_report = [&](const detail::Edge& e, EdgeCase c) {
+    EdgeReport r;
+    r.region = e.region;
+    r.p = e.p;
+    r.q = e.q;
+    r.completion = c;
+    reports.push_back(r);
+    return static_cast<int>(reports.size()) - 1;
+  };
+  // A strand cannot lie above itself: two regions one of which is above the
+  // other through a chain of relations are never joined.
+  std::map<int, std::set<int>> above;  // region -> regions transitively above it
+  for (const auto& [id, info] : ctx.regions) {
+    std::vector<int> stack(info.occluders.begin(), info.occluders.end());
+    std::set<int>& seen = above[id];
+    while (!stack.empty()) {
+      const int r = stack.back();
+      stack.pop_back();
+      if (!seen.insert(r).second) continue;
+      auto it = ctx.regions.find(r);
+      if (it != ctx.regions.end())
+        stack.insert(stack.end(), it->second.occluders.begin(), it->second.occluders.end());
+    }
+  }
+  const auto try_join = [&](int a, int b) {
+    const int ga = strands.find(a), gb = strands.find(b);
+    if (ga == gb) return false;
+    for (const auto& [x, ix] : ctx.regions) {
+      if (strands.find(x) != ga) continue;
+      for (const auto& [y, iy] : ctx.regions) {
+        if (strands.find(y) != gb) continue;
+        if (above[x].count(y) || above[y].count(x)) return false;
+      }
+    }
+    strands.unite(a, b);
+    return true;
+  };
+  const std::vector<detail::Join> joins = detail::match_edges(ctx, candidates, try_join);
+  std::set<int> joined_atoms;
+  for (const detail::Join& j : joins) {
+    const detail::Edge& a = candidates[j.edge_a];
+    const detail::Edge& b = candidates[j.edge_b];
+    joined_atoms.insert(a.atoms.begin(), a.atoms.end());
+    joined_atoms.insert(b.atoms.begin(), b.atoms.end());
+    const int ra = new_report(a, EdgeCase::kJoined);
+    reports[ra].joined_region = b.region;
+    const int rb = new_report(b, EdgeCase::kJoined);
+    reports[rb].joined_region = a.region;
+    pieces.areas.push_back({a.region, j.patch, false, ra});
+    ++result.joins;
+  }
+  int done = 0;
+  for (const auto& [id, list] : atoms_of_region) {
+    std::vector<detail::Edge> open;
+    for (int a : list)
+      if (!joined_atoms.count(a)) open.push_back(atoms[a]);
+    for (const detail::Edge& e : detail::merge_edges(ctx, ctx.regions.at(id), open)) {
+      const detail::Growth g = detail::grow_edge(ctx, e);
+      const int r = new_report(e, EdgeCase::kNotCompleted);
+      if (g.area.size() < 3) continue;
+      reports[r].completion = g.tip ? EdgeCase::kTip : EdgeCase::kRoot;
+      reports[r].stop = g.stop;
+      pieces.areas.push_back({e.region, g.area, !g.tip, r});
+      (g.tip ? result.tips : result.roots) += 1;
+    }
+    report(progress, "completion", 0.2 + 0.4 * (++done) / atoms_of_region.size(), "growing");
+  }
+
+  std::map<int, std::vector<int>> groups;
+  for (const auto& [id, info] : ctx.regions) groups[strands.find(id)].push_back(id);
+  for (auto& [root, members] : groups) pieces.groups.push_back(members);
+
+  report(progress, "completion", 0.6, "strands");
+  result.strands = detail::assemble_strands(ctx, pieces, &reports, &result.strand_inpaint);
+  report(progress, "completion", 0.85, "background");
+  if (options.inpaint_background) {
+    result.background = detail::fill_background(ctx, &result.background_inpaint);
+  } else {
+    result.background = image;
+  }
+  result.edges = std::move(reports);
+  result.regions = std::move(ctx.labels);
+  std::ostringstream s;
+  s << result.strands.size() << " strands from " << ctx.regions.size()
+    << " regions: " << result.joins << " joins, " << result.roots << " roots, " << result.tips
+    << " tips completed; " << result.strand_inpaint.filled << " strand and "
+    << result.background_inpaint.filled << " background pixels inpainted";
+  result.summary = s.str();
+  report(progress, "completion", 1.0, result.summary);
+  return result;
+}
+
+}  // namespace hair25d::completion

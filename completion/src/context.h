@@ -1,0 +1,86 @@
+// Shared state of one completion run (private): prepared labels, per-region
+// facts, occluding edges.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <map>
+#include <opencv2/core.hpp>
+#include <set>
+#include <vector>
+
+#include "hair25d/completion/completion.h"
+
+namespace hair25d::completion::detail {
+
+struct RegionInfo {
+  int id = 0;
+  cv::Rect box;  // bounding box in the image
+  int pixels = 0;
+  std::set<int> occluders;          // regions above this one
+  std::vector<cv::Point> contour;   // outer boundary of its largest piece, image pixels
+  Eigen::Vector3d colour{0, 0, 0};  // mean colour of its drawn (non-outline) pixels
+  Vec2 centroid{0, 0};
+};
+
+struct Edge {
+  int region = 0;
+  int begin = 0, end = 0;  // contour indices of p and q: begin in [0, n), end >= begin
+  std::vector<int> atoms;  // the single-occluder edges it is made of (ids into the atom list)
+  Polyline points;         // the occluding boundary from p to q
+  Vec2 p{0, 0}, q{0, 0};
+  Vec2 tangent_p{0, 0}, tangent_q{0, 0};  // unit, pointing into the hidden part
+  Polyline piece_p, piece_q;              // visible outline moving towards p / towards q
+  std::set<int> occluders;
+  Eigen::Vector3d colour{0, 0, 0};  // the region's colour next to the edge
+  double width = 0.0;               // |p − q|
+};
+
+struct Context {
+  const Image* image = nullptr;
+  const LabelMap* original = nullptr;  // as given (0 on outlines)
+  LabelMap labels;                     // outlines assigned
+  std::map<int, RegionInfo> regions;
+  Vec2 head{0, 0};
+  const Options* options = nullptr;
+
+  int label(int x, int y) const { return labels.contains(x, y) ? labels.at(x, y) : 0; }
+  int label(const Vec2& p) const {
+    return label(static_cast<int>(std::floor(p.x())), static_cast<int>(std::floor(p.y())));
+  }
+  bool occludes(int occluder, int region) const {
+    auto it = regions.find(region);
+    return it != regions.end() && it->second.occluders.count(occluder) > 0;
+  }
+};
+
+// Region facts and occluding edges (occluding_edges.cpp).
+void describe_regions(Context& ctx);
+// Maximal boundary runs under one occluder each ("atoms"), ids from `first_id`.
+std::vector<Edge> find_edges(const Context& ctx, const RegionInfo& region, int first_id);
+// Neighbouring edges of one region (sorted by `begin`) merged where the
+// visible gap between them is at most merge_gap (§5.2 "ps and sq").
+std::vector<Edge> merge_edges(const Context& ctx, const RegionInfo& region,
+                              const std::vector<Edge>& edges);
+
+// Case 1 (joins.cpp): a matched pair of edges and its hidden patch.
+struct Join {
+  int edge_a = 0, edge_b = 0;
+  double cost = 0.0;
+  Polyline patch;  // closed polygon of the completed area
+};
+// Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
+// records) or refuses joining the strands of regions a and b.
+std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
+                              const std::function<bool(int, int)>& try_join);
+
+// Cases 2 and 3 (grow.cpp): the completed area of an unmatched edge, or an
+// empty polygon when nothing could be grown.
+struct Growth {
+  Polyline area;  // closed polygon: the edge then the grown curve back
+  bool tip = false;
+  ContourStop stop = ContourStop::kConverged;
+};
+Growth grow_edge(const Context& ctx, const Edge& edge);
+
+}  // namespace hair25d::completion::detail

@@ -1,0 +1,267 @@
+#include "hair25d/completion/inpaint.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <string>
+#include <vector>
+
+#include "hair25d/core/error.h"
+
+namespace hair25d::completion {
+
+bool InpaintOptions::is_valid(std::string* error) const {
+  auto fail = [&](const std::string& m) {
+    if (error != nullptr) *error = "completion::InpaintOptions::" + m;
+    return false;
+  };
+  if (patch_radius < 1 || patch_radius > 16)
+    return fail("patch_radius = " + std::to_string(patch_radius) + "; must be in [1, 16]");
+  if (search_radius < 1)
+    return fail("search_radius = " + std::to_string(search_radius) + "; must be >= 1");
+  if (search_step < 1 || search_step > search_radius)
+    return fail("search_step = " + std::to_string(search_step) + "; must be in [1, search_radius]");
+  return true;
+}
+
+namespace {
+
+// The state of one fill: the working crop, what is known, confidences.
+class Filler {
+ public:
+  Filler(Image& image, const LabelMap& fill, const LabelMap& source, const InpaintOptions& o)
+      : image_(image), o_(o), w_(image.width()), h_(image.height()) {
+    const std::size_t n = static_cast<std::size_t>(w_) * h_;
+    known_.assign(n, 1);
+    stamp_.assign(n, 0);
+    confidence_.assign(n, 1.0f);
+    std::vector<int> is_source(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (fill.data()[i] != 0) {
+        known_[i] = 0;
+        confidence_[i] = 0.0f;
+        ++remaining_;
+      }
+      is_source[i] =
+          source.empty() ? fill.data()[i] == 0 : (source.data()[i] != 0 && fill.data()[i] == 0);
+    }
+    // Integral image of source pixels: a candidate patch is usable when all
+    // its pixels are sources (only original pixels are copied, as Criminisi).
+    integral_.assign(static_cast<std::size_t>(w_ + 1) * (h_ + 1), 0);
+    for (int y = 0; y < h_; ++y)
+      for (int x = 0; x < w_; ++x)
+        integral_[idx1(x + 1, y + 1)] = is_source[idx(x, y)] + integral_[idx1(x, y + 1)] +
+                                        integral_[idx1(x + 1, y)] - integral_[idx1(x, y)];
+    const int r = o_.patch_radius;
+    valid_.assign(n, 0);
+    for (int y = r; y < h_ - r; ++y)
+      for (int x = r; x < w_ - r; ++x)
+        valid_[idx(x, y)] =
+            source_sum(x - r, y - r, x + r + 1, y + r + 1) == (2 * r + 1) * (2 * r + 1);
+    grey_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Rgba& c = image_.data()[i];
+      grey_[i] = 0.299f * c.r + 0.587f * c.g + 0.114f * c.b;
+    }
+  }
+
+  InpaintResult run() {
+    InpaintResult result;
+    for (int y = 0; y < h_; ++y)
+      for (int x = 0; x < w_; ++x)
+        if (on_front(x, y)) push(x, y);
+    while (remaining_ > 0) {
+      if (heap_.empty()) {
+        // Isolated unknown pixels with no known neighbour cannot happen unless
+        // the whole image is unknown: give up on those.
+        result.unfilled += remaining_;
+        break;
+      }
+      const Item top = heap_.top();
+      heap_.pop();
+      if (known_[idx(top.x, top.y)] || top.stamp != stamp_[idx(top.x, top.y)]) continue;
+      const int filled = fill_patch(top.x, top.y, &result);
+      result.filled += filled;
+      ++result.patches;
+    }
+    return result;
+  }
+
+ private:
+  struct Item {
+    float priority;
+    int x, y;
+    unsigned stamp;
+    bool operator<(const Item& o) const { return priority < o.priority; }
+  };
+
+  std::size_t idx(int x, int y) const { return static_cast<std::size_t>(y) * w_ + x; }
+  std::size_t idx1(int x, int y) const { return static_cast<std::size_t>(y) * (w_ + 1) + x; }
+  int source_sum(int x0, int y0, int x1, int y1) const {
+    return integral_[idx1(x1, y1)] - integral_[idx1(x0, y1)] - integral_[idx1(x1, y0)] +
+           integral_[idx1(x0, y0)];
+  }
+  bool is_known(int x, int y) const {
+    return x >= 0 && y >= 0 && x < w_ && y < h_ && known_[idx(x, y)];
+  }
+  bool on_front(int x, int y) const {
+    if (known_[idx(x, y)]) return false;
+    return is_known(x - 1, y) || is_known(x + 1, y) || is_known(x, y - 1) || is_known(x, y + 1);
+  }
+
+  // P(p) = C(p) D(p) (Criminisi et al. 2004, §3).
+  void push(int x, int y) {
+    const int r = o_.patch_radius;
+    float c = 0;
+    int count = 0;
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const int px = x + dx, py = y + dy;
+        if (px < 0 || py < 0 || px >= w_ || py >= h_) continue;
+        ++count;
+        if (known_[idx(px, py)]) c += confidence_[idx(px, py)];
+      }
+    c /= std::max(1, count);
+    // Front normal from the known indicator, isophote from known grey levels.
+    auto k = [&](int px, int py) { return is_known(px, py) ? 1.0f : 0.0f; };
+    float nx = k(x + 1, y) - k(x - 1, y), ny = k(x, y + 1) - k(x, y - 1);
+    const float nn = std::sqrt(nx * nx + ny * ny);
+    if (nn > 0) nx /= nn, ny /= nn;
+    float gx = 0, gy = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int px = x + dx, py = y + dy;
+        if (!is_known(px, py) || !is_known(px + 1, py) || !is_known(px - 1, py) ||
+            !is_known(px, py + 1) || !is_known(px, py - 1))
+          continue;
+        const float ix = 0.5f * (grey_[idx(px + 1, py)] - grey_[idx(px - 1, py)]);
+        const float iy = 0.5f * (grey_[idx(px, py + 1)] - grey_[idx(px, py - 1)]);
+        if (ix * ix + iy * iy > gx * gx + gy * gy) gx = ix, gy = iy;
+      }
+    // Isophote = gradient turned 90°; D = |isophote · n| / α.
+    const float d = std::abs(-gy * nx + gx * ny) / 255.0f + 1e-3f;
+    const unsigned s = ++stamp_counter_;
+    stamp_[idx(x, y)] = s;
+    heap_.push({c * d, x, y, s});
+  }
+
+  // Best source patch centre for the target at (x, y): least SSD over the
+  // target's known pixels, searched in a window that widens until it holds one.
+  bool best_source(int x, int y, int* bx, int* by) const {
+    const int r = o_.patch_radius;
+    long best = std::numeric_limits<long>::max();
+    for (int radius = o_.search_radius;; radius *= 2) {
+      const int step = o_.search_step;
+      for (int cy = std::max(r, y - radius); cy <= std::min(h_ - 1 - r, y + radius); cy += step)
+        for (int cx = std::max(r, x - radius); cx <= std::min(w_ - 1 - r, x + radius); cx += step) {
+          if (!valid_[idx(cx, cy)]) continue;
+          long ssd = 0;
+          for (int dy = -r; dy <= r && ssd < best; ++dy) {
+            const int ty = y + dy;
+            if (ty < 0 || ty >= h_) continue;
+            for (int dx = -r; dx <= r; ++dx) {
+              const int tx = x + dx;
+              if (tx < 0 || tx >= w_ || !known_[idx(tx, ty)]) continue;
+              const Rgba& a = image_.data()[idx(tx, ty)];
+              const Rgba& b = image_.data()[idx(cx + dx, cy + dy)];
+              const int dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+              ssd += dr * dr + dg * dg + db * db;
+            }
+          }
+          if (ssd < best) best = ssd, *bx = cx, *by = cy;
+        }
+      if (best != std::numeric_limits<long>::max()) return true;
+      if (radius > w_ + h_) return false;
+    }
+  }
+
+  int fill_patch(int x, int y, InpaintResult* result) {
+    const int r = o_.patch_radius;
+    int bx = 0, by = 0;
+    const bool found = best_source(x, y, &bx, &by);
+    // Confidence of the filled pixels: the target patch's C(p).
+    float c = 0;
+    int count = 0;
+    Rgba mean{};
+    int sr = 0, sg = 0, sb = 0, known = 0;
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const int px = x + dx, py = y + dy;
+        if (px < 0 || py < 0 || px >= w_ || py >= h_) continue;
+        ++count;
+        if (known_[idx(px, py)]) {
+          c += confidence_[idx(px, py)];
+          const Rgba& v = image_.data()[idx(px, py)];
+          sr += v.r, sg += v.g, sb += v.b, ++known;
+        }
+      }
+    c /= std::max(1, count);
+    if (known > 0)
+      mean = {static_cast<std::uint8_t>(sr / known), static_cast<std::uint8_t>(sg / known),
+              static_cast<std::uint8_t>(sb / known), 255};
+    int filled = 0;
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const int px = x + dx, py = y + dy;
+        if (px < 0 || py < 0 || px >= w_ || py >= h_ || known_[idx(px, py)]) continue;
+        Rgba& dst = image_.data()[idx(px, py)];
+        const std::uint8_t alpha = dst.a;
+        if (found) {
+          dst = image_.data()[idx(bx + dx, by + dy)];
+        } else {
+          dst = mean;  // no source patch anywhere: the mean of what is known
+          ++result->unfilled;
+        }
+        dst.a = alpha;
+        grey_[idx(px, py)] = 0.299f * dst.r + 0.587f * dst.g + 0.114f * dst.b;
+        known_[idx(px, py)] = 1;
+        confidence_[idx(px, py)] = c;
+        --remaining_;
+        ++filled;
+      }
+    // Priorities change around the patch: re-push the front there.
+    for (int dy = -r - 1; dy <= r + 1; ++dy)
+      for (int dx = -r - 1; dx <= r + 1; ++dx) {
+        const int px = x + dx, py = y + dy;
+        if (px < 0 || py < 0 || px >= w_ || py >= h_) continue;
+        if (on_front(px, py)) push(px, py);
+      }
+    return filled;
+  }
+
+  Image& image_;
+  const InpaintOptions& o_;
+  int w_, h_;
+  std::vector<std::uint8_t> known_;
+  std::vector<float> confidence_;
+  std::vector<int> integral_;
+  std::vector<std::uint8_t> valid_;
+  std::vector<float> grey_;
+  std::vector<unsigned> stamp_ = {};
+  unsigned stamp_counter_ = 0;
+  std::priority_queue<Item> heap_;
+  long remaining_ = 0;
+};
+
+}  // namespace
+
+InpaintResult inpaint_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
+                               const InpaintOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw Error(why);
+  if (fill.width() != image.width() || fill.height() != image.height())
+    throw Error("completion::inpaint_exemplar: fill mask is " + std::to_string(fill.width()) + "x" +
+                std::to_string(fill.height()) + ", the image " + std::to_string(image.width()) +
+                "x" + std::to_string(image.height()) + "; they must be the same size");
+  if (!source.empty() && (source.width() != image.width() || source.height() != image.height()))
+    throw Error("completion::inpaint_exemplar: source mask is " + std::to_string(source.width()) +
+                "x" + std::to_string(source.height()) + ", the image " +
+                std::to_string(image.width()) + "x" + std::to_string(image.height()) +
+                "; they must be the same size or empty");
+  if (image.empty()) return {};
+  Filler filler(image, fill, source, options);
+  return filler.run();
+}
+
+}  // namespace hair25d::completion

@@ -1,0 +1,140 @@
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "context.h"
+#include "hair25d/completion/bezier.h"
+#include "raster.h"
+
+namespace hair25d::completion::detail {
+namespace {
+
+double angle(const Vec2& a, const Vec2& b) {
+  const double la = a.norm(), lb = b.norm();
+  if (la <= 0 || lb <= 0) return M_PI;
+  return std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0));
+}
+
+bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  auto orient = [](const Vec2& p, const Vec2& q, const Vec2& r) {
+    return (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();
+  };
+  const double o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a),
+               o4 = orient(c, d, b);
+  return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
+// The completed area between two pieces: Bézier p_a → q_b, b's edge back to
+// p_b, Bézier p_b → q_a, a's edge back to p_a (§5.1).
+Polyline join_patch(const Edge& a, const Edge& b) {
+  const CubicBezier first = join_bezier(a.p, a.tangent_p, b.q, -b.tangent_q);
+  const CubicBezier second = join_bezier(b.p, b.tangent_p, a.q, -a.tangent_q);
+  const int s1 = std::max(4, static_cast<int>((a.p - b.q).norm() / 2));
+  const int s2 = std::max(4, static_cast<int>((b.p - a.q).norm() / 2));
+  Polyline patch = first.sample(s1);
+  for (auto it = b.points.rbegin() + 1; it != b.points.rend(); ++it) patch.push_back(*it);
+  const Polyline second_points = second.sample(s2);
+  patch.insert(patch.end(), second_points.begin() + 1, second_points.end());
+  for (auto it = a.points.rbegin() + 1; it != a.points.rend(); ++it) patch.push_back(*it);
+  return patch;
+}
+
+// Share of the patch's pixels outside both pieces that lie under an occluder
+// of either piece: the hidden part may only be where the drawing shows hair
+// in front (§5 "completed part lies under the occluders").
+double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, int* hidden) {
+  double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
+  for (const Vec2& p : patch) {
+    x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
+    x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
+  }
+  const cv::Point origin(static_cast<int>(std::floor(x0)) - 1,
+                         static_cast<int>(std::floor(y0)) - 1);
+  const int w = static_cast<int>(std::ceil(x1)) - origin.x + 2;
+  const int h = static_cast<int>(std::ceil(y1)) - origin.y + 2;
+  if (w <= 0 || h <= 0 || static_cast<double>(w) * h > 4e6) return 0.0;
+  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
+  fill_polygon(mask, patch, origin, 255);
+  int under = 0, total = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!mask.at<std::uint8_t>(y, x)) continue;
+      const int gx = x + origin.x, gy = y + origin.y;
+      if (!ctx.labels.contains(gx, gy)) {
+        ++total;
+        continue;
+      }
+      const int l = ctx.labels.at(gx, gy);
+      if (l == ra || l == rb) continue;
+      ++total;
+      if (l != 0 && (ctx.occludes(l, ra) || ctx.occludes(l, rb))) ++under;
+    }
+  *hidden = total;
+  return total > 0 ? static_cast<double>(under) / total : 1.0;
+}
+
+}  // namespace
+
+std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
+                              const std::function<bool(int, int)>& try_join) {
+  const Options& o = *ctx.options;
+  const double max_angle = o.max_join_angle_deg * M_PI / 180.0;
+  std::vector<Join> candidates;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const Edge& a = edges[i];
+      const Edge& b = edges[j];
+      if (a.region == b.region) continue;
+      if (ctx.occludes(a.region, b.region) || ctx.occludes(b.region, a.region)) continue;
+      // The pieces may border different occluders (the gap can lie under two
+      // overlapping strands): the coverage test below is what decides.
+      const double wide = std::max(a.width, b.width), narrow = std::min(a.width, b.width);
+      if (wide <= 0 || narrow / wide < o.min_width_ratio) continue;
+      const double colour = (a.colour - b.colour).norm();
+      if (colour > o.max_colour_distance) continue;
+      // p_a ↔ q_b and p_b ↔ q_a: the outlines traverse both pieces the same way.
+      const Vec2 c1 = b.q - a.p, c2 = a.q - b.p;
+      if (segments_cross(a.p, b.q, b.p, a.q)) continue;
+      const double angles[4] = {angle(a.tangent_p, c1), angle(-b.tangent_q, c1),
+                                angle(b.tangent_p, c2), angle(-a.tangent_q, c2)};
+      if (*std::max_element(angles, angles + 4) > max_angle) continue;
+      Join join;
+      join.edge_a = static_cast<int>(i);
+      join.edge_b = static_cast<int>(j);
+      join.patch = join_patch(a, b);
+      int hidden = 0;
+      const double cover = coverage(ctx, join.patch, a.region, b.region, &hidden);
+      if (cover < o.min_join_coverage) continue;
+      const double gap = 0.5 * (c1.norm() + c2.norm());
+      // Tangent continuity is the most reliable cue (§5.1 criterion 3); colour
+      // varies with shading and widths with the angle of the cut.
+      const double mean_angle = (angles[0] + angles[1] + angles[2] + angles[3]) / 4;
+      join.cost = 2.0 * mean_angle / max_angle + *std::max_element(angles, angles + 4) / max_angle +
+                  0.4 * colour / o.max_colour_distance + 0.5 * (1.0 - narrow / wide) +
+                  0.5 * std::min(gap / wide, 3.0) + 3.0 * (1.0 - cover);
+      // §5.1 matches edges "around a common occluder"; a gap under two
+      // overlapping occluders is allowed but costs more.
+      bool common = false;
+      for (int occ : a.occluders) common = common || b.occluders.count(occ) > 0;
+      if (!common) join.cost += 0.4;
+      if (join.cost > o.max_join_cost) continue;
+      candidates.push_back(std::move(join));
+    }
+  // Greedy one-to-one: cheapest first, every edge joined at most once.
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Join& x, const Join& y) { return x.cost < y.cost; });
+  // Edges may overlap (an atom and a merged edge holding it): an atom joins once.
+  std::set<int> used;
+  std::vector<Join> chosen;
+  for (Join& j : candidates) {
+    bool free = true;
+    for (int e : {j.edge_a, j.edge_b})
+      for (int atom : edges[e].atoms) free = free && !used.count(atom);
+    if (!free || !try_join(edges[j.edge_a].region, edges[j.edge_b].region)) continue;
+    for (int e : {j.edge_a, j.edge_b}) used.insert(edges[e].atoms.begin(), edges[e].atoms.end());
+    chosen.push_back(std::move(j));
+  }
+  return chosen;
+}
+
+}  // namespace hair25d::completion::detail

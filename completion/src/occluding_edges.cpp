@@ -1,0 +1,256 @@
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "context.h"
+#include "raster.h"
+
+namespace hair25d::completion::detail {
+namespace {
+
+Vec2 centre(const cv::Point& p) { return {p.x + 0.5, p.y + 0.5}; }
+
+int wrap(int i, int n) { return ((i % n) + n) % n; }
+
+// Per contour point: the nearest occluder within reach, 0 if none, with a
+// majority filter so junction pixels do not split runs.
+std::vector<int> occluder_labels(const Context& ctx, const RegionInfo& region) {
+  const auto& c = region.contour;
+  const int n = static_cast<int>(c.size());
+  const int reach = ctx.options->occluder_reach;
+  std::vector<int> raw(n, 0);
+  for (int i = 0; i < n; ++i) {
+    int best = 0, best_d = 1 << 30;
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const int l = ctx.label(c[i].x + dx, c[i].y + dy);
+        if (l == 0 || !region.occluders.count(l)) continue;
+        const int d = dx * dx + dy * dy;
+        if (d < best_d) best_d = d, best = l;
+      }
+    raw[i] = best;
+  }
+  std::vector<int> out = raw;
+  for (int i = 0; i < n; ++i) {
+    if (raw[i] == 0) continue;
+    std::map<int, int> votes;
+    for (int k = -2; k <= 2; ++k)
+      if (raw[wrap(i + k, n)] != 0) ++votes[raw[wrap(i + k, n)]];
+    int best = raw[i], most = 0;
+    for (auto [l, v] : votes)
+      if (v > most) most = v, best = l;
+    out[i] = best;
+  }
+  return out;
+}
+
+// Builds an edge over contour indices begin..end (unwrapped, end >= begin).
+Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<int>& labels,
+               int begin, int end) {
+  const Options& o = *ctx.options;
+  const auto& c = region.contour;
+  const int n = static_cast<int>(c.size());
+  auto at = [&](int i) { return centre(c[wrap(i, n)]); };
+  Edge e;
+  e.region = region.id;
+  e.begin = wrap(begin, n);
+  e.end = e.begin + (end - begin);
+  for (int i = begin; i <= end; ++i) {
+    e.points.push_back(at(i));
+    if (labels[wrap(i, n)] != 0) e.occluders.insert(labels[wrap(i, n)]);
+  }
+  e.p = e.points.front();
+  e.q = e.points.back();
+  e.width = (e.p - e.q).norm();
+  const int fit = static_cast<int>(std::round(o.fit_length));
+  const int room = n - (end - begin + 1);
+  int free_before = 0, free_after = 0;
+  while (free_before < std::min(fit, room) && labels[wrap(begin - 1 - free_before, n)] == 0)
+    ++free_before;
+  while (free_after < std::min(fit, room) && labels[wrap(end + 1 + free_after, n)] == 0)
+    ++free_after;
+  // The last pixels before an end bend into the occluder's drawn line: the
+  // fields are fitted to the outline a little away from it.
+  const int skip_p = std::min(3, free_before / 3), skip_q = std::min(3, free_after / 3);
+  for (int i = begin - free_before; i <= begin - skip_p; ++i) e.piece_p.push_back(at(i));
+  for (int i = end + free_after; i >= end + skip_q; --i) e.piece_q.push_back(at(i));
+  // Without visible outline beside an end, the strand is taken to continue
+  // straight out of the region, across the chord p q.
+  Vec2 out(-(e.q - e.p).y(), (e.q - e.p).x());
+  if (out.norm() > 0) out.normalize();
+  if (out.dot(region.centroid - 0.5 * (e.p + e.q)) > 0) out = -out;
+  // Tangents by a line fit to the visible outline a little away from the
+  // end: the last pixels bend into the occluder's drawn line.
+  const int arm = static_cast<int>(std::round(o.tangent_arm));
+  auto fit_direction = [&](int from, int step, int free, Vec2* dir) {
+    const int skip = std::min(3, free / 3), last = std::min(arm + skip, free);
+    if (last - skip < 4) return false;
+    Vec2 mean = Vec2::Zero();
+    for (int k = skip; k <= last; ++k) mean += at(from - step * k);
+    mean /= (last - skip + 1);
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    for (int k = skip; k <= last; ++k) {
+      const Vec2 d = at(from - step * k) - mean;
+      cov += d * d.transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+    Vec2 axis = eig.eigenvectors().col(1);
+    // Oriented towards the end, i.e. into the hidden part.
+    if (axis.dot(at(from) - at(from - step * last)) < 0) axis = -axis;
+    *dir = axis;
+    return true;
+  };
+  const bool has_p = fit_direction(begin, 1, free_before, &e.tangent_p);
+  const bool has_q = fit_direction(end, -1, free_after, &e.tangent_q);
+  // Without visible outline beside an end, the band is taken to continue
+  // parallel to its other side, or straight out across the chord.
+  if (!has_p) e.tangent_p = has_q ? e.tangent_q : out;
+  if (!has_q) e.tangent_q = has_p ? e.tangent_p : out;
+  // The region's colour next to the edge (drawn pixels only, not outlines).
+  Eigen::Vector3d sum(0, 0, 0);
+  int count = 0;
+  for (std::size_t i = 0; i < e.points.size(); i += 2) {
+    const int cx = static_cast<int>(e.points[i].x()), cy = static_cast<int>(e.points[i].y());
+    for (int dy = -5; dy <= 5; ++dy)
+      for (int dx = -5; dx <= 5; ++dx) {
+        const int x = cx + dx, y = cy + dy;
+        if (!ctx.original->contains(x, y) || ctx.original->at(x, y) != region.id) continue;
+        const Rgba& px = ctx.image->at(x, y);
+        sum += Eigen::Vector3d(px.r, px.g, px.b);
+        ++count;
+      }
+  }
+  e.colour = count > 0 ? Eigen::Vector3d(sum / count) : region.colour;
+  return e;
+}
+
+}  // namespace
+
+void describe_regions(Context& ctx) {
+  const LabelMap& L = ctx.labels;
+  struct Acc {
+    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1, n = 0;
+    double sx = 0, sy = 0;
+    Eigen::Vector3d colour{0, 0, 0};
+    int coloured = 0;
+  };
+  std::map<int, Acc> acc;
+  for (int y = 0; y < L.height(); ++y)
+    for (int x = 0; x < L.width(); ++x) {
+      const int l = L.at(x, y);
+      if (l == 0) continue;
+      Acc& a = acc[l];
+      a.x0 = std::min(a.x0, x), a.y0 = std::min(a.y0, y);
+      a.x1 = std::max(a.x1, x), a.y1 = std::max(a.y1, y);
+      ++a.n;
+      a.sx += x + 0.5, a.sy += y + 0.5;
+      if (ctx.original->at(x, y) == l) {
+        const Rgba& c = ctx.image->at(x, y);
+        a.colour += Eigen::Vector3d(c.r, c.g, c.b);
+        ++a.coloured;
+      }
+    }
+  for (auto& [id, a] : acc) {
+    RegionInfo& r = ctx.regions[id];
+    r.id = id;
+    r.box = cv::Rect(a.x0, a.y0, a.x1 - a.x0 + 1, a.y1 - a.y0 + 1);
+    r.pixels = a.n;
+    r.centroid = Vec2(a.sx / a.n, a.sy / a.n);
+    r.colour = a.coloured > 0 ? Eigen::Vector3d(a.colour / a.coloured) : Eigen::Vector3d(0, 0, 0);
+    const cv::Rect padded(r.box.x - 1, r.box.y - 1, r.box.width + 2, r.box.height + 2);
+    cv::Mat mask(padded.height, padded.width, CV_8U, cv::Scalar(0));
+    for (int y = r.box.y; y < r.box.y + r.box.height; ++y)
+      for (int x = r.box.x; x < r.box.x + r.box.width; ++x)
+        if (L.at(x, y) == id) mask.at<std::uint8_t>(y - padded.y, x - padded.x) = 255;
+    const auto contours = outer_contours(mask);
+    r.contour.clear();
+    if (!contours.empty())
+      for (const cv::Point& p : contours.front()) r.contour.push_back(p + padded.tl());
+  }
+}
+
+std::vector<Edge> find_edges(const Context& ctx, const RegionInfo& region, int first_id) {
+  std::vector<Edge> edges;
+  const Options& o = *ctx.options;
+  const int n = static_cast<int>(region.contour.size());
+  if (region.occluders.empty() || n < 8) return edges;
+  const std::vector<int> labels = occluder_labels(ctx, region);
+  int start = -1;
+  for (int i = 0; i < n && start < 0; ++i)
+    if (labels[i] == 0) start = i;
+  if (start < 0) return edges;  // wholly hidden outline: nothing to grow from
+
+  struct Run {
+    int begin, end, label;
+  };
+  std::vector<Run> runs;
+  for (int k = 1; k < n; ++k) {
+    const int i = start + k, l = labels[wrap(i, n)];
+    if (l == 0) continue;
+    if (!runs.empty() && runs.back().end == i - 1 && runs.back().label == l)
+      runs.back().end = i;
+    else
+      runs.push_back({i, i, l});
+  }
+  // Runs under one occluder with a short visible gap between them are one
+  // edge (the gap is an outline wiggle, not the strand showing).
+  const int gap = static_cast<int>(std::ceil(o.merge_gap));
+  std::vector<Run> merged;
+  for (const Run& r : runs) {
+    if (!merged.empty() && merged.back().label == r.label && r.begin - merged.back().end - 1 <= gap)
+      merged.back().end = r.end;
+    else
+      merged.push_back(r);
+  }
+  const int min_len = static_cast<int>(std::ceil(o.min_edge_length));
+  for (const Run& r : merged) {
+    if (r.end - r.begin + 1 < min_len) continue;
+    Edge e = make_edge(ctx, region, labels, r.begin, r.end);
+    e.atoms = {first_id + static_cast<int>(edges.size())};
+    edges.push_back(std::move(e));
+  }
+  return edges;
+}
+
+std::vector<Edge> merge_edges(const Context& ctx, const RegionInfo& region,
+                              const std::vector<Edge>& edges) {
+  std::vector<Edge> out;
+  const int n = static_cast<int>(region.contour.size());
+  if (edges.empty() || n == 0) return out;
+  const std::vector<int> labels = occluder_labels(ctx, region);
+  std::vector<const Edge*> sorted;
+  for (const Edge& e : edges) sorted.push_back(&e);
+  std::sort(sorted.begin(), sorted.end(),
+            [](const Edge* a, const Edge* b) { return a->begin < b->begin; });
+  const int gap = static_cast<int>(std::ceil(ctx.options->merge_gap));
+  struct Span {
+    int begin, end;
+    std::vector<int> atoms;
+  };
+  std::vector<Span> spans;
+  for (const Edge* e : sorted) {
+    if (!spans.empty() && e->begin - spans.back().end - 1 <= gap) {
+      spans.back().end = std::max(spans.back().end, e->end);
+      spans.back().atoms.insert(spans.back().atoms.end(), e->atoms.begin(), e->atoms.end());
+    } else {
+      spans.push_back({e->begin, e->end, e->atoms});
+    }
+  }
+  // The last span may wrap around onto the first.
+  if (spans.size() > 1 && spans.front().begin + n - spans.back().end - 1 <= gap) {
+    spans.back().end = spans.front().end + n;
+    spans.back().atoms.insert(spans.back().atoms.end(), spans.front().atoms.begin(),
+                              spans.front().atoms.end());
+    spans.erase(spans.begin());
+  }
+  for (const Span& s : spans) {
+    if (s.end - s.begin + 1 >= n - 2) continue;  // (nearly) the whole outline
+    Edge e = make_edge(ctx, region, labels, s.begin, s.end);
+    e.atoms = s.atoms;
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+}  // namespace hair25d::completion::detail

@@ -1,0 +1,47 @@
+#include <deque>
+
+#include "hair25d/completion/completion.h"
+#include "hair25d/core/error.h"
+#include "raster.h"
+
+namespace hair25d::completion {
+
+LabelMap assign_outline_pixels(const Image& image, const LabelMap& regions, int reach,
+                               int dark_luma) {
+  if (image.width() != regions.width() || image.height() != regions.height()) {
+    throw Error("completion::assign_outline_pixels: regions are " +
+                std::to_string(regions.width()) + "x" + std::to_string(regions.height()) +
+                ", the image " + std::to_string(image.width()) + "x" +
+                std::to_string(image.height()) + "; they must be the same size");
+  }
+  LabelMap out = regions;
+  const int w = regions.width(), h = regions.height();
+  std::vector<int> dist(static_cast<std::size_t>(w) * h, -1);
+  std::deque<int> queue;
+  for (int i = 0; i < w * h; ++i)
+    if (regions.data()[i] != 0) {
+      dist[i] = 0;
+      queue.push_back(i);
+    }
+  // Breadth-first growth: an outline pixel between two regions goes to the
+  // one it is nearer to, so the line is split down its middle.
+  while (!queue.empty()) {
+    const int i = queue.front();
+    queue.pop_front();
+    if (dist[i] >= reach) continue;
+    const int x = i % w, y = i / w;
+    static constexpr int kDx[4] = {1, -1, 0, 0}, kDy[4] = {0, 0, 1, -1};
+    for (int k = 0; k < 4; ++k) {
+      const int nx = x + kDx[k], ny = y + kDy[k];
+      if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+      const int j = ny * w + nx;
+      if (dist[j] >= 0 || detail::luma(image.at(nx, ny)) >= dark_luma) continue;
+      dist[j] = dist[i] + 1;
+      out.data()[j] = out.data()[i];
+      queue.push_back(j);
+    }
+  }
+  return out;
+}
+
+}  // namespace hair25d::completion

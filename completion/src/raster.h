@@ -1,0 +1,30 @@
+// OpenCV views of the core rasters and small raster helpers (private).
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "hair25d/core/geometry.h"
+#include "hair25d/core/image.h"
+
+namespace hair25d::completion::detail {
+
+// Non-owning CV_32S view of a label map / CV_8UC4 view of an image.
+inline cv::Mat view(const LabelMap& m) {
+  return cv::Mat(m.height(), m.width(), CV_32S, const_cast<int*>(m.data()));
+}
+inline cv::Mat view(const Image& m) {
+  return cv::Mat(m.height(), m.width(), CV_8UC4, const_cast<std::uint8_t*>(m.bytes()));
+}
+
+inline int luma(const Rgba& c) { return (299 * c.r + 587 * c.g + 114 * c.b) / 1000; }
+
+// Fills a closed polygon (pixel centres at integer + 0.5) into `mask` (CV_8U)
+// with `value`, offset by -origin.
+void fill_polygon(cv::Mat& mask, const Polyline& polygon, const cv::Point& origin, int value);
+
+// Contour points (pixel centres) of the outer boundaries of a binary mask,
+// largest first. Orientation: as OpenCV returns them (all the same way).
+std::vector<std::vector<cv::Point>> outer_contours(const cv::Mat& mask8);
+
+}  // namespace hair25d::completion::detail

@@ -1,0 +1,184 @@
+#include "strand_assembly.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "hair25d/completion/inpaint.h"
+#include "raster.h"
+
+namespace hair25d::completion::detail {
+namespace {
+
+cv::Rect polygon_box(const Polyline& poly) {
+  double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
+  for (const Vec2& p : poly) {
+    x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
+    x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
+  }
+  const int ix0 = static_cast<int>(std::floor(x0)), iy0 = static_cast<int>(std::floor(y0));
+  return {ix0, iy0, static_cast<int>(std::ceil(x1)) - ix0 + 1,
+          static_cast<int>(std::ceil(y1)) - iy0 + 1};
+}
+
+bool occluded_by_any(const Context& ctx, int label, const std::vector<int>& members) {
+  if (label == 0) return false;
+  for (int m : members)
+    if (ctx.occludes(label, m)) return true;
+  return false;
+}
+
+CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members,
+                             const std::vector<const PieceArea*>& areas,
+                             std::vector<EdgeReport>* reports, InpaintResult* inpainted) {
+  const Options& o = *ctx.options;
+  const cv::Rect image_rect(0, 0, ctx.labels.width(), ctx.labels.height());
+  cv::Rect box;
+  for (int m : members) box = box.area() == 0 ? ctx.regions.at(m).box : box | ctx.regions.at(m).box;
+  for (const PieceArea* a : areas) box |= polygon_box(a->polygon);
+  const int pad = o.inpaint.patch_radius + 1;
+  box = cv::Rect(box.x - pad, box.y - pad, box.width + 2 * pad, box.height + 2 * pad) & image_rect;
+
+  CompletedStrand s;
+  s.regions = members;
+  std::sort(s.regions.begin(), s.regions.end());
+  s.origin = Eigen::Vector2i(box.x, box.y);
+  cv::Mat mask(box.height, box.width, CV_8U, cv::Scalar(0));
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) {
+      const int l = ctx.labels.at(x + box.x, y + box.y);
+      if (l != 0 && std::find(members.begin(), members.end(), l) != members.end())
+        mask.at<std::uint8_t>(y, x) = 1;
+    }
+  // Completed areas count only where an occluder of the strand is drawn: the
+  // completed part never shows where the drawing is visible.
+  Vec2 root_sum(0, 0);
+  int root_count = 0;
+  cv::Mat area(box.height, box.width, CV_8U);
+  for (const PieceArea* a : areas) {
+    area.setTo(0);
+    fill_polygon(area, a->polygon, box.tl(), 1);
+    int added = 0;
+    for (int y = 0; y < box.height; ++y)
+      for (int x = 0; x < box.width; ++x) {
+        if (!area.at<std::uint8_t>(y, x) || mask.at<std::uint8_t>(y, x) == 1) continue;
+        if (!occluded_by_any(ctx, ctx.labels.at(x + box.x, y + box.y), members)) continue;
+        if (mask.at<std::uint8_t>(y, x) == 0) ++added;
+        mask.at<std::uint8_t>(y, x) = 2;
+        if (a->root) root_sum += Vec2(x + box.x + 0.5, y + box.y + 0.5), ++root_count;
+      }
+    if (a->edge >= 0 && a->edge < static_cast<int>(reports->size()))
+      (*reports)[a->edge].hidden_pixels += added;
+  }
+  if (root_count > 0) s.root_hint = root_sum / root_count;
+
+  // The outline: outer boundary of the largest connected piece.
+  cv::Mat binary = mask > 0;
+  const auto contours = outer_contours(binary);
+  if (!contours.empty() && contours.front().size() >= 3) {
+    std::vector<cv::Point> simple;
+    cv::approxPolyDP(contours.front(), simple, 0.7, true);
+    if (simple.size() < 3) simple = contours.front();
+    for (const cv::Point& p : simple) s.outline.emplace_back(p.x + box.x + 0.5, p.y + box.y + 0.5);
+  }
+
+  // Texture: the drawing, with the hidden part and the occluders' outlines
+  // along it synthesised from the strand's own visible pixels.
+  s.texture = Image(box.width, box.height);
+  LabelMap fill(box.width, box.height), source(box.width, box.height);
+  const int line_reach = o.occluder_reach + o.outline_reach;
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) {
+      const int m = mask.at<std::uint8_t>(y, x);
+      const int gx = x + box.x, gy = y + box.y;
+      Rgba c = ctx.image->at(gx, gy);
+      c.a = m ? 255 : 0;
+      s.texture.at(x, y) = c;
+      if (m == 2) {
+        fill.at(x, y) = 1;
+        ++s.completed_pixels;
+      } else if (m == 1) {
+        ++s.visible_pixels;
+        bool occluder_line = false;
+        if (ctx.original->at(gx, gy) == 0) {
+          for (int dy = -line_reach; dy <= line_reach && !occluder_line; ++dy)
+            for (int dx = -line_reach; dx <= line_reach; ++dx)
+              if (occluded_by_any(ctx, ctx.label(gx + dx, gy + dy), members)) {
+                occluder_line = true;
+                break;
+              }
+        }
+        (occluder_line ? fill : source).at(x, y) = 1;
+      }
+    }
+  bool any_fill = false;
+  for (std::size_t i = 0; i < fill.size() && !any_fill; ++i) any_fill = fill.data()[i] != 0;
+  if (any_fill && o.inpaint_strands) {
+    const InpaintResult r = inpaint_exemplar(s.texture, fill, source, o.inpaint);
+    inpainted->filled += r.filled;
+    inpainted->patches += r.patches;
+    inpainted->unfilled += r.unfilled;
+  }
+  s.mask = LabelMap(box.width, box.height);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) s.mask.at(x, y) = mask.at<std::uint8_t>(y, x);
+  return s;
+}
+
+}  // namespace
+
+std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPieces& pieces,
+                                              std::vector<EdgeReport>* reports,
+                                              InpaintResult* inpainted) {
+  std::vector<CompletedStrand> out;
+  for (const std::vector<int>& members : pieces.groups) {
+    std::vector<const PieceArea*> areas;
+    for (const PieceArea& a : pieces.areas)
+      if (std::find(members.begin(), members.end(), a.region) != members.end()) areas.push_back(&a);
+    out.push_back(build_strand(ctx, members, areas, reports, inpainted));
+  }
+  return out;
+}
+
+Image fill_background(const Context& ctx, InpaintResult* inpainted) {
+  const Options& o = *ctx.options;
+  const Image& image = *ctx.image;
+  const int w = image.width(), h = image.height();
+  // The hair covers much of the drawing: fill a reduced copy (an integer
+  // factor, so every reduced pixel is a whole block) and upscale the fill.
+  const int factor =
+      std::max(1, (std::max(w, h) + o.background_max_side - 1) / o.background_max_side);
+  const int sw = (w + factor - 1) / factor, sh = (h + factor - 1) / factor;
+  Image small(sw, sh);
+  LabelMap hole(sw, sh), source(sw, sh);
+  for (int sy = 0; sy < sh; ++sy)
+    for (int sx = 0; sx < sw; ++sx) {
+      int r = 0, g = 0, b = 0, n = 0;
+      bool hair = false;
+      for (int y = sy * factor; y < std::min(h, (sy + 1) * factor); ++y)
+        for (int x = sx * factor; x < std::min(w, (sx + 1) * factor); ++x) {
+          const Rgba& c = image.at(x, y);
+          r += c.r, g += c.g, b += c.b, ++n;
+          hair = hair || ctx.labels.at(x, y) != 0;
+        }
+      small.at(sx, sy) = {static_cast<std::uint8_t>(r / n), static_cast<std::uint8_t>(g / n),
+                          static_cast<std::uint8_t>(b / n), 255};
+      hole.at(sx, sy) = hair ? 1 : 0;
+      source.at(sx, sy) = hair ? 0 : 1;
+    }
+  InpaintOptions io = o.inpaint;
+  *inpainted = inpaint_exemplar(small, hole, source, io);
+  Image out = image;
+  const cv::Mat small_view = view(small);
+  cv::Mat big;
+  cv::resize(small_view, big, cv::Size(sw * factor, sh * factor), 0, 0, cv::INTER_LINEAR);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (ctx.labels.at(x, y) == 0) continue;
+      const cv::Vec4b& v = big.at<cv::Vec4b>(y, x);
+      out.at(x, y) = {v[0], v[1], v[2], 255};
+    }
+  return out;
+}
+
+}  // namespace hair25d::completion::detail

@@ -1,0 +1,260 @@
+#include "hair25d/completion/completion.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hair25d/core/error.h"
+#include "synthetic.h"
+
+namespace hair25d::completion {
+namespace {
+
+using test::below;
+using test::blank;
+using test::Drawing;
+using test::paint;
+
+const Rgba kHair{200, 170, 90, 255};
+const Rgba kFront{120, 90, 160, 255};
+
+Result run(const Drawing& d, std::optional<Vec2> head = std::nullopt, Options o = {}) {
+  Input in;
+  in.image = &d.image;
+  in.regions = &d.regions;
+  in.relations = d.relations;
+  in.head_center = head;
+  return complete_strands(in, o);
+}
+
+const CompletedStrand* strand_with(const Result& r, int region) {
+  for (const CompletedStrand& s : r.strands)
+    if (std::find(s.regions.begin(), s.regions.end(), region) != s.regions.end()) return &s;
+  return nullptr;
+}
+
+// Every completed pixel lies where the drawing shows one of `occluders`.
+void expect_under(const Result& r, const CompletedStrand& s, const std::vector<int>& occluders) {
+  for (int y = 0; y < s.mask.height(); ++y)
+    for (int x = 0; x < s.mask.width(); ++x) {
+      if (s.mask.at(x, y) != 2) continue;
+      const int l = r.regions.at(x + s.origin.x(), y + s.origin.y());
+      EXPECT_TRUE(std::find(occluders.begin(), occluders.end(), l) != occluders.end())
+          << "completed pixel at " << x + s.origin.x() << "," << y + s.origin.y()
+          << " shows region " << l;
+    }
+}
+
+// A horizontal band split by a vertical occluder (case 1).
+Drawing crossed_bands() {
+  Drawing d = blank(300, 170);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, kHair, 1);
+  paint(
+      d, [](double x, double y) { return x >= 150 && x < 280 && y > 60 && y < 100; }, kHair, 2);
+  paint(
+      d, [](double x, double y) { return x > 130 && x < 170 && y > 10 && y < 150; }, kFront, 3);
+  d.relations = {below(1, 3), below(2, 3)};
+  return d;
+}
+
+TEST(Completion, IntersectingPiecesAreJoinedUnderTheOccluder) {
+  const Drawing d = crossed_bands();
+  const Result r = run(d, Vec2(150, 300));
+  EXPECT_EQ(r.joins, 1);
+  ASSERT_EQ(r.strands.size(), 2u);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1, 2}));
+  expect_under(r, *s, {3});
+  // The hidden part is the band's 40 × 40 pixels under the occluder, less lines.
+  EXPECT_GT(s->completed_pixels, 1200);
+  EXPECT_LT(s->completed_pixels, 2000);
+  // The completed band is straight: every hidden pixel lies within its rows.
+  for (int y = 0; y < s->mask.height(); ++y)
+    for (int x = 0; x < s->mask.width(); ++x)
+      if (s->mask.at(x, y) == 2) {
+        EXPECT_GT(y + s->origin.y(), 55);
+        EXPECT_LT(y + s->origin.y(), 105);
+      }
+  // One closed outline around the whole band: it spans both pieces.
+  double x0 = 1e9, x1 = -1e9;
+  for (const Vec2& p : s->outline) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
+  EXPECT_LT(x0, 25);
+  EXPECT_GT(x1, 275);
+  // The texture is the hair colour in the completed part (inpainted from its own pixels).
+  int hair_coloured = 0;
+  for (int y = 0; y < s->mask.height(); ++y)
+    for (int x = 0; x < s->mask.width(); ++x)
+      if (s->mask.at(x, y) == 2) {
+        const Rgba c = s->texture.at(x, y);
+        hair_coloured +=
+            std::abs(c.r - kHair.r) + std::abs(c.g - kHair.g) + std::abs(c.b - kHair.b) < 30;
+      }
+  EXPECT_GT(hair_coloured, 0.9 * s->completed_pixels);
+}
+
+// A strand tapering to a tip at x = 280; the part beyond x = 190 is hidden.
+Drawing hidden_tip() {
+  Drawing d = blank(320, 150);
+  const auto strand = [](double x, double y) {
+    if (x < 20 || x > 280) return false;
+    const double half = 24.0 * (280 - x) / 260.0;
+    return std::abs(y - 70) < half;
+  };
+  paint(d, strand, kHair, 1);
+  paint(
+      d, [](double x, double y) { return x > 190 && x < 310 && y > 15 && y < 130; }, kFront, 2);
+  d.relations = {below(1, 2)};
+  return d;
+}
+
+double corner_angle_deg(const Polyline& outline, const Vec2& at, double arm) {
+  int best = 0;
+  for (int i = 0; i < static_cast<int>(outline.size()); ++i)
+    if ((outline[i] - at).norm() < (outline[best] - at).norm()) best = i;
+  const int n = static_cast<int>(outline.size());
+  auto walk = [&](int step) {
+    double left = arm;
+    int j = best;
+    for (int k = 0; k < n; ++k) {
+      const int next = ((j + step) % n + n) % n;
+      left -= (outline[next] - outline[j]).norm();
+      j = next;
+      if (left <= 0) break;
+    }
+    return outline[j];
+  };
+  const Vec2 a = (walk(-1) - outline[best]).normalized(),
+             b = (walk(1) - outline[best]).normalized();
+  return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+TEST(Completion, HiddenTipIsCompletedSharp) {
+  const Drawing d = hidden_tip();
+  const Result r = run(d, Vec2(-100, 70));  // the head is on the left: the hidden end is the tip
+  EXPECT_EQ(r.tips, 1);
+  EXPECT_EQ(r.roots, 0);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  expect_under(r, *s, {2});
+  EXPECT_GT(s->completed_pixels, 100);
+  // The farthest completed point from the cut is a sharp corner of the outline.
+  Vec2 far(0, 0);
+  for (const Vec2& p : s->outline)
+    if (p.x() > far.x()) far = p;
+  EXPECT_GT(far.x(), 200);
+  EXPECT_LT(corner_angle_deg(s->outline, far, 8.0), 70.0);
+  EXPECT_FALSE(s->root_hint.has_value());
+}
+
+TEST(Completion, HiddenRootIsGrownAndGivesARootHint) {
+  const Drawing d = hidden_tip();
+  const Result r = run(d, Vec2(420, 70));  // the head is on the right: the hidden end is the root
+  EXPECT_EQ(r.roots, 1);
+  EXPECT_EQ(r.tips, 0);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  expect_under(r, *s, {2});
+  ASSERT_TRUE(s->root_hint.has_value());
+  EXPECT_GT(s->root_hint->x(), 190);
+}
+
+TEST(Completion, BackgroundHasTheHairRemoved) {
+  const Drawing d = crossed_bands();
+  const Result r = run(d);
+  EXPECT_TRUE(r.head_center_estimated);
+  ASSERT_EQ(r.background.width(), 300);
+  ASSERT_EQ(r.background.height(), 170);
+  int hairy = 0, changed_outside = 0, hair_pixels = 0;
+  for (int y = 0; y < 170; ++y)
+    for (int x = 0; x < 300; ++x) {
+      const Rgba c = r.background.at(x, y);
+      if (r.regions.at(x, y) != 0) {
+        ++hair_pixels;
+        hairy += std::abs(c.r - kHair.r) + std::abs(c.g - kHair.g) < 40 ||
+                 std::abs(c.r - kFront.r) + std::abs(c.g - kFront.g) < 40;
+      } else {
+        changed_outside += !(c == d.image.at(x, y));
+      }
+    }
+  EXPECT_EQ(changed_outside, 0);
+  EXPECT_LT(hairy, hair_pixels / 20);
+}
+
+TEST(Completion, RegionsWithoutOccludersAndTinyRegions) {
+  Drawing d = blank(200, 120);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 120 && y > 30 && y < 60; }, kHair, 4);
+  d.regions.at(150, 100) = 9;  // a one-pixel region
+  d.image.at(150, 100) = kHair;
+  // A region wholly inside another (its outline is all occluded).
+  paint(
+      d, [](double x, double y) { return x > 130 && x < 190 && y > 10 && y < 80; }, kFront, 5);
+  for (int y = 40; y < 45; ++y)
+    for (int x = 150; x < 156; ++x) d.regions.at(x, y) = 6;
+  d.relations = {below(6, 5)};
+  const Result r = run(d, Vec2(100, 200));
+  ASSERT_EQ(r.strands.size(), 4u);
+  const CompletedStrand* alone = strand_with(r, 4);
+  ASSERT_NE(alone, nullptr);
+  EXPECT_EQ(alone->completed_pixels, 0);
+  EXPECT_GE(alone->outline.size(), 4u);
+  // Its texture is the drawing where the strand is, transparent elsewhere.
+  for (int y = 0; y < alone->mask.height(); ++y)
+    for (int x = 0; x < alone->mask.width(); ++x) {
+      const Rgba t = alone->texture.at(x, y);
+      if (alone->mask.at(x, y)) {
+        Rgba c = d.image.at(x + alone->origin.x(), y + alone->origin.y());
+        EXPECT_EQ(t, c);
+      } else {
+        EXPECT_EQ(t.a, 0);
+      }
+    }
+  EXPECT_NE(strand_with(r, 9), nullptr);
+  EXPECT_NE(strand_with(r, 6), nullptr);
+}
+
+TEST(Completion, OutlinePixelsGoToTheNearestRegion) {
+  Image img(9, 5, Rgba{250, 250, 250, 255});
+  LabelMap regions(9, 5);
+  for (int y = 0; y < 5; ++y) {
+    for (int x = 0; x < 3; ++x) regions.at(x, y) = 1;
+    for (int x = 3; x < 6; ++x) img.at(x, y) = {10, 10, 10, 255};  // a dark line, label 0
+    for (int x = 6; x < 8; ++x) regions.at(x, y) = 2;
+  }
+  const LabelMap out = assign_outline_pixels(img, regions, 4, 140);
+  for (int y = 0; y < 5; ++y) {
+    EXPECT_EQ(out.at(3, y), 1);
+    EXPECT_EQ(out.at(5, y), 2);
+    EXPECT_NE(out.at(4, y), 0);
+    EXPECT_EQ(out.at(8, y), 2 * 0 + 0) << "light pixels stay background";
+  }
+}
+
+TEST(Completion, BadInputThrows) {
+  const Drawing d = crossed_bands();
+  Input in;
+  EXPECT_THROW(complete_strands(in), Error);
+  in.image = &d.image;
+  EXPECT_THROW(complete_strands(in), Error);
+  LabelMap wrong(10, 10);
+  in.regions = &wrong;
+  EXPECT_THROW(complete_strands(in), Error);
+  in.regions = &d.regions;
+  in.relations = {below(1, 77)};
+  EXPECT_THROW(complete_strands(in), Error);
+  in.relations = {};
+  Options bad;
+  bad.min_join_coverage = 2;
+  std::string why;
+  EXPECT_FALSE(bad.is_valid(&why));
+  EXPECT_NE(why.find("min_join_coverage"), std::string::npos);
+  EXPECT_THROW(complete_strands(in, bad), Error);
+  in.head_center = Vec2(std::nan(""), 1);
+  EXPECT_THROW(complete_strands(in), Error);
+  EXPECT_THROW(assign_outline_pixels(d.image, wrong, 4, 140), Error);
+}
+
+}  // namespace
+}  // namespace hair25d::completion

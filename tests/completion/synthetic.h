@@ -1,0 +1,47 @@
+// Hand-built drawings for completion tests: flat-colour bands with black
+// outlines, occluded by other bands, on non-square canvases.
+#pragma once
+
+#include <functional>
+
+#include "hair25d/core/hair_model.h"
+#include "hair25d/core/image.h"
+
+namespace hair25d::completion::test {
+
+struct Drawing {
+  Image image;
+  LabelMap regions;
+  std::vector<RegionRelation> relations;
+};
+
+// Paints `inside(x, y)` pixels with `colour` and `label`, and a black outline
+// `line` pixels wide just inside its border (label 0 there, as annotated).
+inline void paint(Drawing& d, const std::function<bool(double, double)>& inside, Rgba colour,
+                  int label, int line = 2) {
+  const int w = d.image.width(), h = d.image.height();
+  auto in = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < w && y < h && inside(x + 0.5, y + 0.5);
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!in(x, y)) continue;
+      bool border = false;
+      for (int dy = -line; dy <= line && !border; ++dy)
+        for (int dx = -line; dx <= line; ++dx)
+          if (!in(x + dx, y + dy)) {
+            border = true;
+            break;
+          }
+      d.image.at(x, y) = border ? Rgba{20, 15, 10, 255} : colour;
+      d.regions.at(x, y) = border ? 0 : label;
+    }
+}
+
+inline Drawing blank(int w, int h) {
+  return {Image(w, h, Rgba{230, 240, 250, 255}), LabelMap(w, h, 0), {}};
+}
+
+inline RegionRelation below(int a, int b) { return {a, b, Relation::kBelow, 1.0, false, false}; }
+
+}  // namespace hair25d::completion::test
