@@ -196,7 +196,11 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       // walking away from the end the sides swap.
       const double alpha = r.at_start ? before : after;
       const double beta = r.at_start ? after : before;
-      if (!cusp[j]) out.boundaries[r.boundary].phi_j += junction_metric(alpha, beta);
+      if (cusp[j]) continue;
+      const double term = junction_metric(alpha, beta);
+      BoundaryReport& rep = out.boundaries[r.boundary];
+      rep.phi_j += term;
+      (r.at_start ? rep.phi_j_start : rep.phi_j_end) = term;
     }
   }
   if (!hair_junction)
@@ -261,6 +265,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
         cands.push_back({bi, bj, theta, same});
       }
     }
+    if (options.coupling == Coupling::kNone) cands.clear();
     if (options.coupling == Coupling::kSmoothestPair && !cands.empty()) {
       // Three boundaries at a junction pairwise share a region, so their three
       // couplings can never all be satisfied, and with measured (noisy)

@@ -26,7 +26,7 @@ enum class Coupling {
 struct Options {
   double junction_weight = 0.25;  // w in Eq. (1)
   // Cap of φ_ij = tan(|(θ mod π) − π/2|) in Eq. (2); θ near 0 or π would be infinite.
-  double coupling_cap = 4.0;
+  double coupling_cap = 0.5;
   Coupling coupling = Coupling::kSmoothestPair;
   double smooth_angle = 2.356194490192345;  // 3π/4: a smooth continuation, radians
   // Width of the drawn lines in pixels; <= 0 estimates it from the outlines
@@ -39,7 +39,7 @@ struct Options {
   double line_threshold_fraction = 0.4;  // of the typical boundary contrast, when automatic
   // Junction angles are measured on a line fitted to the boundary within this
   // arc length of the junction, in line widths (never under 3 pixels).
-  double fit_reach_widths = 4.0;
+  double fit_reach_widths = 6.0;
   // A pair of regions is "equal" when less than this share of their common
   // boundary length is occluding.
   double equal_fraction = 0.5;
@@ -64,6 +64,8 @@ struct BoundaryReport {
   double line_contrast = 0.0;    // median grey-level contrast of a dark line on it
   bool occluding = false;
   double phi_j = 0.0;            // Φ̂_J, left region above right when positive
+  double phi_j_start = 0.0;      // its term at the start junction (0 at a cusp)
+  double phi_j_end = 0.0;        // its term at the end junction
   double phi_r = 0.0;            // Φ_R / ‖L‖²
   double phi = 0.0;              // Eq. (1)
   int state = 0;                 // +1 left above, −1 right above, 0 no state
