@@ -1,0 +1,194 @@
+// layer_regions on small drawings painted here with exact answers, user
+// overrides, invariance to region numbering, and bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+#include "hair25d/core/error.h"
+#include "hair25d/layering/layering.h"
+#include "hair25d/layering/overlay.h"
+
+namespace hair25d::layering {
+namespace {
+
+struct Rect {
+  int x0, y0, x1, y1;  // inclusive pixel bounds
+  int region;          // its region id where visible
+  Rgba fill;
+};
+
+struct Scene {
+  Image image;
+  LabelMap regions;
+};
+
+// Paints rectangles back to front with a `line`-pixel black outline inside
+// each; region ids are those of the topmost rectangle, 0 on outlines and
+// outside every rectangle. `split_y` > 0 gives the part of region 2 below it
+// id 4 (a strand cut in two by the one painted over it).
+Scene paint(int w, int h, const std::vector<Rect>& rects, int line, int split_y) {
+  Scene s{Image(w, h, Rgba{230, 240, 250, 255}), LabelMap(w, h, 0)};
+  for (const Rect& r : rects) {
+    for (int y = std::max(0, r.y0); y <= std::min(h - 1, r.y1); ++y) {
+      for (int x = std::max(0, r.x0); x <= std::min(w - 1, r.x1); ++x) {
+        const bool edge = x - r.x0 < line || r.x1 - x < line || y - r.y0 < line || r.y1 - y < line;
+        s.image.at(x, y) = edge ? Rgba{20, 15, 15, 255} : r.fill;
+        s.regions.at(x, y) = edge ? 0 : (r.region == 2 && split_y > 0 && y > split_y ? 4 : r.region);
+      }
+    }
+  }
+  return s;
+}
+
+// Back hair (1), a vertical strand (2) over it, a horizontal strand (3) over
+// both that cuts the vertical one into 2 (top) and 4 (bottom). 180 × 130.
+Scene crossing() {
+  return paint(180, 130,
+               {{20, 15, 160, 120, 1, {200, 170, 120, 255}},
+                {70, 2, 100, 105, 2, {190, 150, 110, 255}},
+                {40, 60, 140, 80, 3, {210, 180, 130, 255}}},
+               3, 70);
+}
+
+Relation relation_of(const Result& r, int a, int b) {
+  for (const RegionRelation& x : r.relations) {
+    if (x.a == a && x.b == b) return x.relation;
+    if (x.a == b && x.b == a) return reversed(x.relation);
+  }
+  ADD_FAILURE() << "no relation between " << a << " and " << b;
+  return Relation::kEqual;
+}
+
+TEST(LayerRegions, CrossingStrands) {
+  const Scene s = crossing();
+  const Result r = layer_regions(s.image, s.regions);
+  EXPECT_EQ(relation_of(r, 1, 2), Relation::kBelow);
+  EXPECT_EQ(relation_of(r, 1, 3), Relation::kBelow);
+  EXPECT_EQ(relation_of(r, 1, 4), Relation::kBelow);
+  EXPECT_EQ(relation_of(r, 2, 3), Relation::kBelow);
+  EXPECT_EQ(relation_of(r, 4, 3), Relation::kBelow);
+  EXPECT_TRUE(r.overridden.empty());
+  EXPECT_EQ(r.depth.at(1), 0);
+  EXPECT_GT(r.depth.at(3), r.depth.at(2));
+  EXPECT_GT(r.depth.at(3), r.depth.at(4));
+  EXPECT_NEAR(r.line_width, 3.0, 1.0);
+  EXPECT_EQ(r.anchors.size(), r.relations.size());
+  EXPECT_FALSE(r.summary.empty());
+  // Every reported relation is between hair regions, smaller id first.
+  for (const RegionRelation& x : r.relations) {
+    EXPECT_GT(x.a, 0);
+    EXPECT_LT(x.a, x.b);
+  }
+}
+
+TEST(LayerRegions, BoundaryWithoutALineIsEqual) {
+  // Two tones of one strand meet without a drawn line: the same depth.
+  Scene s = crossing();
+  for (int y = 0; y < s.image.height(); ++y)
+    for (int x = 0; x < s.image.width(); ++x)
+      if (s.regions.at(x, y) == 1 && x > 120) {
+        s.regions.at(x, y) = 5;
+        s.image.at(x, y) = Rgba{170, 140, 100, 255};  // a darker cel tone
+      }
+  const Result r = layer_regions(s.image, s.regions);
+  EXPECT_EQ(relation_of(r, 1, 5), Relation::kEqual);
+  EXPECT_EQ(r.depth.at(1), r.depth.at(5));
+  EXPECT_EQ(relation_of(r, 3, 5), Relation::kAbove);
+}
+
+TEST(LayerRegions, UserOverrideIsKeptAndTheRestReSolved) {
+  const Scene s = crossing();
+  Options o;
+  RegionRelation fix;
+  fix.a = 3;
+  fix.b = 2;
+  fix.relation = Relation::kBelow;  // the user says 3 is under 2
+  o.fixed.push_back(fix);
+  const Result r = layer_regions(s.image, s.regions, o);
+  EXPECT_EQ(relation_of(r, 2, 3), Relation::kAbove);
+  EXPECT_GT(r.depth.at(2), r.depth.at(3));
+  bool marked = false;
+  for (const RegionRelation& x : r.relations)
+    if (x.a == 2 && x.b == 3) marked = x.user_fixed && !x.overridden;
+  EXPECT_TRUE(marked);
+  EXPECT_EQ(relation_of(r, 1, 3), Relation::kBelow);  // the rest still solved
+}
+
+TEST(LayerRegions, RenumberingRegionsGivesTheSameOrder) {
+  const Scene s = crossing();
+  const Result r = layer_regions(s.image, s.regions);
+  const std::map<int, int> perm = {{1, 9}, {2, 3}, {3, 1}, {4, 20}};
+  LabelMap moved = s.regions;
+  for (std::size_t i = 0; i < moved.size(); ++i)
+    if (moved.data()[i] != 0) moved.data()[i] = perm.at(moved.data()[i]);
+  const Result p = layer_regions(s.image, moved);
+  for (const auto& [from, to] : perm) EXPECT_EQ(r.depth.at(from), p.depth.at(to));
+  for (const RegionRelation& x : r.relations)
+    EXPECT_EQ(relation_of(p, perm.at(x.a), perm.at(x.b)), x.relation);
+}
+
+TEST(LayerRegions, OverlayHasTheImageSize) {
+  const Scene s = crossing();
+  const Result r = layer_regions(s.image, s.regions);
+  const Image o = render_overlay(s.image, r, {{2, 3}});
+  EXPECT_EQ(o.width(), s.image.width());
+  EXPECT_EQ(o.height(), s.image.height());
+  EXPECT_NE(o, s.image);
+  EXPECT_THROW(render_overlay(Image(5, 4), r), Error);
+}
+
+TEST(LayerRegions, RejectsASingleRegion) {
+  const Scene s = paint(60, 40, {{5, 5, 50, 30, 1, {200, 170, 120, 255}}}, 2, 0);
+  try {
+    layer_regions(s.image, s.regions);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("at least two"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LayerRegions, RejectsRegionsWithoutJunctions) {
+  // One region fills the image, another is an island in it: no junction.
+  LabelMap m(50, 30, 1);
+  for (int y = 10; y < 20; ++y)
+    for (int x = 20; x < 30; ++x) m.at(x, y) = 2;
+  try {
+    layer_regions(Image(50, 30, Rgba{255, 255, 255, 255}), m);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("junction"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LayerRegions, RejectsAMapOfTheWrongSize) {
+  const Scene s = crossing();
+  try {
+    layer_regions(s.image, LabelMap(s.image.width() + 1, s.image.height(), 1));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("same size"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(layer_regions(s.image, LabelMap()), Error);
+}
+
+TEST(LayerRegions, RejectsBadOptions) {
+  const Scene s = crossing();
+  Options o;
+  o.coupling_cap = -1;
+  EXPECT_THROW(layer_regions(s.image, s.regions, o), Error);
+  o = {};
+  o.equal_fraction = 2;
+  std::string why;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("equal_fraction"), std::string::npos);
+  o = {};
+  RegionRelation fix;
+  fix.a = 2;
+  fix.b = 77;  // not in the map
+  o.fixed.push_back(fix);
+  EXPECT_THROW(layer_regions(s.image, s.regions, o), Error);
+}
+
+}  // namespace
+}  // namespace hair25d::layering
