@@ -55,8 +55,20 @@ CurveResult extract_curves(const Image& image, const CurveOptions& options) {
     cv::Mat grey = detail::grey_image(image);
     detail::remove_dots(grey, options.speck_size, static_cast<float>(3.0 * options.high_threshold));
     const float low = static_cast<float>(options.low_threshold);
-    const detail::LineField field = detail::compute_line_field(
-        grey, options.scales, low, static_cast<float>(options.blob_weight));
+    detail::LineField field = detail::compute_line_field(grey, options.scales, low,
+                                                         static_cast<float>(options.blob_weight));
+    // Centre lines run on ink only: large scales also answer a few pixels
+    // past a line's end and beside its round cap, where the paper is blank.
+    {
+      const double smax = *std::max_element(options.scales.begin(), options.scales.end());
+      const int k = 2 * static_cast<int>(std::ceil(2.5 * smax)) + 1;
+      cv::Mat closed;
+      cv::morphologyEx(grey, closed, cv::MORPH_CLOSE,
+                       cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(k, k)),
+                       cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
+      const cv::Mat hat = closed - grey;
+      field.response.setTo(0.0f, hat < low);
+    }
     const cv::Mat ridge = detail::suppress_non_maxima(field, low);
     result.ridge_pixels = cv::countNonZero(ridge);
     if (result.ridge_pixels == 0) return result;
@@ -78,6 +90,7 @@ CurveResult extract_curves(const Image& image, const CurveOptions& options) {
     g.min_curve_length = options.min_curve_length;
     g.spur_length = options.spur_factor * result.line_width;
     g.gap_length = std::max(2.0, options.gap_factor * result.line_width);
+    g.border_gap_length = std::max(2.0, result.line_width);
     result.curves = detail::link_curves(traced, image.width(), image.height(), g);
 
     // Line pixels: the traced centre lines widened to the line width.

@@ -171,6 +171,7 @@ std::vector<Curve> link_curves(const TraceResult& traced, int width, int height,
     for (double t = 1.0; t <= gap; t += 0.5) {
       const Vec2 p = f.pos + t * f.dir;
       if (p.x() < 0 || p.y() < 0 || p.x() >= width || p.y() >= height) {
+        if (t > options.border_gap_length + 1.0) break;
         border_point[f.curve][f.end] =
             Vec2(std::clamp(p.x(), 0.0, double(width)), std::clamp(p.y(), 0.0, double(height)));
         break;
