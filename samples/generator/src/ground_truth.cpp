@@ -149,6 +149,61 @@ std::vector<Polyline> inner_strokes(const std::vector<int>& comp, int width, int
   return chains;
 }
 
+// Short strokes on the paper around the hair, a fixed distance from it, one per
+// sector around the head: they fence the hair in, which is where a user puts
+// background strokes and where a segmentation needs them.
+std::vector<Polyline> ring_strokes(const std::vector<int>& comp, int width, int height, int id,
+                                   const Vec2& head, double line_width) {
+  cv::Mat mask(height, width, CV_8U);
+  for (int y = 0; y < height; ++y) {
+    const int* row = comp.data() + static_cast<std::size_t>(y) * width;
+    auto* m = mask.ptr<uchar>(y);
+    for (int x = 0; x < width; ++x) m[x] = row[x] == id ? 255 : 0;
+  }
+  cv::Mat dist;
+  cv::distanceTransform(mask, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  // The image border is not an edge of the paper: measure from drawn shapes only.
+  const double ring = std::clamp(4.0 * line_width, 8.0, 24.0);
+  constexpr int kSectors = 8;
+  constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+  std::vector<Vec2> best(kSectors, Vec2(-1, -1));
+  std::vector<double> best_err(kSectors, 1e300);
+  for (int y = 0; y < height; ++y) {
+    const auto* d = dist.ptr<float>(y);
+    for (int x = 0; x < width; ++x) {
+      if (std::abs(d[x] - ring) > 0.75) continue;
+      const int border = std::min({x, y, width - 1 - x, height - 1 - y});
+      if (border < ring) continue;  // measured from the frame, not from a shape
+      const double a = std::atan2(y - head.y(), x - head.x()) + kTwoPi / 2;  // 0..2π
+      const int sector = std::min(kSectors - 1, static_cast<int>(a / kTwoPi * kSectors));
+      const double mid = (sector + 0.5) * kTwoPi / kSectors;
+      const double err = std::abs(a - mid);
+      if (err < best_err[sector]) {
+        best_err[sector] = err;
+        best[sector] = Vec2(x, y);
+      }
+    }
+  }
+  std::vector<Polyline> out;
+  for (const Vec2& p : best) {
+    if (p.x() < 0) continue;
+    const Vec2 radial = (p - head).normalized();
+    const Vec2 tangent(-radial.y(), radial.x());
+    Polyline line{p};
+    const Vec2 q = p + tangent * std::min(12.0, ring);
+    bool ok = true;
+    const int steps = 24;
+    for (int k = 0; k <= steps && ok; ++k) {
+      const Vec2 r = p + (q - p) * (static_cast<double>(k) / steps);
+      const int x = static_cast<int>(std::lround(r.x())), y = static_cast<int>(std::lround(r.y()));
+      ok = x >= 0 && y >= 0 && x < width && y < height && dist.at<float>(y, x) >= kMinDepth;
+    }
+    if (ok) line.emplace_back(std::round(q.x()), std::round(q.y()));
+    out.push_back(std::move(line));
+  }
+  return out;
+}
+
 }  // namespace
 
 GroundTruth make_ground_truth(const Scene& scene, const cv::Mat& owner) {
@@ -184,6 +239,17 @@ GroundTruth make_ground_truth(const Scene& scene, const cv::Mat& owner) {
   }
   for (std::size_t i : others) {
     for (Polyline& l : inner_strokes(comp, w, static_cast<int>(i), comps[i], kBackgroundStrokes)) {
+      gt.strokes.strokes.push_back({0, kStrokeWidth, std::move(l)});
+    }
+  }
+  int paper = -1;  // the largest piece of bare paper
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    if (comps[i].owner == 0 && (paper < 0 || comps[i].area > comps[paper].area)) {
+      paper = static_cast<int>(i);
+    }
+  }
+  if (paper >= 0) {
+    for (Polyline& l : ring_strokes(comp, w, h, paper, scene.head_center, scene.line_width)) {
       gt.strokes.strokes.push_back({0, kStrokeWidth, std::move(l)});
     }
   }
