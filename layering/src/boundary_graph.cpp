@@ -31,20 +31,28 @@ class CrackGrid {
   // Whether the crack edge leaving corner (x, y) in direction d exists.
   static bool has_edge(const std::array<int, 4>& q, int d) {
     switch (d) {
-      case 0: return q[1] != q[3];  // right: between top-right and bottom-right
-      case 1: return q[2] != q[3];  // down: between bottom-left and bottom-right
-      case 2: return q[0] != q[2];  // left: between top-left and bottom-left
-      default: return q[0] != q[1];  // up: between top-left and top-right
+      case 0:
+        return q[1] != q[3];  // right: between top-right and bottom-right
+      case 1:
+        return q[2] != q[3];  // down: between bottom-left and bottom-right
+      case 2:
+        return q[0] != q[2];  // left: between top-left and bottom-left
+      default:
+        return q[0] != q[1];  // up: between top-left and top-right
     }
   }
   // Undirected index of the crack edge leaving corner (x, y) in direction d.
   std::size_t edge_index(int x, int y, int d) const {
     const std::size_t horizontal = static_cast<std::size_t>(h_ + 1) * w_;
     switch (d) {
-      case 0: return static_cast<std::size_t>(y) * w_ + x;
-      case 2: return static_cast<std::size_t>(y) * w_ + (x - 1);
-      case 1: return horizontal + static_cast<std::size_t>(y) * (w_ + 1) + x;
-      default: return horizontal + static_cast<std::size_t>(y - 1) * (w_ + 1) + x;
+      case 0:
+        return static_cast<std::size_t>(y) * w_ + x;
+      case 2:
+        return static_cast<std::size_t>(y) * w_ + (x - 1);
+      case 1:
+        return horizontal + static_cast<std::size_t>(y) * (w_ + 1) + x;
+      default:
+        return horizontal + static_cast<std::size_t>(y - 1) * (w_ + 1) + x;
     }
   }
   std::size_t edge_count() const {
@@ -54,10 +62,22 @@ class CrackGrid {
   // (screen orientation: y grows downwards).
   void sides(int x, int y, int d, int* left, int* right) const {
     switch (d) {
-      case 0: *left = label(x, y - 1); *right = label(x, y); break;
-      case 1: *left = label(x, y); *right = label(x - 1, y); break;
-      case 2: *left = label(x - 1, y); *right = label(x - 1, y - 1); break;
-      default: *left = label(x - 1, y - 1); *right = label(x, y - 1); break;
+      case 0:
+        *left = label(x, y - 1);
+        *right = label(x, y);
+        break;
+      case 1:
+        *left = label(x, y);
+        *right = label(x - 1, y);
+        break;
+      case 2:
+        *left = label(x - 1, y);
+        *right = label(x - 1, y - 1);
+        break;
+      default:
+        *left = label(x - 1, y - 1);
+        *right = label(x, y - 1);
+        break;
     }
   }
   int width() const { return w_; }
@@ -176,8 +196,7 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   // What is left are closed loops with no junction (a region inside another).
   for (int y = 0; y <= h; ++y) {
     for (int x = 0; x < w; ++x) {
-      if (!CrackGrid::has_edge(grid.around(x, y), 0) || visited[grid.edge_index(x, y, 0)])
-        continue;
+      if (!CrackGrid::has_edge(grid.around(x, y), 0) || visited[grid.edge_index(x, y, 0)]) continue;
       trace(x, y, 0);
     }
   }

@@ -43,8 +43,8 @@ DepthOrder order_regions(const std::vector<int>& regions,
   auto at = [&](int id, const char* role) {
     auto it = index.find(id);
     if (it == index.end())
-      throw Error(std::string("layering::order_regions: relation names region ") + role +
-                  " = " + std::to_string(id) + ", which is not in the list of regions");
+      throw Error(std::string("layering::order_regions: relation names region ") + role + " = " +
+                  std::to_string(id) + ", which is not in the list of regions");
     return it->second;
   };
   for (const RegionRelation& r : relations) {
@@ -90,8 +90,10 @@ DepthOrder order_regions(const std::vector<int>& regions,
     // follows from stronger relations, contradicts the order.
     if (lower == upper || reaches(up, upper, lower, mark, stamp++)) {
       r.overridden = true;
-      if (lower != upper) r.relation = reversed(r.relation);
-      else r.relation = Relation::kEqual;
+      if (lower != upper)
+        r.relation = reversed(r.relation);
+      else
+        r.relation = Relation::kEqual;
       out.overridden.emplace_back(r.a, r.b);
       continue;
     }

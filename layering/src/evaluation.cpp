@@ -10,8 +10,10 @@ CaseScore score_relations(const AnnotatedCase& annotated,
                           const std::vector<RegionRelation>& relations) {
   std::map<std::pair<int, int>, Relation> predicted;  // keyed (min, max), of min to max
   for (const RegionRelation& r : relations) {
-    if (r.a < r.b) predicted[{r.a, r.b}] = r.relation;
-    else predicted[{r.b, r.a}] = reversed(r.relation);
+    if (r.a < r.b)
+      predicted[{r.a, r.b}] = r.relation;
+    else
+      predicted[{r.b, r.a}] = reversed(r.relation);
   }
   CaseScore score;
   score.name = annotated.name;

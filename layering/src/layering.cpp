@@ -111,9 +111,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   } else {
     out.labels = regions;
   }
-  out.line_width = options.line_width > 0   ? options.line_width
-                   : fill.line_width > 0    ? fill.line_width
-                                            : detail::LineResponse::estimate_line_width(image);
+  out.line_width = options.line_width > 0 ? options.line_width
+                   : fill.line_width > 0  ? fill.line_width
+                                          : detail::LineResponse::estimate_line_width(image);
   out.graph = build_boundary_graph(out.labels);
   const BoundaryGraph& graph = out.graph;
   const auto& bs = graph.boundaries;
@@ -161,8 +161,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     const Boundary& b = bs[i];
     BoundaryReport& rep = out.boundaries[i];
     if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
-    rep.occluding = rep.line_contrast >= out.line_threshold &&
-                    !fixed_equal.contains(key(b.left, b.right));
+    rep.occluding =
+        rep.line_contrast >= out.line_threshold && !fixed_equal.contains(key(b.left, b.right));
   }
 
   // --- Junction angles, Φ_J, Φ_R, Φ (§4.2–4.4). ---
@@ -204,8 +204,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     }
   }
   if (!hair_junction)
-    throw Error("layering: no two hair regions meet at a junction (" +
-                std::to_string(ids.size()) + " regions, " + std::to_string(nj) +
+    throw Error("layering: no two hair regions meet at a junction (" + std::to_string(ids.size()) +
+                " regions, " + std::to_string(nj) +
                 " junctions); layering needs regions that meet where three or more do");
   for (int i = 0; i < nb; ++i) {
     const Boundary& b = bs[i];
@@ -246,7 +246,11 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   }
   for (int j = 0; j < nj; ++j) {
     const auto& rs = rays[j];
-    struct Candidate { int bi, bj; double theta; bool same; };
+    struct Candidate {
+      int bi, bj;
+      double theta;
+      bool same;
+    };
     std::vector<Candidate> cands;
     for (std::size_t p = 0; p < rs.size(); ++p) {
       for (std::size_t q = p + 1; q < rs.size(); ++q) {
@@ -347,8 +351,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   for (const RegionRelation& f : options.fixed) {
     const auto k = key(f.a, f.b);
     const Relation rel = f.a < f.b ? f.relation : reversed(f.relation);
-    auto it = std::find_if(out.relations.begin(), out.relations.end(),
-                           [&](const RegionRelation& r) { return r.a == k.first && r.b == k.second; });
+    auto it =
+        std::find_if(out.relations.begin(), out.relations.end(),
+                     [&](const RegionRelation& r) { return r.a == k.first && r.b == k.second; });
     if (it == out.relations.end()) {
       out.relations.push_back({k.first, k.second, rel, 0.0, true, false});
       out.anchors.push_back({});

@@ -82,7 +82,7 @@ double LineResponse::boundary_contrast(const Polyline& curve, double skip, const
   const double total = polyline_length(curve);
   // Near short boundaries keep at least the middle third.
   skip = std::min(skip, total / 3.0);
-  const double half = 0.5 * line_width_ + 1.0;  // search for the line centre
+  const double half = 0.5 * line_width_ + 1.0;   // search for the line centre
   const double reach = 3.0 * line_width_ + 2.0;  // search for paper
   const int span = std::max(2, static_cast<int>(std::lround(line_width_)));
   auto label_at = [&](const Vec2& q) {

@@ -16,8 +16,8 @@ void check(const StateProblem& p) {
   const int n = static_cast<int>(p.unary.size());
   for (int i = 0; i < n; ++i)
     if (!std::isfinite(p.unary[i]))
-      throw Error("layering::solve_states: unary[" + std::to_string(i) + "] = " +
-                  std::to_string(p.unary[i]) + "; must be finite");
+      throw Error("layering::solve_states: unary[" + std::to_string(i) +
+                  "] = " + std::to_string(p.unary[i]) + "; must be finite");
   for (std::size_t k = 0; k < p.couplings.size(); ++k) {
     const StateCoupling& c = p.couplings[k];
     if (c.i < 0 || c.j < 0 || c.i >= n || c.j >= n || c.i == c.j)
@@ -25,8 +25,8 @@ void check(const StateProblem& p) {
                   std::to_string(c.i) + " and " + std::to_string(c.j) +
                   "; must be two different states in [0, " + std::to_string(n) + ")");
     if (!(c.weight >= 0.0) || !std::isfinite(c.weight))
-      throw Error("layering::solve_states: coupling " + std::to_string(k) + " weight = " +
-                  std::to_string(c.weight) + "; must be finite and >= 0");
+      throw Error("layering::solve_states: coupling " + std::to_string(k) +
+                  " weight = " + std::to_string(c.weight) + "; must be finite and >= 0");
   }
 }
 

@@ -85,8 +85,9 @@ Growth grow(const LabelMap& labels, int limit) {
 
 bool OutlineFillOptions::is_valid(std::string* error) const {
   if (!std::isfinite(max_distance)) {
-    if (error) *error = "OutlineFillOptions::max_distance = " + std::to_string(max_distance) +
-                        "; must be finite";
+    if (error)
+      *error =
+          "OutlineFillOptions::max_distance = " + std::to_string(max_distance) + "; must be finite";
     return false;
   }
   return true;
@@ -99,8 +100,8 @@ OutlineFill fill_outlines(const LabelMap& labels, const OutlineFillOptions& opti
   const int w = labels.width();
   // Lines wider than this are not outlines but background gaps; growing no
   // farther keeps the cost to a band around the regions.
-  const int limit = static_cast<int>(std::ceil(
-      (options.max_distance > 0 ? options.max_distance : kMaxReach) * kUnit));
+  const int limit = static_cast<int>(
+      std::ceil((options.max_distance > 0 ? options.max_distance : kMaxReach) * kUnit));
   const Growth g = grow(labels, limit);
 
   // Where fronts of two regions meet inside label-0 pixels, each side has come
@@ -111,8 +112,7 @@ OutlineFill fill_outlines(const LabelMap& labels, const OutlineFillOptions& opti
       const int i = y * w + x;
       if (labels.data()[i] != 0 || g.owner[i] == 0) continue;
       for (int j : {x + 1 < w ? i + 1 : -1, y + 1 < labels.height() ? i + w : -1}) {
-        if (j < 0 || labels.data()[j] != 0 || g.owner[j] == 0 || g.owner[j] == g.owner[i])
-          continue;
+        if (j < 0 || labels.data()[j] != 0 || g.owner[j] == 0 || g.owner[j] == g.owner[i]) continue;
         meet.push_back(std::max(g.dist[i], g.dist[j]));
       }
     }

@@ -71,7 +71,7 @@ Image render_overlay(const Image& image, const Result& result,
       const RegionRelation& r = result.relations[k];
       const RelationAnchor& an = result.anchors[k];
       const bool is_bad = bad.contains({std::min(r.a, r.b), std::max(r.a, r.b)});
-      const cv::Scalar colour = r.overridden ? cv::Scalar(200, 0, 200)
+      const cv::Scalar colour = r.overridden   ? cv::Scalar(200, 0, 200)
                                 : r.user_fixed ? cv::Scalar(200, 120, 0)
                                                : cv::Scalar(20, 20, 20);
       if (r.relation == Relation::kEqual) {
@@ -85,11 +85,12 @@ Image render_overlay(const Image& image, const Result& result,
         // Occludee → occluder: from b's side into a's when a is above.
         const Vec2 dir = r.relation == Relation::kAbove ? Vec2(-an.normal) : an.normal;
         cv::arrowedLine(canvas, to_cv(an.point - 0.6 * size * dir),
-                        to_cv(an.point + 0.6 * size * dir), colour, std::max(2, thick),
-                        cv::LINE_AA, 0, 0.4);
+                        to_cv(an.point + 0.6 * size * dir), colour, std::max(2, thick), cv::LINE_AA,
+                        0, 0.4);
       }
-      if (is_bad) cv::circle(canvas, to_cv(an.point), static_cast<int>(size), cv::Scalar(0, 0, 255),
-                             std::max(2, thick), cv::LINE_AA);
+      if (is_bad)
+        cv::circle(canvas, to_cv(an.point), static_cast<int>(size), cv::Scalar(0, 0, 255),
+                   std::max(2, thick), cv::LINE_AA);
       cv::putText(canvas, std::to_string(r.a) + "/" + std::to_string(r.b),
                   to_cv(an.point + Vec2(0.7 * size, -0.3 * size)), cv::FONT_HERSHEY_PLAIN,
                   std::max(0.8, size / 20.0), cv::Scalar(90, 30, 90), 1, cv::LINE_AA);

@@ -71,7 +71,7 @@ TEST(BoundaryGraph, IslandIsAClosedLoopWithoutJunctions) {
   ASSERT_NE(loop, nullptr);
   EXPECT_TRUE(loop->closed());
   EXPECT_DOUBLE_EQ(loop->length(), 10.0);  // 2 × (3 + 2)
-  EXPECT_TRUE(g.junctions.empty());  // the border loop meets no third label either
+  EXPECT_TRUE(g.junctions.empty());        // the border loop meets no third label either
 }
 
 TEST(BoundaryGraph, SaddleCornerIsNotAJunction) {

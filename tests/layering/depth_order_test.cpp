@@ -41,9 +41,9 @@ TEST(OrderRegions, ChainGivesIncreasingDepth) {
 
 TEST(OrderRegions, CycleDropsItsWeakestRelation) {
   // 1 < 2 < 3 < 1, the last one weakest.
-  const DepthOrder o = order_regions({1, 2, 3}, {rel(1, 2, Relation::kBelow, 3.0),
-                                                 rel(2, 3, Relation::kBelow, 2.0),
-                                                 rel(3, 1, Relation::kBelow, -0.5)});
+  const DepthOrder o =
+      order_regions({1, 2, 3}, {rel(1, 2, Relation::kBelow, 3.0), rel(2, 3, Relation::kBelow, 2.0),
+                                rel(3, 1, Relation::kBelow, -0.5)});
   ASSERT_EQ(o.overridden.size(), 1u);
   EXPECT_EQ(o.overridden[0], std::make_pair(3, 1));
   EXPECT_TRUE(o.relations[2].overridden);

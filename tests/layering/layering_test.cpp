@@ -34,7 +34,8 @@ Scene paint(int w, int h, const std::vector<Rect>& rects, int line, int split_y)
       for (int x = std::max(0, r.x0); x <= std::min(w - 1, r.x1); ++x) {
         const bool edge = x - r.x0 < line || r.x1 - x < line || y - r.y0 < line || r.y1 - y < line;
         s.image.at(x, y) = edge ? Rgba{20, 15, 15, 255} : r.fill;
-        s.regions.at(x, y) = edge ? 0 : (r.region == 2 && split_y > 0 && y > split_y ? 4 : r.region);
+        s.regions.at(x, y) =
+            edge ? 0 : (r.region == 2 && split_y > 0 && y > split_y ? 4 : r.region);
       }
     }
   }

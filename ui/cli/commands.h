@@ -14,5 +14,6 @@ struct CommonOptions {
 };
 
 void add_version_command(CLI::App& app, const CommonOptions& common);
+void add_eval_layering_command(CLI::App& app, const CommonOptions& common);
 
 }  // namespace hair25d::cli

@@ -27,8 +27,8 @@ struct Junction {
 struct Boundary {
   int left = 0;
   int right = 0;
-  int start = -1;  // junction id at points.front(), -1 for a closed loop
-  int end = -1;    // junction id at points.back(), -1 for a closed loop
+  int start = -1;   // junction id at points.front(), -1 for a closed loop
+  int end = -1;     // junction id at points.back(), -1 for a closed loop
   Polyline points;  // pixel corners; a closed loop does not repeat its first point
   bool closed() const { return start < 0; }
   double length() const;  // in pixels (crack edges are 1 long)
@@ -57,9 +57,9 @@ struct OutlineFillOptions {
 };
 
 struct OutlineFill {
-  LabelMap labels;         // the label map with outline pixels given away
-  double line_width = 0;   // estimated width of the outlines, pixels (0 if none)
-  double radius = 0;       // the growth radius used, pixels
+  LabelMap labels;        // the label map with outline pixels given away
+  double line_width = 0;  // estimated width of the outlines, pixels (0 if none)
+  double radius = 0;      // the growth radius used, pixels
 };
 
 // Gives label-0 outline pixels between regions to the regions they separate:

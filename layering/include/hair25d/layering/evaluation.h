@@ -16,8 +16,8 @@ namespace hair25d::layering {
 struct PairOutcome {
   int a = 0;
   int b = 0;
-  Relation truth = Relation::kEqual;    // of a to b, annotated
-  std::optional<Relation> predicted;    // of a to b; none: not seen as neighbours
+  Relation truth = Relation::kEqual;  // of a to b, annotated
+  std::optional<Relation> predicted;  // of a to b; none: not seen as neighbours
   bool correct = false;
 };
 

@@ -59,16 +59,16 @@ struct Options {
 
 // What was measured on one boundary (diagnostics and overlays).
 struct BoundaryReport {
-  int left = 0, right = 0;       // labels, left/right walking start → end
-  double length = 0.0;           // pixels
-  double line_contrast = 0.0;    // median grey-level contrast of a dark line on it
+  int left = 0, right = 0;     // labels, left/right walking start → end
+  double length = 0.0;         // pixels
+  double line_contrast = 0.0;  // median grey-level contrast of a dark line on it
   bool occluding = false;
-  double phi_j = 0.0;            // Φ̂_J, left region above right when positive
-  double phi_j_start = 0.0;      // its term at the start junction (0 at a cusp)
-  double phi_j_end = 0.0;        // its term at the end junction
-  double phi_r = 0.0;            // Φ_R / ‖L‖²
-  double phi = 0.0;              // Eq. (1)
-  int state = 0;                 // +1 left above, −1 right above, 0 no state
+  double phi_j = 0.0;        // Φ̂_J, left region above right when positive
+  double phi_j_start = 0.0;  // its term at the start junction (0 at a cusp)
+  double phi_j_end = 0.0;    // its term at the end junction
+  double phi_r = 0.0;        // Φ_R / ‖L‖²
+  double phi = 0.0;          // Eq. (1)
+  int state = 0;             // +1 left above, −1 right above, 0 no state
 };
 
 // Where the relation of a pair is drawn: a point on their longest common
@@ -82,18 +82,18 @@ struct Result {
   // One per pair of neighbouring hair regions (a < b), plus fixed pairs;
   // relations contradicting the order are flipped and marked overridden.
   std::vector<RegionRelation> relations;
-  std::vector<RelationAnchor> anchors;  // parallel to `relations`
-  std::map<int, int> depth;             // region id → depth, 0 = back-most
+  std::vector<RelationAnchor> anchors;          // parallel to `relations`
+  std::map<int, int> depth;                     // region id → depth, 0 = back-most
   std::vector<std::pair<int, int>> overridden;  // pairs dropped to break cycles
   // Diagnostics.
-  BoundaryGraph graph;                  // on `labels`
+  BoundaryGraph graph;                     // on `labels`
   std::vector<BoundaryReport> boundaries;  // parallel to graph.boundaries
-  LabelMap labels;                      // the regions after outline filling
-  double line_width = 0.0;              // used, pixels
-  double line_threshold = 0.0;          // used, grey levels
-  int states = 0;                       // boundary states in Eq. (2)
-  int dropped_couplings = 0;            // frustrated couplings left out (0: exact)
-  std::string summary;                  // one line: what was solved and how
+  LabelMap labels;                         // the regions after outline filling
+  double line_width = 0.0;                 // used, pixels
+  double line_threshold = 0.0;             // used, grey levels
+  int states = 0;                          // boundary states in Eq. (2)
+  int dropped_couplings = 0;               // frustrated couplings left out (0: exact)
+  std::string summary;                     // one line: what was solved and how
 };
 
 // Layers the hair regions of `regions` (non-zero labels; 0 = background and

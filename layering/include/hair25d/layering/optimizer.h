@@ -24,7 +24,7 @@ struct StateProblem {
 };
 
 struct StateSolution {
-  std::vector<int> x;  // ±1 per state
+  std::vector<int> x;   // ±1 per state
   double energy = 0.0;  // of the whole problem, dropped couplings included
   // Couplings that contradict the others around a cycle (a frustrated cycle
   // cannot be made submodular by re-orienting states). The weakest of each

@@ -1,0 +1,47 @@
+// hair25d eval-layering CASES_DIR [--json REPORT.json] [--from-strokes] [--overlays DIR]:
+// layering accuracy over annotated cases, printed like the paper's Table 1.
+#include <cstdio>
+
+#include "commands.h"
+#include "hair25d/core/atomic_file.h"
+#include "hair25d/pipeline/layering_stage.h"
+
+namespace hair25d::cli {
+namespace {
+
+struct EvalLayeringArgs {
+  std::string cases_dir;
+  std::string json_path;
+  std::string overlays_dir;
+  bool from_strokes = false;
+};
+
+}  // namespace
+
+void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
+  auto args = std::make_shared<EvalLayeringArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "eval-layering",
+      "Layering accuracy over annotated cases (FORMATS.md): one row per case and the total");
+  cmd->add_option("CASES_DIR", args->cases_dir, "Folder whose sub-folders hold layering.json")
+      ->required();
+  cmd->add_option("--json", args->json_path, "Also write the report as JSON to this file");
+  cmd->add_option("--overlays", args->overlays_dir,
+                  "Write an overlay per case here: arrows occludee -> occluder, '=' for equal, "
+                  "wrong pairs ringed in red");
+  cmd->add_flag("--from-strokes", args->from_strokes,
+                "Layer regions segmented from each case's strokes.json instead of regions.png");
+  cmd->callback([args, &common] {
+    pipeline::LayeringEvalOptions options;
+    options.from_strokes = args->from_strokes;
+    options.overlays_dir = args->overlays_dir;
+    TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
+    const pipeline::LayeringEvalReport report =
+        pipeline::evaluate_layering(args->cases_dir, options, &progress);
+    if (!args->json_path.empty())
+      write_text_atomically(args->json_path, pipeline::layering_report_json(report));
+    std::fputs(pipeline::format_layering_table(report).c_str(), stdout);
+  });
+}
+
+}  // namespace hair25d::cli
