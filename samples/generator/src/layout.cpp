@@ -89,6 +89,9 @@ Head make_head(const Options& options, Rng& rng) {
   head.face_centre = head.centre + Vec2(r * rng.uniform(-0.04, 0.04), r * rng.uniform(0.2, 0.3));
   head.face_radii = {r * rng.uniform(0.72, 0.85), r * rng.uniform(0.88, 1.0)};
   head.face_angle = rng.uniform(-0.08, 0.08);
+  // Few strands are drawn as broad locks, many as thinner ones.
+  head.strand_scale = std::clamp(
+      rng.uniform(0.85, 1.35) / std::sqrt(std::max(1.0, options.strand_count / 16.0)), 0.55, 1.35);
   return head;
 }
 
@@ -198,6 +201,20 @@ Shape make_body(const Head& head, const Palette& pal, int image_height, Rng& rng
   return s;
 }
 
+Shape make_tie(const Head& head, const Palette& pal, int side, Rng& rng) {
+  const double r = head.radius;
+  Shape s;
+  s.hair = false;
+  s.name = "tie";
+  s.colour = pal.clothes;
+  // On the edge of the back hair, where the tail comes out from behind it.
+  const double a = rng.uniform(0.35, 0.75);
+  const Vec2 c = head.centre + r * rng.uniform(1.05, 1.2) * Vec2(side * std::cos(a), -std::sin(a));
+  s.outline = ellipse_polygon(c, Vec2(r * rng.uniform(0.1, 0.17), r * rng.uniform(0.12, 0.2)),
+                              rng.uniform(-0.6, 0.6), 48);
+  return s;
+}
+
 Shape make_strand(StrandKind kind, const Head& head, const Palette& pal, const Options& options,
                   int side, double slot, Rng& rng) {
   const double r = head.radius, cx = head.centre.x(), cy = head.centre.y();
@@ -262,6 +279,13 @@ Shape make_strand(StrandKind kind, const Head& head, const Palette& pal, const O
   spec.root_ratio = rng.uniform(0.5, 1.0);
   spec.peak_at = rng.uniform(0.1, 0.4);
   spec.tip_ratio = rng.chance(0.7) ? 0.0 : rng.uniform(0.25, 0.5);
+  spec.max_width *= head.strand_scale;
+  if (kind != StrandKind::kBang && kind != StrandKind::kUnderCap && rng.chance(0.35)) {
+    // Wavy locks; amplitude kept below the strand's curvature limit.
+    spec.wave_amplitude = r * rng.uniform(0.04, kind == StrandKind::kTail ? 0.12 : 0.09);
+    spec.wave_cycles = rng.uniform(1.2, 2.8);
+    spec.wave_phase = rng.uniform(0.0, 2.0 * kPi);
+  }
 
   StrandGeometry g = sample_strand(spec);
   s.outline = strand_outline(g);
@@ -273,7 +297,7 @@ Shape make_strand(StrandKind kind, const Head& head, const Palette& pal, const O
                           rng.uniform(0.6, 0.95), rng.uniform(0.25, 0.45));
   }
   // Forks only where both halves stay wide enough to be regions of their own.
-  if (width >= 7.0 * options.line_width && rng.chance(0.2)) {
+  if (spec.max_width >= 7.0 * options.line_width && rng.chance(0.2)) {
     s.inner_lines.push_back(fork_line(g, rng.chance(0.5) ? 1 : -1, rng.uniform(0.4, 0.65)));
   }
   s.geometry = std::move(g);

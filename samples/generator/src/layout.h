@@ -15,6 +15,7 @@ struct Head {
   Vec2 face_centre;  // skin ellipse
   Vec2 face_radii;
   double face_angle;
+  double strand_scale;  // multiplies strand widths
 };
 
 struct Palette {
@@ -33,6 +34,8 @@ Shape make_back_mass(const Head& head, const Palette& pal, int image_height, Rng
 Shape make_cap(const Head& head, const Palette& pal, Rng& rng);
 Shape make_face(const Head& head, const Palette& pal, Rng& rng);
 Shape make_body(const Head& head, const Palette& pal, int image_height, Rng& rng);
+// A hair tie over the root of a tail on `side` (-1 left, 1 right).
+Shape make_tie(const Head& head, const Palette& pal, int side, Rng& rng);
 
 // Kinds of tapered strand; they differ in where the root sits, where the strand
 // goes and how long and wide it is.

@@ -22,6 +22,33 @@ int share(int total, double fraction) {
   return std::clamp(static_cast<int>(std::lround(total * fraction)), 0, total);
 }
 
+// Tilts the whole head about its centre: every polygon and line of every shape.
+void rotate_scene(Scene& scene, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  const Vec2 o = scene.head_center;
+  auto turn = [&](Vec2& p) {
+    const Vec2 d = p - o;
+    p = o + Vec2(c * d.x() - s * d.y(), s * d.x() + c * d.y());
+  };
+  auto turn_all = [&](Polyline& line) {
+    for (Vec2& p : line) turn(p);
+  };
+  for (Shape& shape : scene.shapes) {
+    turn_all(shape.outline);
+    turn_all(shape.band);
+    for (Polyline& l : shape.inner_lines) turn_all(l);
+    for (FilledEllipse& e : shape.decorations) {
+      turn(e.centre);
+      e.angle += angle;
+    }
+    if (shape.geometry) {
+      turn_all(shape.geometry->centre);
+      turn_all(shape.geometry->left);
+      turn_all(shape.geometry->right);
+    }
+  }
+}
+
 }  // namespace
 
 Scene make_scene(const Options& options, Rng& rng) {
@@ -61,6 +88,9 @@ Scene make_scene(const Options& options, Rng& rng) {
     }
   }
   shapes.push_back(make_back_mass(head, pal, options.height, rng));
+  if (tails_per_side > 0 && rng.chance(0.7)) {
+    for (int side : {-1, 1}) shapes.push_back(make_tie(head, pal, side, rng));
+  }
   if (body) shapes.push_back(make_body(head, pal, options.height, rng));
   for (int i = 0; i < behind; ++i) {
     shapes.push_back(make_strand(StrandKind::kBehindFace, head, pal, options,
@@ -93,6 +123,7 @@ Scene make_scene(const Options& options, Rng& rng) {
   }
   scene.strand_count = strand;
   scene.shapes = std::move(shapes);
+  if (rng.chance(0.6)) rotate_scene(scene, rng.uniform(-0.14, 0.14));
   return scene;
 }
 

@@ -75,11 +75,21 @@ StrandGeometry sample_strand(const StrandSpec& spec) {
   for (int i = 0; i < n; ++i) {
     const double t = static_cast<double>(i) / (n - 1);
     g.t.push_back(t);
-    g.centre.push_back(bezier_point(spec.control, t));
+    Vec2 c = bezier_point(spec.control, t);
+    if (spec.wave_amplitude > 0.0) {
+      // Waves grow from nothing at the root, where the strand leaves the head.
+      const Vec2 d = unit_or(bezier_tangent(spec.control, t), Vec2(0, 1));
+      const double wave =
+          std::sin(2.0 * kPi * spec.wave_cycles * t + spec.wave_phase) - std::sin(spec.wave_phase);
+      c += Vec2(-d.y(), d.x()) * spec.wave_amplitude * smoothstep(t / 0.35) * wave;
+    }
+    g.centre.push_back(c);
     g.width.push_back(width_at(spec, t));
   }
   for (int i = 0; i < n; ++i) {
-    const Vec2 d = unit_or(bezier_tangent(spec.control, g.t[i]), Vec2(0, 1));
+    // Normals of the sampled (possibly waved) centre line, not of the Bézier.
+    const int a = std::max(0, i - 1), b = std::min(n - 1, i + 1);
+    const Vec2 d = unit_or(g.centre[b] - g.centre[a], Vec2(0, 1));
     const Vec2 nrm(-d.y(), d.x());
     g.left.push_back(g.centre[i] + nrm * g.width[i] / 2);
     g.right.push_back(g.centre[i] - nrm * g.width[i] / 2);

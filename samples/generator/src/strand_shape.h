@@ -8,11 +8,14 @@
 namespace hair25d::generator {
 
 struct StrandSpec {
-  Vec2 control[4];          // Bézier control points, root first
-  double max_width = 20.0;  // pixels
-  double root_ratio = 0.8;  // width at the root / max_width
-  double peak_at = 0.25;    // curve parameter of the widest point
-  double tip_ratio = 0.0;   // width at the tip / max_width; 0 = pointed tip
+  Vec2 control[4];              // Bézier control points, root first
+  double max_width = 20.0;      // pixels
+  double root_ratio = 0.8;      // width at the root / max_width
+  double peak_at = 0.25;        // curve parameter of the widest point
+  double tip_ratio = 0.0;       // width at the tip / max_width; 0 = pointed tip
+  double wave_amplitude = 0.0;  // pixels across the centre line; 0 = no waves
+  double wave_cycles = 2.0;     // waves along the strand
+  double wave_phase = 0.0;      // radians
 };
 
 StrandGeometry sample_strand(const StrandSpec& spec);
