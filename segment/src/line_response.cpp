@@ -151,7 +151,9 @@ LineField compute_line_field(const cv::Mat& grey, const std::vector<double>& sca
       const float side =
           std::min(bilinear(b, x + d * ex, y + d * ey), bilinear(b, x - d * ex, y - d * ey));
       const float depth = side - centre;
-      resp[x] = std::max(0.0f, std::min(resp[x], depth));
+      // Gate, not cap: the second derivative keeps its single peak at the
+      // line centre (a cap by the flat depth would make plateaus).
+      resp[x] = resp[x] * std::clamp(depth / (0.5f * resp[x]), 0.0f, 1.0f);
       const float lambda = l1.at<float>(y, x);
       float t = lambda > 1e-6f ? -dn.at<float>(y, x) / lambda : 0.0f;
       f.offset.at<float>(y, x) = std::clamp(t, -0.5f, 0.5f);
@@ -171,18 +173,50 @@ cv::Mat suppress_non_maxima(const LineField& field, float low_threshold) {
       const float r = resp[x];
       if (r <= low_threshold) continue;
       const float ex = field.nx.at<float>(y, x), ey = field.ny.at<float>(y, x);
-      const int dx = ex > kSin22 ? 1 : (ex < -kSin22 ? -1 : 0);
-      const int dy = ey > kSin22 ? 1 : (ey < -kSin22 ? -1 : 0);
-      const int xa = x + dx, ya = y + dy, xb = x - dx, yb = y - dy;
-      const float ra =
-          (xa >= 0 && ya >= 0 && xa < w && ya < h) ? field.response.at<float>(ya, xa) : 0.0f;
-      const float rb =
-          (xb >= 0 && yb >= 0 && xb < w && yb < h) ? field.response.at<float>(yb, xb) : 0.0f;
-      // Ties go to one side only, so a flat top of two equal pixels keeps one.
-      if (r >= ra && r > rb) out.at<std::uint8_t>(y, x) = 1;
+      int dx = ex > kSin22 ? 1 : (ex < -kSin22 ? -1 : 0);
+      int dy = ey > kSin22 ? 1 : (ey < -kSin22 ? -1 : 0);
+      // One orientation for ±n, so that the tie rule below picks the same
+      // side for both pixels of a two-pixel plateau.
+      if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy;
+      // Look as far across as the scale blurs: a line between a dark and a
+      // light fill has a second, weaker top a pixel or two off its centre.
+      const int reach =
+          std::max(1, static_cast<int>(std::lround(0.8 * field.sigma.at<float>(y, x))));
+      bool keep = true;
+      for (int k = 1; k <= reach && keep; ++k) {
+        const int xa = x + k * dx, ya = y + k * dy, xb = x - k * dx, yb = y - k * dy;
+        const float ra =
+            (xa >= 0 && ya >= 0 && xa < w && ya < h) ? field.response.at<float>(ya, xa) : 0.0f;
+        const float rb =
+            (xb >= 0 && yb >= 0 && xb < w && yb < h) ? field.response.at<float>(yb, xb) : 0.0f;
+        // Ties go to one side only, so a flat top of two equal pixels keeps one.
+        keep = r >= ra && r > rb;
+      }
+      if (keep) out.at<std::uint8_t>(y, x) = 1;
     }
   }
-  return out;
+  // Two tops side by side whose normals were rounded to different
+  // directions both survive the test above: keep the stronger one.
+  cv::Mat thin = out.clone();
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!out.at<std::uint8_t>(y, x)) continue;
+      const float r = field.response.at<float>(y, x);
+      const float ex = field.nx.at<float>(y, x), ey = field.ny.at<float>(y, x);
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int qx = x + dx, qy = y + dy;
+          if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
+          if (!out.at<std::uint8_t>(qy, qx)) continue;
+          const float across = std::abs(dx * ex + dy * ey) / std::sqrt(float(dx * dx + dy * dy));
+          const float rq = field.response.at<float>(qy, qx);
+          if (across > 0.85f && (rq > r || (rq == r && qy * w + qx < y * w + x)))
+            thin.at<std::uint8_t>(y, x) = 0;
+        }
+      }
+    }
+  }
+  return thin;
 }
 
 }  // namespace hair25d::segment::detail

@@ -29,7 +29,7 @@ struct CurveOptions {
   double min_curve_length = 8.0;
   // Side branches shorter than spur_factor × line width that end freely are
   // noise at corners and line ends, and are removed.
-  double spur_factor = 1.0;
+  double spur_factor = 3.0;
   // A free end is joined to a curve it points at within gap_factor × line width
   // (lines that stop just short of another line, T-junctions the response misses).
   double gap_factor = 2.5;

@@ -2,6 +2,8 @@
 // optional strokes to regions on a mesh, a region label map and an overlay.
 #pragma once
 
+#include <filesystem>
+
 #include "hair25d/core/image.h"
 #include "hair25d/core/progress.h"
 #include "hair25d/core/segmentation.h"
@@ -18,5 +20,11 @@ struct SegmentRun {
 // With strokes: one region per stroke label (graph cut). Without: automatic
 // regions, the faces enclosed by curves, numbered from 1.
 SegmentRun run_segment(const Image& image, const Strokes* strokes, Progress* progress = nullptr);
+
+// Writes the run into folder `out_dir`, replacing it atomically: regions.png
+// (16-bit label map), segmentation.json ("hair25d-segmentation/1") and
+// overlay.png. Throws hair25d::Error if a label does not fit in 16 bits or a
+// file cannot be written.
+void write_segment_run(const std::filesystem::path& out_dir, const SegmentRun& run);
 
 }  // namespace hair25d::pipeline

@@ -1,0 +1,49 @@
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "commands.h"
+#include "hair25d/core/image_io.h"
+#include "hair25d/core/strokes.h"
+#include "hair25d/pipeline/segment_stage.h"
+
+namespace hair25d::cli {
+
+void add_segment_command(CLI::App& app, const CommonOptions& common) {
+  struct Args {
+    std::string image;
+    std::string strokes;
+    std::string out;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "segment", "Split a drawing into hair regions (paper §3): from strokes, or automatic");
+  cmd->add_option("image", args->image, "The drawing (PNG, JPEG, TIFF, PSD, ...)")->required();
+  cmd->add_option("--strokes", args->strokes,
+                  "strokes.json: labelled hair strokes; without it every face enclosed by "
+                  "lines becomes a region");
+  cmd->add_option("-o,--output", args->out,
+                  "Folder to write regions.png, segmentation.json and overlay.png into")
+      ->required();
+  cmd->callback([args, &common] {
+    const Image image = load_image(args->image);
+    std::optional<Strokes> strokes;
+    if (!args->strokes.empty()) strokes = read_strokes(args->strokes);
+    TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
+    const pipeline::SegmentRun run =
+        pipeline::run_segment(image, strokes ? &*strokes : nullptr, &progress);
+    pipeline::write_segment_run(args->out, run);
+    std::set<int> regions(run.segmentation.triangle_region.begin(),
+                          run.segmentation.triangle_region.end());
+    regions.erase(0);
+    if (!common.quiet)
+      std::printf("segment: %zu regions, %d triangles, %zu curves -> %s\n", regions.size(),
+                  run.segmentation.mesh.triangle_count(), run.segmentation.curves.size(),
+                  args->out.c_str());
+  });
+}
+
+}  // namespace hair25d::cli
