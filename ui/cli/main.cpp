@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   CommonOptions common;
   app.add_flag("-q,--quiet", common.quiet, "Print no progress");
   add_version_command(app, common);
+  add_segment_command(app, common);
   add_eval_layering_command(app, common);
   try {
     app.parse(argc, argv);
