@@ -1,5 +1,6 @@
 #include "hair25d/segment/segmenter.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "hair25d/core/error.h"
@@ -25,6 +26,24 @@ SegmentResult segment_image(const Image& image, const Strokes* strokes,
   if (image.empty())
     throw Error("segment::segment_image: the image is " + std::to_string(image.width()) + "x" +
                 std::to_string(image.height()) + "; must have at least one pixel");
+  if (strokes != nullptr) {
+    // Fail before the slow steps: a hair stroke must reach into the image.
+    const bool any =
+        std::any_of(strokes->strokes.begin(), strokes->strokes.end(), [&](const Stroke& st) {
+          if (st.label <= 0 || st.points.empty()) return false;
+          double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+          for (const Vec2& p : st.points)
+            x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y()), x1 = std::max(x1, p.x()),
+            y1 = std::max(y1, p.y());
+          const double r = std::max(0.5, st.width / 2.0);
+          return x1 + r >= 0 && y1 + r >= 0 && x0 - r <= image.width() - 1 &&
+                 y0 - r <= image.height() - 1;
+        });
+    if (!any)
+      throw Error("segment: the strokes hold no hair stroke (label > 0) inside the " +
+                  std::to_string(image.width()) + "x" + std::to_string(image.height()) +
+                  " image; mark at least one hair region");
+  }
   constexpr const char* kStage = "segment";
   SegmentResult r;
   Segmentation& s = r.segmentation;
