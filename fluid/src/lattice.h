@@ -58,6 +58,7 @@ class LatticeBase {
   virtual const std::vector<Vec2>& obstacle_forces() const = 0;  // index = label - 1
   virtual void set_inlet(SideName side, const std::vector<Vec2>& per_cell) = 0;
   virtual void set_body_acceleration(const Vec2& g) = 0;
+  virtual void set_sponge_velocity(const Vec2& v) = 0;
   virtual void initialize(const Eigen::MatrixXd& rho, const Eigen::MatrixXd& ux,
                           const Eigen::MatrixXd& uy) = 0;
   virtual void read(FlowField& out) const = 0;

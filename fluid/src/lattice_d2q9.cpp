@@ -70,6 +70,10 @@ class Lattice final : public LatticeBase {
   const std::vector<Vec2>& obstacle_forces() const override { return obstacle_force_; }
   void set_inlet(SideName side, const std::vector<Vec2>& per_cell) override;
   void set_body_acceleration(const Vec2& g) override;
+  void set_sponge_velocity(const Vec2& v) override {
+    sponge_ux_ = T(v.x());
+    sponge_uy_ = T(v.y());
+  }
   void initialize(const Eigen::MatrixXd& rho, const Eigen::MatrixXd& ux,
                   const Eigen::MatrixXd& uy) override;
   void read(FlowField& out) const override;
@@ -97,7 +101,7 @@ class Lattice final : public LatticeBase {
   std::ptrdiff_t idx(int x, int y) const {
     return kAlign + static_cast<std::ptrdiff_t>(y + 1) * stride_ + x;
   }
-  template <bool kForce>
+  template <bool kForce, bool kLes>
   double bulk(int y0, int y1);
   void boundary(std::size_t begin, std::size_t end, int tid);
   void fill_halo();
@@ -112,11 +116,19 @@ class Lattice final : public LatticeBase {
   std::array<std::ptrdiff_t, 9> off_{};
   d2q9::Relaxation<T> relax_{};
   bool forced_ = false;
+  bool les_ = false;
   std::array<SideKind, 4> kind_{};
   std::array<std::vector<T>, 4> side_ux_, side_uy_;  // per cell along each side
   std::vector<std::int32_t> labels_;
   int max_label_ = 0;
   std::vector<std::int32_t> solid_idx_;
+  struct SpongeCell {
+    std::int32_t idx;
+    T strength;  // fraction of the way to the target per step
+  };
+  std::vector<SpongeCell> sponge_;
+  T sponge_ux_ = T(0), sponge_uy_ = T(0);
+  void absorb(std::size_t begin, std::size_t end);
   std::vector<Special> static_special_, special_;
   // Per static boundary cell with a polygon neighbour: for each direction i, the fraction q of
   // the link from the node towards x - c_i at which the polygon's boundary lies.
@@ -157,6 +169,10 @@ Lattice<T>::Lattice(const Options& o, const Eigen::MatrixXi& labels)
   } else {
     relax_.omega_minus = relax_.omega_plus;
   }
+  relax_.tau0 = T(o.tau);
+  relax_.magic = o.collision == Collision::kTrt ? T(o.trt_magic) : T(0);
+  relax_.les = T(18.0 * std::sqrt(2.0) * o.smagorinsky * o.smagorinsky);
+  les_ = o.smagorinsky > 0.0;
   set_body_acceleration(o.body_acceleration);
 
   const std::array<const Side*, 4> sides = {&o.left, &o.right, &o.top, &o.bottom};
@@ -219,6 +235,24 @@ Lattice<T>::Lattice(const Options& o, const Eigen::MatrixXi& labels)
       static_special_.push_back(sp);
     }
   special_ = static_special_;
+  // Sponge: strength grows quadratically towards each outflow side.
+  constexpr double kSpongeMax = 0.25;
+  set_sponge_velocity(o.sponge_velocity);
+  if (o.sponge_width > 0) {
+    const double n = o.sponge_width;
+    for (int y = 0; y < height_; ++y)
+      for (int x = 0; x < width_; ++x) {
+        if (labels_[y * width_ + x] != 0) continue;
+        const int dist[4] = {x, width_ - 1 - x, y, height_ - 1 - y};
+        double sigma = 0.0;
+        for (int s = 0; s < 4; ++s)
+          if (kind_[s] == SideKind::kOutflow && dist[s] < o.sponge_width) {
+            const double a = (n - dist[s]) / n;
+            sigma = std::max(sigma, kSpongeMax * a * a);
+          }
+        if (sigma > 0) sponge_.push_back({static_cast<std::int32_t>(idx(x, y)), T(sigma)});
+      }
+  }
   segment_acc_.assign(threads_, {});
   obstacle_acc_.assign(threads_, std::vector<Vec2>(max_label_, Vec2::Zero()));
   obstacle_force_.assign(max_label_, Vec2::Zero());
@@ -272,7 +306,7 @@ void Lattice<T>::set_cut_links(const std::vector<CutLink>& links, int segment_co
 }
 
 template <typename T>
-template <bool kForce>
+template <bool kForce, bool kLes>
 double Lattice<T>::bulk(int y0, int y1) {
   double total = 0.0;
   const d2q9::Relaxation<T> r = relax_;
@@ -301,7 +335,7 @@ double Lattice<T>::bulk(int y0, int y1) {
 #pragma omp simd reduction(+ : acc)
     for (int x = 0; x < n; ++x) {
       T f[9] = {s0[x], s1[x], s2[x], s3[x], s4[x], s5[x], s6[x], s7[x], s8[x]};
-      acc += d2q9::collide<T, kForce>(f, r);
+      acc += d2q9::collide<T, kForce, kLes>(f, r);
       d0[x] = f[0];
       d1[x] = f[1];
       d2[x] = f[2];
@@ -365,11 +399,30 @@ void Lattice<T>::boundary(std::size_t begin, std::size_t end, int tid) {
         f[i] = src_[i][id - off_[i]];
       }
     }
-    if (forced_)
-      d2q9::collide<T, true>(f, relax_);
+    if (les_)
+      forced_ ? d2q9::collide<T, true, true>(f, relax_) : d2q9::collide<T, false, true>(f, relax_);
     else
-      d2q9::collide<T, false>(f, relax_);
+      forced_ ? d2q9::collide<T, true>(f, relax_) : d2q9::collide<T, false>(f, relax_);
     for (int i = 0; i < 9; ++i) dst_[i][id] = f[i];
+  }
+}
+
+template <typename T>
+void Lattice<T>::absorb(std::size_t begin, std::size_t end) {
+  // Moves the equilibrium part of each cell towards density 1 and the far-field velocity,
+  // keeping its non-equilibrium (viscous) part.
+  for (std::size_t k = begin; k < end; ++k) {
+    const std::ptrdiff_t id = sponge_[k].idx;
+    const T sigma = sponge_[k].strength;
+    T f[9];
+    for (int i = 0; i < 9; ++i) f[i] = dst_[i][id];
+    const T rho = T(1) + f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8];
+    const T ux = (f[1] - f[3] + f[5] - f[6] - f[7] + f[8]) / rho;
+    const T uy = (f[2] - f[4] + f[5] + f[6] - f[7] - f[8]) / rho;
+    T now[9], target[9];
+    d2q9::equilibrium<T>(rho, ux, uy, now);
+    d2q9::equilibrium<T>(T(1), sponge_ux_, sponge_uy_, target);
+    for (int i = 0; i < 9; ++i) dst_[i][id] = f[i] + sigma * (target[i] - now[i]);
   }
 }
 
@@ -397,6 +450,15 @@ T Lattice<T>::halo_value(int hx, int hy, int i, int x, int y) const {
     // of the populations lets it grow without bound).
     T rho, ux, uy;
     moments(id, rho, ux, uy);
+    // Flow coming back in through the outlet (a vortex crossing it) is what makes open
+    // boundaries blow up: let it slide along the side but not enter.
+    const int nx = s == kSideLeft ? -1 : s == kSideRight ? 1 : 0;
+    const int ny = s == kSideTop ? -1 : s == kSideBottom ? 1 : 0;
+    const T un = T(nx) * ux + T(ny) * uy;
+    if (un < T(0)) {
+      ux -= un * T(nx);
+      uy -= un * T(ny);
+    }
     const T cu = T(kCx[i]) * ux + T(kCy[i]) * uy;
     const T w = T(kW[i]);
     return -src_[kOpp[i]][id] +
@@ -442,13 +504,21 @@ double Lattice<T>::step() {
     const int tid = omp_get_thread_num();
     const int y0 = static_cast<int>(static_cast<std::int64_t>(height_) * tid / nt);
     const int y1 = static_cast<int>(static_cast<std::int64_t>(height_) * (tid + 1) / nt);
-    usq += forced_ ? bulk<true>(y0, y1) : bulk<false>(y0, y1);
+    if (les_)
+      usq += forced_ ? bulk<true, true>(y0, y1) : bulk<false, true>(y0, y1);
+    else
+      usq += forced_ ? bulk<true, false>(y0, y1) : bulk<false, false>(y0, y1);
 #pragma omp barrier
     const std::size_t n = special_.size();
     boundary(n * tid / nt, n * (tid + 1) / nt, tid);
     const std::size_t m = solid_idx_.size();
     for (std::size_t k = m * tid / nt; k < m * (tid + 1) / nt; ++k)
       for (int i = 0; i < 9; ++i) dst_[i][solid_idx_[k]] = T(0);
+    if (!sponge_.empty()) {
+#pragma omp barrier
+      const std::size_t ns = sponge_.size();
+      absorb(ns * tid / nt, ns * (tid + 1) / nt);
+    }
   }
   for (int s = 0; s < segment_count_; ++s) {
     Vec2 sum = Vec2::Zero();

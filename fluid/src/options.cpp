@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -82,6 +83,10 @@ bool Options::is_valid(std::string* error) const {
     m << "fluid::Options::trt_magic = " << trt_magic << "; must be in (0, 1] (1/4 or 3/16)";
     return fail(error, m.str());
   }
+  if (!std::isfinite(smagorinsky) || smagorinsky < 0.0 || smagorinsky > 0.5) {
+    m << "fluid::Options::smagorinsky = " << smagorinsky << "; must be in [0, 0.5] (0 = off)";
+    return fail(error, m.str());
+  }
   if (threads < 1 || threads > 64) {
     m << "fluid::Options::threads = " << threads << "; must be in [1, 64]";
     return fail(error, m.str());
@@ -89,6 +94,16 @@ bool Options::is_valid(std::string* error) const {
   if (!body_acceleration.allFinite() || body_acceleration.norm() > kMaxBodyAcceleration) {
     m << "fluid::Options::body_acceleration = " << vec_str(body_acceleration)
       << "; must be finite with norm <= " << kMaxBodyAcceleration;
+    return fail(error, m.str());
+  }
+  if (sponge_width < 0 || sponge_width > std::min(width, height) / 2) {
+    m << "fluid::Options::sponge_width = " << sponge_width << "; must be in [0, "
+      << std::min(width, height) / 2 << "] (half the smaller grid side)";
+    return fail(error, m.str());
+  }
+  if (!sponge_velocity.allFinite() || sponge_velocity.norm() > kMaxLatticeSpeed) {
+    m << "fluid::Options::sponge_velocity = " << vec_str(sponge_velocity)
+      << "; must be finite with |v| <= " << kMaxLatticeSpeed;
     return fail(error, m.str());
   }
   const Side* sides[4] = {&left, &right, &top, &bottom};

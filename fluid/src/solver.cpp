@@ -201,6 +201,15 @@ void Solver::set_body_acceleration(const Vec2& acceleration) {
   lattice_->set_body_acceleration(acceleration);
 }
 
+void Solver::set_sponge_velocity(const Vec2& velocity) {
+  Options copy = options_;
+  copy.sponge_velocity = velocity;
+  std::string error;
+  if (!copy.is_valid(&error)) throw Error(error);
+  options_.sponge_velocity = velocity;
+  lattice_->set_sponge_velocity(velocity);
+}
+
 void Solver::initialize(const Eigen::MatrixXd& density, const Eigen::MatrixXd& ux,
                         const Eigen::MatrixXd& uy) {
   const Eigen::MatrixXd* fields[3] = {&density, &ux, &uy};

@@ -51,6 +51,10 @@ struct Options {
   // TRT "magic" number Lambda = (tau+ - 1/2)(tau- - 1/2). 1/4 is the most stable choice;
   // 3/16 puts bounce-back walls exactly half-way between nodes for every tau.
   double trt_magic = 0.25;
+  // Smagorinsky constant of a sub-grid eddy viscosity (Hou et al. 1996) added where the flow
+  // is under-resolved; 0 = off (exact Navier-Stokes at the given viscosity, for validation).
+  // 0.1 to 0.2 keeps gusty wind around sharp hair tips stable at low viscosity.
+  double smagorinsky = 0.0;
   Precision precision = Precision::kFloat;
   int threads = 1;  // worker threads over rows, 1..64
 
@@ -58,6 +62,13 @@ struct Options {
 
   // Uniform body acceleration (cells / step^2), e.g. the pressure gradient of a periodic channel.
   Vec2 body_acceleration = Vec2::Zero();
+
+  // Absorbing layer in front of every outflow side, this many cells deep (0 = none): the
+  // density and velocity there are relaxed towards density 1 and `sponge_velocity`, so sound
+  // waves (which gusts make, and which open sides reflect) and vortices fade out before they
+  // reach the side instead of sloshing back and forth through the domain.
+  int sponge_width = 0;
+  Vec2 sponge_velocity = Vec2::Zero();  // lattice units, |v| <= kMaxLatticeSpeed
 
   // Static obstacles. `obstacle_labels` is empty or height x width (row y, column x):
   // 0 = fluid, k > 0 = solid cell of obstacle k. Each polygon of `obstacle_polygons` (grid

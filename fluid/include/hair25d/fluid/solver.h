@@ -78,6 +78,8 @@ class Solver {
   void set_inlet_velocity(SideName side, const Vec2& velocity);
   void set_inlet_velocities(SideName side, const std::vector<Vec2>& per_cell);
   void set_body_acceleration(const Vec2& acceleration);
+  // Far-field velocity the outflow sponge relaxes towards (Options::sponge_velocity).
+  void set_sponge_velocity(const Vec2& velocity);
 
   // Sets every fluid cell to equilibrium at the given density and velocity (height x width).
   void initialize(const Eigen::MatrixXd& density, const Eigen::MatrixXd& ux,

@@ -22,6 +22,9 @@ struct WindSettings {
   double gust_strength = 0.3;  // speed swings by +- this fraction over a gust cycle, [0, 1]
   double turbulence = 0.1;     // random fluctuations, as a fraction of the speed, [0, 1]
   std::uint64_t seed = 1;      // the same seed gives the same turbulence
+  // The wind rises smoothly from still air over this many seconds (an abrupt start sends a
+  // pressure wave through the scene that slaps the hair); 0 = starts at full strength.
+  double ramp_time = 0.5;
   bool is_valid(std::string* error) const;
 };
 
@@ -34,9 +37,14 @@ struct SceneUnits {
   // Kinematic viscosity, image pixels^2 per second. Real air at cartoon scale would be
   // unresolvable; this is an artistic knob: lower gives livelier, more turbulent wind.
   double viscosity = 400.0;
-  // Lattice steps per frame; 0 picks the fewest that keep the peak wind at <= 0.1 cells/step.
+  // Lattice steps per frame; 0 picks the fewest that keep the peak wind at <= 0.06 cells/step
+  // (flow squeezed between strands runs several times faster than the wind itself).
   int steps_per_frame = 0;
   Collision collision = Collision::kTrt;
+  // Smagorinsky constant of the sub-grid eddy viscosity (see Options::smagorinsky); with it the
+  // wind stays stable down to tau -> 1/2. 0 turns it off, and then the cell Reynolds number
+  // (peak speed / viscosity in lattice units) must stay small.
+  double smagorinsky = 0.15;
   bool is_valid(std::string* error) const;
 };
 
@@ -50,6 +58,7 @@ struct LatticeParameters {
   double viscosity = 0.0;   // lattice units
   double peak_speed = 0.0;  // lattice units: the fastest the wind gets (gusts + turbulence)
   Collision collision = Collision::kTrt;
+  double smagorinsky = 0.15;  // sub-grid model constant for Options::smagorinsky
 
   // Image velocity (pixels/s) <-> lattice velocity (cells/step).
   Vec2 to_lattice_velocity(const Vec2& pixels_per_second) const;
@@ -83,6 +92,7 @@ class WindField {
 
  private:
   double noise(int channel, double t, double s) const;
+  double strength(double t) const;  // gusts and start-up ramp, 1 = mean wind
   WindSettings wind_;
   LatticeParameters lattice_;
   Vec2 direction_;
