@@ -20,6 +20,8 @@ bool InpaintOptions::is_valid(std::string* error) const {
     return fail("patch_radius = " + std::to_string(patch_radius) + "; must be in [1, 16]");
   if (search_radius < 1)
     return fail("search_radius = " + std::to_string(search_radius) + "; must be >= 1");
+  if (!(distance_weight >= 0))
+    return fail("distance_weight = " + std::to_string(distance_weight) + "; must be >= 0");
   if (search_step < 1 || search_step > search_radius)
     return fail("search_step = " + std::to_string(search_step) + "; must be in [1, search_radius]");
   return true;
@@ -156,7 +158,8 @@ class Filler {
       for (int cy = std::max(r, y - radius); cy <= std::min(h_ - 1 - r, y + radius); cy += step)
         for (int cx = std::max(r, x - radius); cx <= std::min(w_ - 1 - r, x + radius); cx += step) {
           if (!valid_[idx(cx, cy)]) continue;
-          long ssd = 0;
+          long ssd =
+              static_cast<long>(o_.distance_weight * ((cx - x) * (cx - x) + (cy - y) * (cy - y)));
           for (int dy = -r; dy <= r && ssd < best; ++dy) {
             const int ty = y + dy;
             if (ty < 0 || ty >= h_) continue;

@@ -144,6 +144,18 @@ Image fill_background(const Context& ctx, InpaintResult* inpainted) {
   const Options& o = *ctx.options;
   const Image& image = *ctx.image;
   const int w = image.width(), h = image.height();
+  // Hair plus a 2-pixel margin: the anti-aliased rim of the outline is not
+  // dark enough to be assigned to a region but is still hair.
+  cv::Mat hair = view(ctx.labels) != 0;
+  cv::Mat near;
+  cv::dilate(hair, near, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(17, 17)));
+  cv::dilate(hair, hair, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
+  // Where outlines converge (sharp tips) the drawn line is wider than the
+  // outline reach: dark pixels close to the hair are hair too.
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (near.at<std::uint8_t>(y, x) && luma(image.at(x, y)) < o.dark_luma)
+        hair.at<std::uint8_t>(y, x) = 255;
   // The hair covers much of the drawing: fill a reduced copy (an integer
   // factor, so every reduced pixel is a whole block) and upscale the fill.
   const int factor =
@@ -154,27 +166,25 @@ Image fill_background(const Context& ctx, InpaintResult* inpainted) {
   for (int sy = 0; sy < sh; ++sy)
     for (int sx = 0; sx < sw; ++sx) {
       int r = 0, g = 0, b = 0, n = 0;
-      bool hair = false;
+      bool any = false;
       for (int y = sy * factor; y < std::min(h, (sy + 1) * factor); ++y)
         for (int x = sx * factor; x < std::min(w, (sx + 1) * factor); ++x) {
           const Rgba& c = image.at(x, y);
           r += c.r, g += c.g, b += c.b, ++n;
-          hair = hair || ctx.labels.at(x, y) != 0;
+          any = any || hair.at<std::uint8_t>(y, x) != 0;
         }
       small.at(sx, sy) = {static_cast<std::uint8_t>(r / n), static_cast<std::uint8_t>(g / n),
                           static_cast<std::uint8_t>(b / n), 255};
-      hole.at(sx, sy) = hair ? 1 : 0;
-      source.at(sx, sy) = hair ? 0 : 1;
+      hole.at(sx, sy) = any ? 1 : 0;
+      source.at(sx, sy) = any ? 0 : 1;
     }
-  InpaintOptions io = o.inpaint;
-  *inpainted = inpaint_exemplar(small, hole, source, io);
+  *inpainted = inpaint_exemplar(small, hole, source, o.inpaint);
   Image out = image;
-  const cv::Mat small_view = view(small);
   cv::Mat big;
-  cv::resize(small_view, big, cv::Size(sw * factor, sh * factor), 0, 0, cv::INTER_LINEAR);
+  cv::resize(view(small), big, cv::Size(sw * factor, sh * factor), 0, 0, cv::INTER_LINEAR);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      if (ctx.labels.at(x, y) == 0) continue;
+      if (!hair.at<std::uint8_t>(y, x)) continue;
       const cv::Vec4b& v = big.at<cv::Vec4b>(y, x);
       out.at(x, y) = {v[0], v[1], v[2], 255};
     }

@@ -29,6 +29,9 @@ bool Options::is_valid(std::string* error) const {
   if (!positive(node_spacing))
     return fail(error, "skeleton::Options::node_spacing = " + std::to_string(node_spacing) +
                            "; must be > 0");
+  if (smoothing_passes < 0)
+    return fail(error, "skeleton::Options::smoothing_passes = " + std::to_string(smoothing_passes) +
+                           "; must be >= 0");
   if (max_tips < 1)
     return fail(error,
                 "skeleton::Options::max_tips = " + std::to_string(max_tips) + "; must be >= 1");

@@ -56,8 +56,25 @@ int nearest_node(const MedialGraph& g, const Vec2& p, const std::vector<bool>* a
 
 // Resamples the subtree made of the paths tip -> root into a Skeleton whose
 // parents come before their children.
+// The chordal axis zig-zags where the triangulation fans out in wide parts:
+// a few Laplacian passes straighten a branch (ends fixed); a point that would
+// leave the shape keeps its place.
+Polyline smooth_branch(const Polyline& branch, const Polyline& outline, int passes) {
+  Polyline cur = branch;
+  for (int k = 0; k < passes; ++k) {
+    Polyline next = cur;
+    for (std::size_t i = 1; i + 1 < cur.size(); ++i) {
+      const Vec2 p = 0.5 * cur[i] + 0.25 * (cur[i - 1] + cur[i + 1]);
+      if (point_in_polygon(outline, p)) next[i] = p;
+    }
+    cur = std::move(next);
+  }
+  return cur;
+}
+
 Skeleton resample_tree(const MedialGraph& g, int root, const std::vector<int>& parent,
-                       const std::vector<int>& tip_nodes, double spacing) {
+                       const std::vector<int>& tip_nodes, double spacing, const Polyline& outline,
+                       int smoothing) {
   const int n = static_cast<int>(g.nodes.size());
   std::vector<bool> used(n, false);
   for (int t : tip_nodes)
@@ -83,7 +100,8 @@ Skeleton resample_tree(const MedialGraph& g, int root, const std::vector<int>& p
         if (children[v].size() != 1) break;
         v = children[v][0];
       }
-      const Polyline resampled = resample_polyline(branch, spacing);
+      const Polyline resampled =
+          resample_polyline(smooth_branch(branch, outline, smoothing), spacing);
       int prev = out_index;
       for (std::size_t k = 1; k < resampled.size(); ++k) {
         s.nodes.push_back(resampled[k]);
@@ -204,7 +222,8 @@ Result build_skeleton(const Input& input, const Options& options) {
     tips.push_back(far);
     result.status = SkeletonStatus::kFarthestTip;
   }
-  result.skeleton = resample_tree(g, root, parent, tips, options.node_spacing);
+  result.skeleton =
+      resample_tree(g, root, parent, tips, options.node_spacing, samples, options.smoothing_passes);
   return result;
 }
 

@@ -16,5 +16,6 @@ struct CommonOptions {
 void add_version_command(CLI::App& app, const CommonOptions& common);
 void add_segment_command(CLI::App& app, const CommonOptions& common);
 void add_eval_layering_command(CLI::App& app, const CommonOptions& common);
+void add_model_command(CLI::App& app, const CommonOptions& common);
 
 }  // namespace hair25d::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   add_version_command(app, common);
   add_segment_command(app, common);
   add_eval_layering_command(app, common);
+  add_model_command(app, common);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

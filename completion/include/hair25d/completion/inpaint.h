@@ -12,8 +12,12 @@ namespace hair25d::completion {
 
 struct InpaintOptions {
   int patch_radius = 4;    // patches are (2r+1)², 9×9 by default
-  int search_radius = 24;  // candidates within this many pixels of the target patch
-  int search_step = 1;     // candidate stride inside the window (2 = 4× faster)
+  int search_radius = 16;  // candidates within this many pixels of the target patch
+  int search_step = 2;     // candidate stride inside the window (2 = 4× faster)
+  // Added to the SSD per squared pixel of distance between target and source:
+  // among equal matches the nearest wins, so distinct features (an eye) are
+  // not copied far across a flat area.
+  double distance_weight = 2.0;
   // False, with a message naming the option, its value and the rule, if unusable.
   bool is_valid(std::string* error) const;
 };

@@ -17,6 +17,7 @@ struct Options {
   double corner_arm = 9.0;          // pixels along the outline on each side to measure a corner
   double tip_angle_deg = 80.0;      // a convex corner narrower than this is a tip candidate
   double node_spacing = 8.0;        // pixels between skeleton nodes after resampling
+  int smoothing_passes = 20;        // Laplacian passes on each branch before resampling
   int max_tips = 8;                 // keep at most this many tips (the sharpest)
   double min_tip_separation = 0.0;  // pixels between tips; 0 = 2 × corner_arm
 

@@ -1,0 +1,179 @@
+#include "hair25d/pipeline/model_stage.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "../completion/annotated_eval.h"
+#include "hair25d/core/annotation.h"
+#include "hair25d/core/error.h"
+#include "hair25d/core/image_io.h"
+#include "hair25d/core/model_io.h"
+#ifdef HAIR25D_HAVE_GENERATOR
+#include "hair25d/generator/generator.h"
+#endif
+
+namespace hair25d::pipeline {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path p =
+      fs::temp_directory_path() / ("hair25d_model_test_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(p);
+  return p;
+}
+
+std::vector<RegionRelation> relations_of(const AnnotatedCase& c) {
+  std::vector<RegionRelation> out;
+  for (const AnnotatedPair& p : c.pairs) out.push_back({p.a, p.b, p.relation, 1.0});
+  return out;
+}
+
+// Checks that hold for every model.
+void expect_consistent(const ModelRun& run, const LabelMap& regions) {
+  const HairModel& m = run.model;
+  ASSERT_EQ(run.strands.size(), m.strands.size());
+  std::set<int> seen;
+  for (const Strand& s : m.strands) {
+    for (int r : s.regions) EXPECT_TRUE(seen.insert(r).second) << "region " << r << " twice";
+    EXPECT_GE(s.outline.size(), 3u);
+    ASSERT_FALSE(s.skeleton.nodes.empty());
+    EXPECT_EQ(s.skeleton.parent[0], -1);
+    for (std::size_t i = 1; i < s.skeleton.nodes.size(); ++i) {
+      EXPECT_LT(s.skeleton.parent[i], static_cast<int>(i));
+      const Vec2 mid = 0.5 * (s.skeleton.nodes[i] + s.skeleton.nodes[s.skeleton.parent[i]]);
+      // Inside the completed shape, up to a pixel on its outline.
+      bool near = point_in_polygon(s.outline, mid);
+      for (std::size_t k = 0; k < s.outline.size() && !near; ++k)
+        near = (s.outline[k] - mid).norm() < 2.0;
+      EXPECT_TRUE(near) << "strand " << s.id << " skeleton leaves its outline at "
+                        << mid.transpose();
+    }
+    EXPECT_NO_THROW(s.mesh.validate("strand mesh"));
+  }
+  for (int id : regions.labels()) EXPECT_TRUE(seen.count(id)) << "region " << id << " lost";
+  EXPECT_EQ(m.background.width(), m.width);
+  EXPECT_FALSE(run.contact_sheet.empty());
+}
+
+TEST(ModelStage, AnnotatedCaseBuildsWritesAndReadsBack) {
+  const AnnotatedCase c = read_annotated_case(HAIR25D_TEST_DATA_DIR "/annotated/case1");
+  const ModelRun run = build_model(c.image, c.regions, relations_of(c), {}, c.head_center);
+  expect_consistent(run, c.regions);
+  // Depth follows the relations between different strands.
+  std::map<int, int> depth_of_region;
+  for (const Strand& s : run.model.strands)
+    for (int r : s.regions) depth_of_region[r] = s.depth;
+  int agree = 0, judged = 0;
+  for (const AnnotatedPair& p : c.pairs) {
+    if (p.relation == Relation::kEqual || depth_of_region[p.a] == depth_of_region[p.b]) continue;
+    ++judged;
+    agree += (p.relation == Relation::kBelow) == (depth_of_region[p.a] < depth_of_region[p.b]);
+  }
+  EXPECT_GE(agree, 0.9 * judged);
+
+  const fs::path dir = scratch("case1");
+  write_model_run(dir, run);
+  EXPECT_TRUE(fs::exists(dir / "contact_sheet.png"));
+  const HairModel back = read_model(dir);
+  ASSERT_EQ(back.strands.size(), run.model.strands.size());
+  for (std::size_t i = 0; i < back.strands.size(); ++i) {
+    EXPECT_EQ(back.strands[i].regions, run.model.strands[i].regions);
+    EXPECT_EQ(back.strands[i].depth, run.model.strands[i].depth);
+    EXPECT_EQ(back.strands[i].skeleton.parent, run.model.strands[i].skeleton.parent);
+    EXPECT_EQ(back.strands[i].mesh.triangle_count(), run.model.strands[i].mesh.triangle_count());
+  }
+  EXPECT_EQ(back.background, run.model.background);
+  fs::remove_all(dir);
+}
+
+TEST(ModelStage, EndToEndWithPredictedRelationsOnAnnotatedCases) {
+  // Layering predicts the relations; joins are scored against the annotation.
+  completion::test::PairScore total;
+  ModelOptions options;
+  options.completion.inpaint_strands = false;
+  options.completion.inpaint_background = false;
+  for (const fs::path& folder : find_annotated_cases(HAIR25D_TEST_DATA_DIR "/annotated")) {
+    const AnnotatedCase c = read_annotated_case(folder);
+    const ModelRun run = run_model(c.image, c.regions, c.head_center, options);
+    expect_consistent(run, c.regions);
+    completion::Result scored;
+    for (const Strand& s : run.model.strands) {
+      completion::CompletedStrand cs;
+      cs.regions = s.regions;
+      scored.strands.push_back(cs);
+    }
+    const completion::test::PairScore s = completion::test::score_pairs(c, scored);
+    std::printf("%s (predicted relations): precision %.3f recall %.3f\n", c.name.c_str(),
+                s.precision(), s.recall());
+    total.predicted += s.predicted;
+    total.truth += s.truth;
+    total.correct += s.correct;
+  }
+  std::printf("all (predicted relations): precision %.3f recall %.3f\n", total.precision(),
+              total.recall());
+  EXPECT_GE(total.precision(), 0.6);
+  EXPECT_GE(total.recall(), 0.4);
+}
+
+#ifdef HAIR25D_HAVE_GENERATOR
+TEST(ModelStage, GeneratedNonSquareDrawing) {
+  generator::Options g;
+  g.width = 560;
+  g.height = 400;
+  g.strand_count = 10;
+  g.seed = 3;
+  const AnnotatedCase c = generator::generate_case(g);
+  const ModelRun run = build_model(c.image, c.regions, relations_of(c), {}, c.head_center);
+  expect_consistent(run, c.regions);
+  EXPECT_EQ(run.model.width, 560);
+  EXPECT_EQ(run.model.height, 400);
+}
+#endif
+
+TEST(ModelStage, SingleRegionAndBadInput) {
+  Image img(120, 80, Rgba{240, 240, 240, 255});
+  LabelMap regions(120, 80);
+  for (int y = 20; y < 40; ++y)
+    for (int x = 10; x < 100; ++x) regions.at(x, y) = 5, img.at(x, y) = {200, 150, 90, 255};
+  // One region: layering has nothing to order, the model still has its strand.
+  const ModelRun run = run_model(img, regions, std::nullopt);
+  ASSERT_EQ(run.model.strands.size(), 1u);
+  expect_consistent(run, regions);
+  EXPECT_THROW(run_model(img, LabelMap(10, 10), std::nullopt), Error);
+  ModelOptions bad;
+  bad.cover_reach = -1;
+  EXPECT_THROW(run_model(img, regions, std::nullopt, bad), Error);
+}
+
+#ifdef HAIR25D_CLI
+TEST(ModelCommand, WritesAModelFolderThatReadsBack) {
+  const fs::path dir = scratch("cli");
+  const std::string data = HAIR25D_TEST_DATA_DIR "/annotated/case5/";
+  const std::string cmd = std::string("\"") + HAIR25D_CLI + "\" --quiet model \"" + data +
+                          "image.png\" --regions \"" + data +
+                          "regions.png\" --head 461.5 614.8 -o \"" + dir.string() + "\"";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const HairModel m = read_model(dir);
+  EXPECT_EQ(m.width, 896);
+  EXPECT_EQ(m.height, 1162);
+  EXPECT_GE(m.strands.size(), 5u);
+  EXPECT_TRUE(fs::exists(dir / "contact_sheet.png"));
+  EXPECT_FALSE(load_image(dir / "contact_sheet.png").empty());
+  // Bad input: a missing image is exit status 1, not a crash.
+  const std::string bad = std::string("\"") + HAIR25D_CLI +
+                          "\" --quiet model /nonexistent.png -o \"" + dir.string() +
+                          "\" 2>/dev/null";
+  const int status = std::system(bad.c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  fs::remove_all(dir);
+}
+#endif
+
+}  // namespace
+}  // namespace hair25d::pipeline

@@ -1,0 +1,73 @@
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "commands.h"
+#include "hair25d/core/error.h"
+#include "hair25d/core/image_io.h"
+#include "hair25d/core/strokes.h"
+#include "hair25d/pipeline/model_stage.h"
+
+namespace hair25d::cli {
+
+void add_model_command(CLI::App& app, const CommonOptions& common) {
+  struct Args {
+    std::string image;
+    std::string strokes;
+    std::string regions;
+    std::string out;
+    std::vector<double> head;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "model",
+      "Build the 2.5D hair model (paper §3–§6): segment, layer, complete and skeletonise "
+      "every strand, and write the model folder with a contact sheet");
+  cmd->add_option("image", args->image, "The drawing (PNG, JPEG, TIFF, PSD, ...)")->required();
+  auto* strokes = cmd->add_option("--strokes", args->strokes,
+                                  "strokes.json: labelled hair strokes (and the head centre)");
+  auto* regions = cmd->add_option(
+      "--regions", args->regions,
+      "regions.png: hair region ids (0 = background and outlines) instead of segmenting");
+  strokes->excludes(regions);
+  regions->excludes(strokes);
+  cmd->add_option("--head", args->head, "Head centre X Y in pixels (overrides strokes.json)")
+      ->expected(2);
+  cmd->add_option("-o,--output", args->out, "The model folder to write (replaced if it exists)")
+      ->required();
+  cmd->callback([args, &common] {
+    const Image image = load_image(args->image);
+    TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
+    std::optional<Vec2> head;
+    if (args->head.size() == 2) head = Vec2(args->head[0], args->head[1]);
+    pipeline::ModelRun run;
+    if (!args->regions.empty()) {
+      const LabelMap regions = load_label_map(args->regions);
+      if (regions.width() != image.width() || regions.height() != image.height())
+        throw Error(args->regions + ": regions are " + std::to_string(regions.width()) + "x" +
+                    std::to_string(regions.height()) + ", the image " +
+                    std::to_string(image.width()) + "x" + std::to_string(image.height()) +
+                    "; they must be the same size");
+      run = pipeline::run_model(image, regions, head, {}, &progress);
+    } else {
+      std::optional<Strokes> s;
+      if (!args->strokes.empty()) {
+        s = read_strokes(args->strokes);
+        if (head) s->head_center = head;
+      }
+      run = pipeline::run_model(image, s ? &*s : nullptr, {}, &progress);
+    }
+    pipeline::write_model_run(args->out, run);
+    if (!common.quiet) {
+      std::printf("model: %s -> %s\n", run.summary.c_str(), args->out.c_str());
+      std::printf("model: seconds");
+      for (const auto& [stage, seconds] : run.seconds)
+        std::printf(" %s %.3f", stage.c_str(), seconds);
+      std::printf("\n");
+    }
+  });
+}
+
+}  // namespace hair25d::cli

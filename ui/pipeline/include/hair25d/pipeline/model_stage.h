@@ -1,0 +1,79 @@
+// The whole 2.5D hair model as the pipeline builds it (paper §3–§6, first
+// part): segment → layering → completion (§5) → skeletons and meshes (§6),
+// assembled into a core HairModel with a contact sheet for a person to check.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hair25d/completion/completion.h"
+#include "hair25d/core/hair_model.h"
+#include "hair25d/core/image.h"
+#include "hair25d/core/progress.h"
+#include "hair25d/core/strokes.h"
+#include "hair25d/layering/layering.h"
+#include "hair25d/skeleton/strand_mesh.h"
+#include "hair25d/skeleton/strand_skeleton.h"
+
+namespace hair25d::pipeline {
+
+struct ModelOptions {
+  layering::Options layering;
+  completion::Options completion;
+  skeleton::Options skeleton;
+  skeleton::MeshOptions mesh;
+  // An outline vertex is covered (not a tip) when a strand drawn above has a
+  // pixel within this many pixels of it.
+  int cover_reach = 3;
+
+  // False, naming the option, its value and the rule, if unusable.
+  bool is_valid(std::string* error) const;
+};
+
+// Per-strand facts the model file does not keep (for the contact sheet and tests).
+struct StrandReport {
+  LabelMap mask;  // crop at the strand's texture origin: 1 visible, 2 completed
+  skeleton::SkeletonStatus skeleton = skeleton::SkeletonStatus::kTips;
+  skeleton::MeshStatus mesh = skeleton::MeshStatus::kRefined;
+  std::string problem;  // why the skeleton or mesh is missing, empty if none
+};
+
+struct ModelRun {
+  HairModel model;
+  std::vector<StrandReport> strands;  // parallel to model.strands
+  LabelMap regions;                   // the regions used (outline pixels assigned)
+  completion::Result completion;      // diagnostics (edges, joins); strands moved out
+  Image contact_sheet;
+  std::map<std::string, double> seconds;  // per stage
+  std::string summary;
+};
+
+// Completion and skeletons from regions and relations already known (the
+// annotation, or the layering stage). `depth`: region id → depth (0 = back);
+// regions missing from it are ordered from `relations`.
+ModelRun build_model(const Image& image, const LabelMap& regions,
+                     const std::vector<RegionRelation>& relations, const std::map<int, int>& depth,
+                     std::optional<Vec2> head_center, const ModelOptions& options = {},
+                     Progress* progress = nullptr);
+
+// Layering, completion and skeletons from a region label map (`--regions`).
+ModelRun run_model(const Image& image, const LabelMap& regions, std::optional<Vec2> head_center,
+                   const ModelOptions& options = {}, Progress* progress = nullptr);
+
+// Everything from the drawing and optional strokes (segment first).
+ModelRun run_model(const Image& image, const Strokes* strokes, const ModelOptions& options = {},
+                   Progress* progress = nullptr);
+
+// The contact sheet: the drawing; the completed areas in light blue (as the
+// paper's Fig. 1d); strands coloured by depth, back blue to front red; the
+// skeletons (red, tips green, roots blue) over the strands.
+Image render_contact_sheet(const ModelRun& run, int panel_max_side = 640);
+
+// Writes the model folder (core write_model) and contact_sheet.png inside it.
+void write_model_run(const std::filesystem::path& folder, const ModelRun& run);
+
+}  // namespace hair25d::pipeline

@@ -1,0 +1,140 @@
+// The contact sheet of a model run: four panels for a person to check the
+// completion (light blue, as the paper's Fig. 1d), the depth order and the
+// skeletons.
+#include <algorithm>
+#include <cmath>
+
+#include "hair25d/pipeline/model_stage.h"
+
+namespace hair25d::pipeline {
+namespace {
+
+void blend(Image& img, int x, int y, Rgba c, double alpha) {
+  if (!img.contains(x, y)) return;
+  Rgba& d = img.at(x, y);
+  auto mix = [&](std::uint8_t a, std::uint8_t b) {
+    return static_cast<std::uint8_t>(std::lround(a * (1 - alpha) + b * alpha));
+  };
+  d = {mix(d.r, c.r), mix(d.g, c.g), mix(d.b, c.b), 255};
+}
+
+void disc(Image& img, const Vec2& p, double r, Rgba c) {
+  for (int y = static_cast<int>(p.y() - r); y <= static_cast<int>(p.y() + r); ++y)
+    for (int x = static_cast<int>(p.x() - r); x <= static_cast<int>(p.x() + r); ++x)
+      if ((Vec2(x + 0.5, y + 0.5) - p).norm() <= r) blend(img, x, y, c, 1.0);
+}
+
+void line(Image& img, const Vec2& a, const Vec2& b, double width, Rgba c) {
+  const int steps = std::max(1, static_cast<int>((b - a).norm() * 2));
+  for (int i = 0; i <= steps; ++i)
+    disc(img, a + (b - a) * (static_cast<double>(i) / steps), width / 2, c);
+}
+
+// Background, then every strand's texture back to front.
+Image composite(const ModelRun& run, bool tint_completed) {
+  const HairModel& m = run.model;
+  Image out = m.background.empty() ? m.image : m.background;
+  std::vector<int> order(m.strands.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return m.strands[a].depth < m.strands[b].depth; });
+  for (int i : order) {
+    const Strand& s = m.strands[i];
+    for (int y = 0; y < s.texture.height(); ++y)
+      for (int x = 0; x < s.texture.width(); ++x) {
+        const Rgba t = s.texture.at(x, y);
+        if (t.a == 0) continue;
+        const int gx = x + s.texture_origin.x(), gy = y + s.texture_origin.y();
+        blend(out, gx, gy, t, t.a / 255.0);
+      }
+  }
+  // Completed parts lie under other strands by construction: tint them on top
+  // so they can be seen at all.
+  if (tint_completed)
+    for (std::size_t i = 0; i < m.strands.size() && i < run.strands.size(); ++i) {
+      const LabelMap& mask = run.strands[i].mask;
+      const Eigen::Vector2i o = m.strands[i].texture_origin;
+      for (int y = 0; y < mask.height(); ++y)
+        for (int x = 0; x < mask.width(); ++x)
+          if (mask.at(x, y) == 2) blend(out, x + o.x(), y + o.y(), {150, 200, 255, 255}, 0.6);
+    }
+  return out;
+}
+
+Rgba depth_colour(int depth, int max_depth) {
+  const double t = max_depth > 0 ? static_cast<double>(depth) / max_depth : 0.0;
+  return {static_cast<std::uint8_t>(40 + 215 * t),
+          static_cast<std::uint8_t>(60 + 80 * (1 - std::abs(2 * t - 1))),
+          static_cast<std::uint8_t>(255 - 215 * t), 255};
+}
+
+Image shrink(const Image& in, int max_side) {
+  const int factor = std::max(1, (std::max(in.width(), in.height()) + max_side - 1) / max_side);
+  Image out((in.width() + factor - 1) / factor, (in.height() + factor - 1) / factor);
+  for (int y = 0; y < out.height(); ++y)
+    for (int x = 0; x < out.width(); ++x) {
+      int r = 0, g = 0, b = 0, n = 0;
+      for (int sy = y * factor; sy < std::min(in.height(), (y + 1) * factor); ++sy)
+        for (int sx = x * factor; sx < std::min(in.width(), (x + 1) * factor); ++sx) {
+          const Rgba c = in.at(sx, sy);
+          r += c.r, g += c.g, b += c.b, ++n;
+        }
+      out.at(x, y) = {static_cast<std::uint8_t>(r / n), static_cast<std::uint8_t>(g / n),
+                      static_cast<std::uint8_t>(b / n), 255};
+    }
+  return out;
+}
+
+}  // namespace
+
+Image render_contact_sheet(const ModelRun& run, int panel_max_side) {
+  const HairModel& m = run.model;
+  if (m.image.empty()) return {};
+  const Image completed = composite(run, true);
+
+  Image depth = m.background.empty() ? m.image : m.background;
+  for (int y = 0; y < depth.height(); ++y)
+    for (int x = 0; x < depth.width(); ++x) blend(depth, x, y, {255, 255, 255, 255}, 0.6);
+  int max_depth = 0;
+  for (const Strand& s : m.strands) max_depth = std::max(max_depth, s.depth);
+  std::vector<int> order(m.strands.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return m.strands[a].depth < m.strands[b].depth; });
+  for (int i : order) {
+    const Strand& s = m.strands[i];
+    for (int y = 0; y < s.texture.height(); ++y)
+      for (int x = 0; x < s.texture.width(); ++x)
+        if (s.texture.at(x, y).a)
+          blend(depth, x + s.texture_origin.x(), y + s.texture_origin.y(),
+                depth_colour(s.depth, max_depth), 0.85);
+    for (std::size_t k = 0; k < s.outline.size(); ++k)
+      line(depth, s.outline[k], s.outline[(k + 1) % s.outline.size()], 1.5, {30, 30, 30, 255});
+  }
+
+  Image skeletons = composite(run, false);
+  for (int y = 0; y < skeletons.height(); ++y)
+    for (int x = 0; x < skeletons.width(); ++x) blend(skeletons, x, y, {255, 255, 255, 255}, 0.45);
+  const double w = std::max(2.0, std::max(m.width, m.height) / 300.0);
+  for (const Strand& s : m.strands) {
+    const Skeleton& k = s.skeleton;
+    for (std::size_t i = 0; i < k.nodes.size(); ++i)
+      if (k.parent[i] >= 0)
+        line(skeletons, k.nodes[k.parent[i]], k.nodes[i], w, {220, 20, 20, 255});
+    for (int t : k.tips) disc(skeletons, k.nodes[t], 1.5 * w, {20, 170, 40, 255});
+    if (!k.nodes.empty()) disc(skeletons, k.nodes[0], 2.0 * w, {30, 60, 230, 255});
+  }
+
+  const Image panels[4] = {shrink(m.image, panel_max_side), shrink(completed, panel_max_side),
+                           shrink(depth, panel_max_side), shrink(skeletons, panel_max_side)};
+  const int pw = panels[0].width(), ph = panels[0].height(), gap = 8;
+  Image sheet(2 * pw + 3 * gap, 2 * ph + 3 * gap, {255, 255, 255, 255});
+  for (int p = 0; p < 4; ++p) {
+    const int ox = gap + (p % 2) * (pw + gap), oy = gap + (p / 2) * (ph + gap);
+    for (int y = 0; y < panels[p].height(); ++y)
+      for (int x = 0; x < panels[p].width(); ++x) sheet.at(ox + x, oy + y) = panels[p].at(x, y);
+  }
+  return sheet;
+}
+
+}  // namespace hair25d::pipeline

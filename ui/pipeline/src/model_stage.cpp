@@ -1,0 +1,222 @@
+#include "hair25d/pipeline/model_stage.h"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+#include "hair25d/core/error.h"
+#include "hair25d/core/image_io.h"
+#include "hair25d/core/model_io.h"
+#include "hair25d/layering/depth_order.h"
+#include "hair25d/pipeline/segment_stage.h"
+
+namespace hair25d::pipeline {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Region depths for every region: the given ones, the rest from the relations.
+std::map<int, int> complete_depths(const LabelMap& regions,
+                                   const std::vector<RegionRelation>& relations,
+                                   const std::map<int, int>& given) {
+  const std::vector<int> ids = regions.labels();
+  bool all = true;
+  for (int id : ids) all = all && given.count(id);
+  if (all) return given;
+  std::vector<RegionRelation> known;
+  const std::set<int> present(ids.begin(), ids.end());
+  for (const RegionRelation& r : relations)
+    if (present.count(r.a) && present.count(r.b)) known.push_back(r);
+  return layering::order_regions(ids, known).depth;
+}
+
+}  // namespace
+
+bool ModelOptions::is_valid(std::string* error) const {
+  if (!layering.is_valid(error) || !completion.is_valid(error) || !skeleton.is_valid(error) ||
+      !mesh.is_valid(error))
+    return false;
+  if (cover_reach < 0 || cover_reach > 32) {
+    if (error != nullptr)
+      *error = "pipeline::ModelOptions::cover_reach = " + std::to_string(cover_reach) +
+               "; must be in [0, 32]";
+    return false;
+  }
+  return true;
+}
+
+ModelRun build_model(const Image& image, const LabelMap& regions,
+                     const std::vector<RegionRelation>& relations, const std::map<int, int>& depth,
+                     std::optional<Vec2> head_center, const ModelOptions& options,
+                     Progress* progress) {
+  std::string why;
+  if (!options.is_valid(&why)) throw Error(why);
+  ModelRun run;
+  auto start = Clock::now();
+  completion::Input in;
+  in.image = &image;
+  in.regions = &regions;
+  in.relations = relations;
+  in.head_center = head_center;
+  run.completion = completion::complete_strands(in, options.completion, progress);
+  run.seconds["completion"] = since(start);
+
+  start = Clock::now();
+  const std::map<int, int> region_depth = complete_depths(regions, relations, depth);
+  std::vector<completion::CompletedStrand> done = std::move(run.completion.strands);
+  run.completion.strands.clear();
+  // Strands are drawn in the order of their front-most piece.
+  std::vector<int> key(done.size(), 0);
+  for (std::size_t s = 0; s < done.size(); ++s)
+    for (int r : done[s].regions) {
+      auto it = region_depth.find(r);
+      if (it != region_depth.end()) key[s] = std::max(key[s], it->second);
+    }
+  std::vector<int> order(done.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return key[a] != key[b] ? key[a] < key[b] : done[a].regions.front() < done[b].regions.front();
+  });
+  std::set<int> distinct(key.begin(), key.end());
+  std::map<int, int> rank;
+  for (int k : distinct) rank.emplace(k, static_cast<int>(rank.size()));
+
+  HairModel& m = run.model;
+  m.width = image.width();
+  m.height = image.height();
+  m.image = image;
+  m.background = std::move(run.completion.background);
+  m.head_center = run.completion.head_center;
+  m.relations = relations;
+  run.regions = std::move(run.completion.regions);
+  std::map<int, int> strand_depth_of_region;
+  for (int index : order)
+    for (int r : done[index].regions) strand_depth_of_region[r] = rank[key[index]];
+
+  int next = 0;
+  for (int index : order) {
+    completion::CompletedStrand& c = done[index];
+    Strand s;
+    s.id = ++next;
+    s.name = "strand " + std::to_string(s.id);
+    s.regions = c.regions;
+    s.depth = rank[key[index]];
+    s.outline = c.outline;
+    s.texture = std::move(c.texture);
+    s.texture_origin = c.origin;
+    StrandReport info;
+    info.mask = std::move(c.mask);
+    if (s.outline.size() >= 3) {
+      // A corner under a strand drawn above is hidden: not a tip (§6).
+      std::vector<bool> covered(s.outline.size(), false);
+      const int reach = options.cover_reach;
+      for (std::size_t v = 0; v < s.outline.size(); ++v) {
+        const int cx = static_cast<int>(s.outline[v].x()), cy = static_cast<int>(s.outline[v].y());
+        for (int dy = -reach; dy <= reach && !covered[v]; ++dy)
+          for (int dx = -reach; dx <= reach; ++dx) {
+            if (!run.regions.contains(cx + dx, cy + dy)) continue;
+            auto it = strand_depth_of_region.find(run.regions.at(cx + dx, cy + dy));
+            if (it != strand_depth_of_region.end() && it->second > s.depth) {
+              covered[v] = true;
+              break;
+            }
+          }
+      }
+      try {
+        skeleton::Input sk;
+        sk.outline = s.outline;
+        sk.covered = std::move(covered);
+        sk.root_hint = c.root_hint ? c.root_hint : m.head_center;
+        const skeleton::Result r = skeleton::build_skeleton(sk, options.skeleton);
+        s.skeleton = r.skeleton;
+        info.skeleton = r.status;
+      } catch (const Error& e) {
+        info.problem = std::string("skeleton: ") + e.what();
+      }
+      try {
+        const skeleton::MeshResult r = skeleton::mesh_strand(s.outline, options.mesh);
+        s.mesh = r.mesh;
+        info.mesh = r.status;
+      } catch (const Error& e) {
+        info.problem += (info.problem.empty() ? "" : "; ") + std::string("mesh: ") + e.what();
+      }
+    } else {
+      info.problem = "outline has fewer than 3 points";
+    }
+    if (s.skeleton.nodes.empty() && !c.regions.empty()) {
+      // Still a usable strand: one fixed node where its pixels are.
+      Vec2 centre(0, 0);
+      int n = 0;
+      for (int y = 0; y < info.mask.height(); ++y)
+        for (int x = 0; x < info.mask.width(); ++x)
+          if (info.mask.at(x, y))
+            centre += Vec2(x + c.origin.x() + 0.5, y + c.origin.y() + 0.5), ++n;
+      if (n > 0) {
+        s.skeleton.nodes = {centre / n};
+        s.skeleton.parent = {-1};
+      }
+    }
+    m.strands.push_back(std::move(s));
+    run.strands.push_back(std::move(info));
+    report(progress, "skeleton", static_cast<double>(next) / std::max<std::size_t>(1, done.size()));
+  }
+  run.seconds["skeleton"] = since(start);
+
+  start = Clock::now();
+  run.contact_sheet = render_contact_sheet(run);
+  run.seconds["contact_sheet"] = since(start);
+  std::ostringstream summary;
+  int problems = 0;
+  for (const StrandReport& r : run.strands) problems += !r.problem.empty();
+  summary << m.strands.size() << " strands (" << run.completion.summary << ")";
+  if (problems > 0) summary << "; " << problems << " strands without skeleton or mesh";
+  run.summary = summary.str();
+  return run;
+}
+
+ModelRun run_model(const Image& image, const LabelMap& regions, std::optional<Vec2> head_center,
+                   const ModelOptions& options, Progress* progress) {
+  std::string why;
+  if (!options.is_valid(&why)) throw Error(why);
+  const auto start = Clock::now();
+  std::vector<RegionRelation> relations;
+  std::map<int, int> depth;
+  std::string layering_note;
+  try {
+    layering::Result l = layering::layer_regions(image, regions, options.layering, progress);
+    relations = std::move(l.relations);
+    depth = std::move(l.depth);
+  } catch (const Error& e) {
+    // Too few regions to layer (one strand, say) is not a reason to stop:
+    // completion then has no occluders to complete under.
+    layering_note = std::string("; layering skipped: ") + e.what();
+  }
+  const double layering_seconds = since(start);
+  ModelRun run = build_model(image, regions, relations, depth, head_center, options, progress);
+  run.seconds["layering"] = layering_seconds;
+  run.summary += layering_note;
+  return run;
+}
+
+ModelRun run_model(const Image& image, const Strokes* strokes, const ModelOptions& options,
+                   Progress* progress) {
+  const auto start = Clock::now();
+  const SegmentRun seg = run_segment(image, strokes, progress);
+  const double segment_seconds = since(start);
+  ModelRun run =
+      run_model(image, seg.regions, strokes != nullptr ? strokes->head_center : std::nullopt,
+                options, progress);
+  run.seconds["segment"] = segment_seconds;
+  return run;
+}
+
+void write_model_run(const std::filesystem::path& folder, const ModelRun& run) {
+  write_model(folder, run.model);
+  if (!run.contact_sheet.empty()) save_image(folder / "contact_sheet.png", run.contact_sheet);
+}
+
+}  // namespace hair25d::pipeline
