@@ -168,6 +168,51 @@ void BM_SetFilaments(benchmark::State& state) {
 }
 BENCHMARK(BM_SetFilaments)->Arg(8)->Arg(64)->Repetitions(5)->ReportAggregatesOnly(true);
 
+// Validation run, not a speed figure: Schafer & Turek (1996) 2D-1 (Re = 20, published
+// Cd = 5.5795, Cl = 0.0106) at D cells per cylinder diameter, reported as counters.
+void BM_SchaferTurek2D1(benchmark::State& state) {
+  const int D = static_cast<int>(state.range(0));
+  const double umax = 0.05, umean = 2.0 / 3.0 * umax;
+  const int W = 22 * D, H = 41 * D / 10;
+  fluid::Options o;
+  o.width = W;
+  o.height = H;
+  o.tau = fluid::tau_of_viscosity(umean * D / 20.0);
+  o.threads = 2;
+  o.left.kind = fluid::SideKind::kInlet;
+  o.left.velocity = Vec2(umax, 0);
+  for (int j = 0; j < H; ++j) o.left.profile.push_back(4.0 * (j + 0.5) * (H - j - 0.5) / (H * H));
+  o.right.kind = fluid::SideKind::kOutflow;
+  o.top.kind = o.bottom.kind = fluid::SideKind::kWall;
+  Polyline circle;
+  for (int k = 0; k < 192; ++k) {
+    const double a = 2 * 3.14159265358979323846 * k / 192;
+    circle.push_back(Vec2(2.0 * D, 2.0 * D) + 0.5 * D * Vec2(std::cos(a), std::sin(a)));
+  }
+  o.obstacle_polygons.push_back(circle);
+  double cd = 0, cl = 0, steps = 0;
+  for (auto _ : state) {
+    fluid::Solver s(o);
+    Eigen::MatrixXd ux(H, W);
+    for (int j = 0; j < H; ++j) ux.row(j).setConstant(umax * o.left.profile[j]);
+    s.initialize(Eigen::MatrixXd::Ones(H, W), ux, Eigen::MatrixXd::Zero(H, W));
+    steps = fluid::run_to_steady(s, {400000, 1000, 1e-4}).steps;
+    const Vec2 f = s.obstacle_forces().at(0).force;
+    cd = 2 * f.x() / (umean * umean * D);
+    cl = 2 * f.y() / (umean * umean * D);
+  }
+  state.counters["Cd"] = cd;
+  state.counters["Cl"] = cl;
+  state.counters["Cd_err_pct"] = 100.0 * (cd / 5.5795 - 1.0);
+  state.counters["steps"] = steps;
+}
+BENCHMARK(BM_SchaferTurek2D1)
+    ->Arg(10)
+    ->Arg(20)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -13,6 +13,14 @@
 #include "d2q9.h"
 #include "lattice.h"
 
+// The bulk kernel is compiled twice, for AVX2+FMA (x86-64-v3) and for the baseline, and the
+// loader picks the one the CPU runs: twice the vector width in cache, same binary everywhere.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define HAIR25D_FLUID_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define HAIR25D_FLUID_CLONES
+#endif
+
 namespace hair25d::fluid {
 namespace {
 
@@ -102,7 +110,7 @@ class Lattice final : public LatticeBase {
     return kAlign + static_cast<std::ptrdiff_t>(y + 1) * stride_ + x;
   }
   template <bool kForce, bool kLes>
-  double bulk(int y0, int y1);
+  HAIR25D_FLUID_CLONES double bulk(int y0, int y1);
   void boundary(std::size_t begin, std::size_t end, int tid);
   void fill_halo();
   T halo_value(int hx, int hy, int i, int x, int y) const;
