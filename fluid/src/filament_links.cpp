@@ -5,6 +5,8 @@
 // conserves mass for a wall at rest and gives the force by momentum exchange on the same
 // links, at the cost of O(length) work per segment per step. An immersed boundary spreads
 // the wall over ~2 cells, so a zero-thickness plate leaks unless the coupling is iterated.
+#include <omp.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -61,67 +63,86 @@ void LinkCutter::sort_by_cell(std::vector<std::int32_t>& cells) {
   pass(scratch_, cells, height_, [&](std::int32_t c) { return c / width_; });
 }
 
-void LinkCutter::add(std::int32_t cell, int dir, const Vec2& v, std::int32_t owner) {
-  std::uint8_t& m = mask_[cell];
-  const auto bit = static_cast<std::uint8_t>(1u << (dir - 1));
+void LinkCutter::add(const CutLink& l) {
+  std::uint8_t& m = mask_[l.cell];
+  const auto bit = static_cast<std::uint8_t>(1u << (l.dir - 1));
   if (m & bit) return;  // already cut by an earlier segment, which keeps it
-  if (m == 0) touched_.push_back(cell);
+  if (m == 0) touched_.push_back(l.cell);
   m |= bit;
-  raw_.push_back(CutLink{cell, static_cast<std::uint8_t>(dir), static_cast<float>(v.x()),
-                         static_cast<float>(v.y()), owner});
+  raw_.push_back(l);
 }
 
-void LinkCutter::cut(const std::vector<Filament>& filaments, std::vector<CutLink>* links,
-                     std::vector<int>* first_segment) {
+void LinkCutter::cut_segment(const Filament& fil, std::size_t k, std::int32_t segment,
+                             std::vector<CutLink>& out) const {
   using d2q9::kCx;
   using d2q9::kCy;
   using d2q9::kOpp;
   constexpr double kLink = 1.4142135623730951 + 1e-9;  // longest link
+  // Each undirected link is visited once from its node a, towards a + c for these directions.
+  constexpr int kHalf[4] = {1, 2, 5, 6};
+  const Vec2& p = fil.points[k];
+  const Vec2& q = fil.points[k + 1];
+  const Vec2 vp = fil.velocities.empty() ? Vec2::Zero() : fil.velocities[k];
+  const Vec2 vq = fil.velocities.empty() ? Vec2::Zero() : fil.velocities[k + 1];
+  const Vec2 d = q - p;
+  const double len = d.norm();
+  // Node a = (x + 1/2, y + 1/2) has links reaching 1 in x either way and 0..1 in y.
+  const int x0 = std::max(-1, static_cast<int>(std::ceil(std::min(p.x(), q.x()) - 1.5)));
+  const int x1 = std::min(width_, static_cast<int>(std::floor(std::max(p.x(), q.x()) + 0.5)));
+  const int y0 = std::max(-1, static_cast<int>(std::ceil(std::min(p.y(), q.y()) - 1.5)));
+  const int y1 = std::min(height_, static_cast<int>(std::floor(std::max(p.y(), q.y()) - 0.5)));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const Vec2 a(x + 0.5, y + 0.5);
+      // Side of a relative to the segment's line (times |d|); along a link it changes
+      // linearly, so each link's far end costs one add.
+      const double sa = cross(d, a - p);
+      // No link of a node farther than one link length from the line can cross it.
+      if (std::abs(sa) > kLink * len) continue;
+      for (int i : kHalf) {
+        const double sb = sa + d.x() * kCy[i] - d.y() * kCx[i];
+        if ((sa > 0 && sb > 0) || (sa < 0 && sb < 0)) continue;
+        const int bx = x + kCx[i], by = y + kCy[i];
+        double t = 0.0;
+        if (!link_cut(a, Vec2(bx + 0.5, by + 0.5), p, q, &t)) continue;
+        const Vec2 v = (1.0 - t) * vp + t * vq;
+        const auto vx = static_cast<float>(v.x()), vy = static_cast<float>(v.y());
+        // The population travelling a -> b arrives at b along i; the one b -> a at a along
+        // opp(i).
+        if (bx >= 0 && bx < width_ && by >= 0 && by < height_)
+          out.push_back({by * width_ + bx, static_cast<std::uint8_t>(i), vx, vy, segment});
+        if (x >= 0 && x < width_ && y >= 0 && y < height_)
+          out.push_back({y * width_ + x, static_cast<std::uint8_t>(kOpp[i]), vx, vy, segment});
+      }
+    }
+}
+
+void LinkCutter::cut(const std::vector<Filament>& filaments, int threads,
+                     std::vector<CutLink>* links, std::vector<int>* first_segment) {
   touched_.clear();
   raw_.clear();
   first_segment->assign(1, 0);
-  int segment = 0;
-  // Each undirected link is visited once from its node a, towards a + c for these directions.
-  constexpr int kHalf[4] = {1, 2, 5, 6};
-  for (const Filament& fil : filaments) {
-    for (std::size_t k = 0; k + 1 < fil.points.size(); ++k, ++segment) {
-      const Vec2& p = fil.points[k];
-      const Vec2& q = fil.points[k + 1];
-      const Vec2 vp = fil.velocities.empty() ? Vec2::Zero() : fil.velocities[k];
-      const Vec2 vq = fil.velocities.empty() ? Vec2::Zero() : fil.velocities[k + 1];
-      const Vec2 d = q - p;
-      const double len = d.norm();
-      // Node a = (x + 1/2, y + 1/2) has links reaching 1 in x either way and 0..1 in y.
-      const int x0 = std::max(-1, static_cast<int>(std::ceil(std::min(p.x(), q.x()) - 1.5)));
-      const int x1 = std::min(width_, static_cast<int>(std::floor(std::max(p.x(), q.x()) + 0.5)));
-      const int y0 = std::max(-1, static_cast<int>(std::ceil(std::min(p.y(), q.y()) - 1.5)));
-      const int y1 = std::min(height_, static_cast<int>(std::floor(std::max(p.y(), q.y()) - 0.5)));
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-          const Vec2 a(x + 0.5, y + 0.5);
-          // Side of a relative to the segment's line (times |d|); along a link it changes
-          // linearly, so each link's far end costs one add.
-          const double sa = cross(d, a - p);
-          // No link of a node farther than one link length from the line can cross it.
-          if (std::abs(sa) > kLink * len) continue;
-          for (int i : kHalf) {
-            const double sb = sa + d.x() * kCy[i] - d.y() * kCx[i];
-            if ((sa > 0 && sb > 0) || (sa < 0 && sb < 0)) continue;
-            const int bx = x + kCx[i], by = y + kCy[i];
-            double t = 0.0;
-            if (!link_cut(a, Vec2(bx + 0.5, by + 0.5), p, q, &t)) continue;
-            const Vec2 v = (1.0 - t) * vp + t * vq;
-            // The population travelling a -> b arrives at b along i; the one b -> a at a along
-            // opp(i).
-            if (bx >= 0 && bx < width_ && by >= 0 && by < height_)
-              add(by * width_ + bx, i, v, segment);
-            if (x >= 0 && x < width_ && y >= 0 && y < height_)
-              add(y * width_ + x, kOpp[i], v, segment);
-          }
-        }
-    }
-    first_segment->push_back(segment);
+  segments_.clear();
+  for (std::size_t f = 0; f < filaments.size(); ++f) {
+    for (std::size_t k = 0; k + 1 < filaments[f].points.size(); ++k)
+      segments_.push_back({static_cast<std::int32_t>(f), static_cast<std::int32_t>(k)});
+    first_segment->push_back(static_cast<int>(segments_.size()));
   }
+  // The geometry runs in parallel over contiguous blocks of segments; the blocks are then
+  // merged in order, so the first segment to cut a link owns it, whatever the thread count.
+  const int n = static_cast<int>(segments_.size());
+  const int nt = std::max(1, std::min(threads, n / kSegmentsPerThread));
+  if (static_cast<int>(found_.size()) < nt) found_.resize(nt);
+#pragma omp parallel num_threads(nt) if (nt > 1)
+  {
+    const int tid = omp_get_thread_num(), used = omp_get_num_threads();
+    std::vector<CutLink>& out = found_[tid];
+    out.clear();
+    for (int s = n * tid / used; s < n * (tid + 1) / used; ++s)
+      cut_segment(filaments[segments_[s].first], segments_[s].second, s, out);
+  }
+  for (int t = 0; t < nt; ++t)
+    for (const CutLink& l : found_[t]) add(l);
   // Order by (cell, dir) without sorting the links: sort the cells, give each its offset, then
   // scatter every link to offset + rank of its direction among the cell's cut directions.
   // Two counting passes (x, then y) sort the cells in O(cells + width + height).

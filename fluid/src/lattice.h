@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -30,11 +31,14 @@ class LinkCutter {
   // All links cut, sorted by (cell, dir), one per (cell, dir): the first segment that cuts a
   // link owns it. `first_segment` gets the global id of each filament's first segment, then
   // the total.
-  void cut(const std::vector<Filament>& filaments, std::vector<CutLink>* links,
+  void cut(const std::vector<Filament>& filaments, int threads, std::vector<CutLink>* links,
            std::vector<int>* first_segment);
 
  private:
-  void add(std::int32_t cell, int dir, const Vec2& v, std::int32_t owner);
+  static constexpr int kSegmentsPerThread = 128;
+  void cut_segment(const Filament& fil, std::size_t k, std::int32_t segment,
+                   std::vector<CutLink>& out) const;
+  void add(const CutLink& link);
   void sort_by_cell(std::vector<std::int32_t>& cells);
   int width_, height_;
   std::vector<std::uint8_t> mask_;     // per cell: bit d = direction d already cut
@@ -42,6 +46,8 @@ class LinkCutter {
   std::vector<std::int32_t> touched_;  // cells with a cut link
   std::vector<CutLink> raw_;           // unique links in the order found
   std::vector<std::int32_t> scratch_, count_;
+  std::vector<std::pair<std::int32_t, std::int32_t>> segments_;  // (filament, index)
+  std::vector<std::vector<CutLink>> found_;                      // per thread
 };
 
 class LatticeBase {

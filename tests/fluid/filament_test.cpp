@@ -246,6 +246,43 @@ TEST(FluidFilament, ForcesHaveOneEntryPerSegmentAndVanishOutsideTheGrid) {
   EXPECT_TRUE(s.filament_forces().empty());
 }
 
+// Two long crossing filaments (links cut by both belong to the first): one and two threads
+// give the same forces, so the owner of a link does not depend on the thread count.
+TEST(FluidFilament, ThreadCountDoesNotChangeTheResult) {
+  std::vector<std::vector<std::vector<SegmentForce>>> results;
+  for (int threads : {1, 2}) {
+    Options o;
+    o.width = 160;
+    o.height = 120;
+    o.tau = 0.7;
+    o.precision = Precision::kDouble;
+    o.threads = threads;
+    o.left.kind = SideKind::kInlet;
+    o.left.velocity = Vec2(0.04, 0.01);
+    o.right.kind = SideKind::kOutflow;
+    Solver s(o);
+    Filament a, b;
+    for (int k = 0; k <= 160; ++k) {
+      a.points.push_back(Vec2(40 + 0.5 * k, 10 + 0.6 * k + 3 * std::sin(0.2 * k)));
+      b.points.push_back(Vec2(120 - 0.5 * k, 10 + 0.6 * k));
+      a.velocities.push_back(Vec2(0.01, 0));
+      b.velocities.push_back(Vec2(0, -0.01));
+    }
+    s.set_filaments({a, b});
+    s.step(60);
+    results.push_back(s.filament_forces());
+  }
+  ASSERT_EQ(results[0].size(), results[1].size());
+  double scale = 0;
+  for (const auto& f : results[0])
+    for (const SegmentForce& sf : f) scale = std::max(scale, sf.force.norm());
+  EXPECT_GT(scale, 0.0);
+  for (std::size_t k = 0; k < results[0].size(); ++k)
+    for (std::size_t j = 0; j < results[0][k].size(); ++j)
+      EXPECT_LT((results[0][k][j].force - results[1][k][j].force).norm(), 1e-12 * scale)
+          << k << " " << j;
+}
+
 TEST(FluidFilament, BadFilamentsGiveClearErrorsAndKeepThePreviousOnes) {
   Options o;
   o.width = 24;
