@@ -53,22 +53,23 @@ CurveResult extract_curves(const Image& image, const CurveOptions& options) {
   if (image.width() < 4 || image.height() < 4) return result;
   try {
     cv::Mat grey = detail::grey_image(image);
-    detail::remove_dots(grey, options.speck_size, static_cast<float>(3.0 * options.high_threshold));
+    // One closing (a square is much cheaper than a disk) serves twice: what
+    // it fills are specks to remove, and ink is what it lightens.
+    const double smax = *std::max_element(options.scales.begin(), options.scales.end());
+    const int k =
+        std::max(2 * options.speck_size + 1, 2 * static_cast<int>(std::ceil(2.5 * smax)) + 1);
+    cv::Mat closed;
+    cv::morphologyEx(grey, closed, cv::MORPH_CLOSE,
+                     cv::getStructuringElement(cv::MORPH_RECT, cv::Size(k, k)), cv::Point(-1, -1),
+                     1, cv::BORDER_REPLICATE);
+    detail::remove_dots(grey, closed, options.speck_size,
+                        static_cast<float>(3.0 * options.high_threshold));
     const float low = static_cast<float>(options.low_threshold);
     detail::LineField field = detail::compute_line_field(grey, options.scales, low,
                                                          static_cast<float>(options.blob_weight));
     // Centre lines run on ink only: large scales also answer a few pixels
     // past a line's end and beside its round cap, where the paper is blank.
-    {
-      const double smax = *std::max_element(options.scales.begin(), options.scales.end());
-      const int k = 2 * static_cast<int>(std::ceil(2.5 * smax)) + 1;
-      cv::Mat closed;
-      cv::morphologyEx(grey, closed, cv::MORPH_CLOSE,
-                       cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(k, k)),
-                       cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
-      const cv::Mat hat = closed - grey;
-      field.response.setTo(0.0f, hat < low);
-    }
+    field.response.setTo(0.0f, (closed - grey) < low);
     const cv::Mat ridge = detail::suppress_non_maxima(field, low);
     result.ridge_pixels = cv::countNonZero(ridge);
     if (result.ridge_pixels == 0) return result;
@@ -93,14 +94,16 @@ CurveResult extract_curves(const Image& image, const CurveOptions& options) {
     g.border_gap_length = std::max(2.0, result.line_width);
     result.curves = detail::link_curves(traced, image.width(), image.height(), g);
 
-    // Line pixels: the traced centre lines widened to the line width.
+    // Line pixels: ink within the line width of a traced centre line. Gaps
+    // that the linking closed are paper, not ink, and stay out.
     cv::Mat centre = cv::Mat::zeros(ridge.size(), CV_8U);
     for (std::size_t i = 0; i < traced.owner.size(); ++i)
       if (traced.owner[i] >= 0) centre.data[i] = 1;
-    const int r = std::max(1, static_cast<int>(std::ceil(result.line_width / 2.0)));
-    cv::Mat mask;
-    cv::dilate(centre, mask,
+    const int r = std::max(1, static_cast<int>(std::ceil(result.line_width / 2.0))) + 1;
+    cv::Mat near_centre;
+    cv::dilate(centre, near_centre,
                cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1)));
+    const cv::Mat mask = near_centre & ((closed - grey) > low);
     for (int y = 0; y < mask.rows; ++y)
       for (int x = 0; x < mask.cols; ++x) result.line_mask.at(x, y) = mask.at<std::uint8_t>(y, x);
   } catch (const cv::Exception& e) {

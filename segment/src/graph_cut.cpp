@@ -36,6 +36,8 @@ bool GraphCutOptions::is_valid(std::string* error) const {
     o << p << "colour_sigma_min = " << colour_sigma_min << "; must be in [1, 255]";
   else if (!(hair_colour_share >= 0.0 && hair_colour_share <= 1.0))
     o << p << "hair_colour_share = " << hair_colour_share << "; must be in [0, 1]";
+  else if (max_undrawn_run < 0)
+    o << p << "max_undrawn_run = " << max_undrawn_run << "; must be >= 0";
   else if (max_cycles < 1)
     o << p << "max_cycles = " << max_cycles << "; must be >= 1";
   if (o.str().empty()) return true;
@@ -234,18 +236,22 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
 
   // Distance to each label's strokes on a coarse grid: the term is smooth over
   // hundreds of pixels, so a few pixels of error do not matter.
-  const int f = std::max(1, static_cast<int>(std::ceil(std::max(W, H) / 256.0)));
+  const int f = std::max(1, static_cast<int>(std::ceil(std::max(W, H) / 128.0)));
   const int gw = (W + f - 1) / f, gh = (H + f - 1) / f;
-  std::vector<cv::Mat> dist(pr.nl);
-  for (int l = 0; l < pr.nl; ++l) {
-    cv::Mat free(gh, gw, CV_8U, cv::Scalar(1));
-    bool any = false;
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x)
-        if (painted.at(x, y) == pr.label_ids[l])
-          free.at<std::uint8_t>(y / f, x / f) = 0, any = true;
-    if (any) cv::distanceTransform(free, dist[l], cv::DIST_L2, 3, CV_32F);
+  std::vector<cv::Mat> dist(pr.nl), free(pr.nl);
+  std::vector<char> any(pr.nl, 0);
+  for (int l = 0; l < pr.nl; ++l) free[l] = cv::Mat(gh, gw, CV_8U, cv::Scalar(1));
+  for (int y = 0; y < H; ++y) {
+    for (int x = 0; x < W; ++x) {
+      const int s = painted.at(x, y);
+      if (s == kNoStroke) continue;
+      const int l = index_of.at(s);
+      free[l].at<std::uint8_t>(y / f, x / f) = 0;
+      any[l] = 1;
+    }
   }
+  for (int l = 0; l < pr.nl; ++l)
+    if (any[l]) cv::distanceTransform(free[l], dist[l], cv::DIST_L2, 3, CV_32F);
   const double sigma_d = options.distance_sigma_fraction * std::sqrt(double(W) * H);
 
   pr.unary.assign(static_cast<std::size_t>(pr.nf) * pr.nl, 0.0);
@@ -289,6 +295,23 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
     }
   }
 
+  // A curve edge is free to cut only where a line is drawn: the links that
+  // close gaps between lines are guesses, and cutting them costs as much as
+  // cutting anywhere else (the pieces either side are solved together).
+  auto drawn = [&](int t, int k) {
+    if (!use_mask) return true;
+    const Eigen::Vector2d a = mesh.V.row(mesh.F(t, k)), b = mesh.V.row(mesh.F(t, (k + 1) % 3));
+    const int n = std::max(1, static_cast<int>(std::ceil(2.0 * (b - a).norm())));
+    int run = 0, longest = 0;
+    for (int i = 0; i <= n; ++i) {
+      const Eigen::Vector2d p = a + (b - a) * (double(i) / n);
+      const int x = std::clamp(static_cast<int>(p.x()), 0, W - 1);
+      const int y = std::clamp(static_cast<int>(p.y()), 0, H - 1);
+      run = line_mask.at(x, y) ? 0 : run + 1;
+      longest = std::max(longest, run);
+    }
+    return longest <= options.max_undrawn_run * 2;  // samples are half a pixel apart
+  };
   pr.nb = detail::triangle_neighbours(mesh);
   pr.w.assign(pr.nf, {0.0, 0.0, 0.0});
   detail::UnionFind uf(pr.nf);
@@ -296,7 +319,8 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
     for (int k = 0; k < 3; ++k) {
       if (pr.nb[t][k] < 0) continue;
       const double len = (mesh.V.row(mesh.F(t, k)) - mesh.V.row(mesh.F(t, (k + 1) % 3))).norm();
-      const double phi = detail::edge_on_curve(mesh, t, k) ? options.phi_curve : options.phi_other;
+      const double phi =
+          detail::edge_on_curve(mesh, t, k) && drawn(t, k) ? options.phi_curve : options.phi_other;
       pr.w[t][k] = phi * len;
       if (pr.w[t][k] > 0.0) uf.unite(t, pr.nb[t][k]);
     }
@@ -316,7 +340,7 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
     std::set<int> cand{0};
     for (int t : tris)
       if (pr.seed[t] >= 0) cand.insert(pr.seed[t]);
-    if (cand.size() == 1) {
+    if (cand.size() == 1 && !options.unmarked_faces_background) {
       std::fill(total.begin(), total.end(), 0.0);
       for (int t : tris)
         for (int l = 1; l < pr.nl; ++l) total[l] += pr.u(t, l);

@@ -20,14 +20,10 @@ cv::Mat grey_image(const Image& image) {
   return grey;
 }
 
-void remove_dots(cv::Mat& grey, int max_size, float contrast) {
+void remove_dots(cv::Mat& grey, const cv::Mat& closed, int max_size, float contrast) {
   if (max_size <= 0 || grey.rows < 3 || grey.cols < 3) return;
   // Dark specks are pixels clearly darker than the light pixels around them
-  // (black-hat) that form small isolated blobs; lines are long connected runs.
-  const int k = 2 * max_size + 1;
-  const cv::Mat disk = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(k, k));
-  cv::Mat closed;
-  cv::morphologyEx(grey, closed, cv::MORPH_CLOSE, disk, cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
+  // (closing minus image) that form small isolated blobs; lines are long runs.
   cv::Mat dark = (closed - grey) > contrast;
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(dark, labels, stats, centroids, 4, CV_32S);

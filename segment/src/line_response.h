@@ -21,8 +21,9 @@ cv::Mat grey_image(const Image& image);
 
 // Replaces isolated dark specks no larger than max_size × max_size pixels and
 // at least `contrast` grey levels darker than their surroundings (screentone
-// dots, dirt) by the surrounding tone, in place.
-void remove_dots(cv::Mat& grey, int max_size, float contrast);
+// dots, dirt) by the surrounding tone from `closed` (a morphological closing
+// of grey wider than max_size), in place.
+void remove_dots(cv::Mat& grey, const cv::Mat& closed, int max_size, float contrast);
 
 // Strength of dark lines at the best of `scales`: the scale-normalised largest
 // Hessian eigenvalue, capped by how much darker the centre is than both sides

@@ -40,7 +40,7 @@ struct CurveOptions {
 
 struct CurveResult {
   std::vector<Curve> curves;  // pixel coordinates, pixel (i, j) covers [i, i+1) × [j, j+1)
-  // 1 where a drawn line covers the pixel (response above the low threshold), else 0.
+  // 1 where a drawn line covers the pixel (ink near a traced centre line), else 0.
   LabelMap line_mask;
   double line_width = 0.0;  // estimated typical line width, pixels (0 if no lines)
   int ridge_pixels = 0;     // centre-line pixels found before linking

@@ -21,7 +21,7 @@ struct GraphCutOptions {
   double min_probability = 0.01;
   // Distance to a label's strokes enters P as exp(−d² / 2σ²) with σ =
   // distance_sigma_fraction × sqrt(width × height).
-  double distance_sigma_fraction = 0.5;
+  double distance_sigma_fraction = 1.0;
   // Colour similarity uses a Gaussian mixture of up to this many components
   // per label, with at least colour_sigma_min grey levels of spread.
   int gmm_components = 3;
@@ -29,6 +29,14 @@ struct GraphCutOptions {
   // A triangle that looks like any hair colour keeps this share of a label's
   // colour likelihood (shaded strands whose strokes touch one tone only).
   double hair_colour_share = 0.5;
+  // A curve edge counts as drawn (φ = phi_curve) only if no stretch longer
+  // than this (pixels) along it is off the line mask; links that close gaps
+  // between lines get phi_other.
+  int max_undrawn_run = 1;
+  // A face closed off by drawn lines that holds no stroke is background (the
+  // user marks every strand); false: it takes the hair label that fits it
+  // best, or background, by its terminal weights.
+  bool unmarked_faces_background = true;
   int max_cycles = 5;  // α-expansion sweeps over the labels
 
   bool is_valid(std::string* error) const;
