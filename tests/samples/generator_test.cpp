@@ -240,6 +240,51 @@ TEST(Generator, SplitStrandsAndForksOccur) {
   EXPECT_GT(below, 10);
 }
 
+TEST(Generator, StrokesReachEveryPartOfTheirRegion) {
+  // A user marks each arm of a bent region; so do the generated strokes: few
+  // pixels of a region lie far from all its strokes. "Far" grows with how wide
+  // the region is (its deepest inside pixel).
+  for (std::uint64_t seed = 40; seed < 43; ++seed) {
+    const Options o = small(seed);
+    const AnnotatedCase c = generate_case(o);
+    std::map<int, std::vector<Vec2>> samples;  // points along each region's strokes
+    for (const Stroke& s : c.strokes->strokes) {
+      if (s.label == 0) continue;
+      const Polyline dense = s.points.size() > 1 ? resample_polyline(s.points, 2.0) : s.points;
+      samples[s.label].insert(samples[s.label].end(), dense.begin(), dense.end());
+    }
+    for (const auto& [id, px] : pixels_of(c.regions)) {
+      // Depth of each pixel: distance along the axes to the nearest pixel
+      // outside the region. Only pixels deep enough to hold a stroke count.
+      std::vector<int> depth(px.size(), 0);
+      int deepest = 0;
+      for (std::size_t i = 0; i < px.size(); ++i) {
+        const auto [x, y] = px[i];
+        for (int r = 1; r < 400 && depth[i] == 0; ++r) {
+          for (auto [dx, dy] : {std::pair{r, 0}, {-r, 0}, {0, r}, {0, -r}}) {
+            if (!c.regions.contains(x + dx, y + dy) || c.regions.at(x + dx, y + dy) != id) {
+              depth[i] = r;
+            }
+          }
+        }
+        deepest = std::max(deepest, depth[i]);
+      }
+      const double far = std::max(30.0, 3.0 * deepest);
+      int deep = 0, far_pixels = 0;
+      for (std::size_t i = 0; i < px.size(); ++i) {
+        if (depth[i] < 4) continue;
+        ++deep;
+        double best = 1e300;
+        for (const Vec2& q : samples.at(id)) {
+          best = std::min(best, (q - Vec2(px[i].first, px[i].second)).norm());
+        }
+        far_pixels += best > far;
+      }
+      EXPECT_LE(far_pixels, 0.15 * deep) << "seed " << seed << " region " << id;
+    }
+  }
+}
+
 TEST(Generator, WriteReadRoundTrip) {
   const Options o = small(11, Shading::kGradient);
   const AnnotatedCase c = generate_case(o);

@@ -18,7 +18,7 @@ constexpr double kStrokeWidth = 3.0;
 // and some margin so strokes sit "well inside".
 constexpr double kMinDepth = 3.0;
 constexpr int kMinContact = 3;  // boundary pixels for two regions to be neighbours
-constexpr int kHairStrokes = 2;
+constexpr int kHairStrokes = 3;
 constexpr int kBackgroundComponents = 3;
 constexpr int kBackgroundStrokes = 2;
 
@@ -70,6 +70,90 @@ std::vector<Component> label_components(const cv::Mat& owner, std::vector<int>& 
 
 // Polylines along the middle of component `id`: the deepest pixel of each slice
 // across its main axis, joined where the joining segment stays deep inside.
+// A stroke along the middle of the candidate area: from its deepest pixel,
+// walk both ways in steps, each time to the deepest candidate ahead (turning at
+// most 60 degrees) whose segment stays deep inside. It follows bent locks and
+// the arc of back hair, as a hand-drawn stroke would.
+Polyline ridge_walk(const cv::Mat& dist, const cv::Mat& candidate, double level) {
+  double best_depth = -1;
+  cv::Point start(-1, -1);
+  for (int y = 0; y < dist.rows; ++y) {
+    const auto* d = dist.ptr<float>(y);
+    const auto* c = candidate.ptr<uchar>(y);
+    for (int x = 0; x < dist.cols; ++x) {
+      if (c[x] && d[x] > best_depth) {
+        best_depth = d[x];
+        start = {x, y};
+      }
+    }
+  }
+  if (start.x < 0) return {};
+  auto depth_at = [&](const Vec2& p) {
+    const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+    if (x < 0 || y < 0 || x >= dist.cols || y >= dist.rows) return -1.0;
+    return static_cast<double>(dist.at<float>(y, x));
+  };
+  auto candidate_at = [&](const Vec2& p) {
+    const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+    return x >= 0 && y >= 0 && x < dist.cols && y < dist.rows && candidate.at<uchar>(y, x) != 0;
+  };
+  auto deep_enough = [&](const Vec2& a, const Vec2& b) {
+    const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() * 2.0)));
+    for (int k = 0; k <= steps; ++k) {
+      if (depth_at(a + (b - a) * (static_cast<double>(k) / steps)) < kMinDepth) return false;
+    }
+    return true;
+  };
+  constexpr int kAngles = 48;
+  constexpr int kMaxSteps = 60;
+  constexpr double kPi = 3.14159265358979323846;
+  const double step = std::clamp(level, 4.0, 14.0);
+  const Vec2 origin(start.x, start.y);
+  std::vector<Polyline> halves(2);
+  Vec2 first_dir(0, 0);
+  for (int half = 0; half < 2; ++half) {
+    Vec2 p = origin;
+    Vec2 dir = half == 0 ? Vec2(0, 0) : Vec2(-first_dir);
+    for (int n = 0; n < kMaxSteps; ++n) {
+      double best = -1;
+      Vec2 next(0, 0);
+      for (int k = 0; k < kAngles; ++k) {
+        const double a = 2.0 * kPi * k / kAngles;
+        const Vec2 u(std::cos(a), std::sin(a));
+        if (dir.squaredNorm() > 0 && u.dot(dir) < 0.5) continue;  // at most 60 degrees
+        const Vec2 q = p + u * step;
+        if (!candidate_at(q)) continue;
+        const double d = depth_at(q);
+        if (d > best && deep_enough(p, q)) {
+          best = d;
+          next = q;
+        }
+      }
+      if (best < 0) break;
+      // Do not walk back over the other half.
+      bool revisit = false;
+      for (const Polyline& h : halves) {
+        for (const Vec2& q : h) revisit = revisit || (q - next).norm() < 0.7 * step;
+      }
+      if ((next - origin).norm() < 0.7 * step && n > 0) revisit = true;
+      if (revisit) break;
+      dir = (next - p).normalized();
+      if (half == 0 && n == 0) first_dir = dir;
+      halves[half].push_back(next);
+      p = next;
+    }
+    if (half == 0 && halves[0].empty()) break;  // a dot: no direction to go
+  }
+  Polyline line(halves[1].rbegin(), halves[1].rend());
+  line.push_back(origin);
+  line.insert(line.end(), halves[0].begin(), halves[0].end());
+  for (Vec2& q : line) q = Vec2(std::round(q.x()), std::round(q.y()));
+  return line;
+}
+
+// Strokes along the middle of component `id`. A region that bends (the back
+// hair around a cap, a U-shaped lock) gets more strokes, in the parts the first
+// ones leave far away, as a user would mark each arm.
 std::vector<Polyline> inner_strokes(const std::vector<int>& comp, int width, int id,
                                     const Component& c, int max_strokes) {
   const int bw = c.x1 - c.x0 + 3, bh = c.y1 - c.y0 + 3;  // one empty pixel around
@@ -85,68 +169,48 @@ std::vector<Polyline> inner_strokes(const std::vector<int>& comp, int width, int
   cv::minMaxLoc(dist, nullptr, &dmax);
   if (dmax < kMinDepth) return {};
   const double thr = std::max(kMinDepth, 0.5 * dmax);
+  // A part counts as covered within this distance of a stroke.
+  const double reach = std::max(30.0, 3.0 * thr);
 
-  std::vector<Eigen::Vector3d> cand;  // x, y, depth
-  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  cv::Mat covered(bh, bw, CV_8U, cv::Scalar(0));
+  std::vector<Polyline> out;
+  std::size_t inside = 0;  // pixels that could hold a stroke
   for (int y = 0; y < bh; ++y) {
     const auto* d = dist.ptr<float>(y);
-    for (int x = 0; x < bw; ++x) {
-      if (d[x] >= thr) {
-        cand.emplace_back(x, y, d[x]);
-        mean += Eigen::Vector2d(x, y);
+    for (int x = 0; x < bw; ++x) inside += d[x] >= kMinDepth;
+  }
+  while (static_cast<int>(out.size()) < max_strokes) {
+    // The uncovered part, and how deep it is: a thin arm left over from a
+    // wide region gets a stroke along its own middle.
+    double deepest = 0;
+    std::size_t left = 0;
+    for (int y = 0; y < bh; ++y) {
+      const auto* d = dist.ptr<float>(y);
+      const auto* cv_row = covered.ptr<uchar>(y);
+      for (int x = 0; x < bw; ++x) {
+        if (cv_row[x] || d[x] < kMinDepth) continue;
+        deepest = std::max(deepest, static_cast<double>(d[x]));
+        ++left;
       }
     }
-  }
-  mean /= static_cast<double>(cand.size());
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const auto& p : cand) {
-    const Eigen::Vector2d d = p.head<2>() - mean;
-    cov += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-  const Eigen::Vector2d axis = eig.eigenvectors().col(1);
-  double smin = 1e300, smax = -1e300;
-  for (const auto& p : cand) {
-    const double s = axis.dot(p.head<2>() - mean);
-    smin = std::min(smin, s);
-    smax = std::max(smax, s);
-  }
-  const int bins = std::clamp(static_cast<int>((smax - smin) / std::max(8.0, 2.0 * thr)), 1, 8);
-  std::vector<int> best(static_cast<std::size_t>(bins), -1);
-  for (std::size_t i = 0; i < cand.size(); ++i) {
-    const double s = axis.dot(cand[i].head<2>() - mean);
-    const int b = std::min(bins - 1, static_cast<int>((s - smin) / (smax - smin + 1e-9) * bins));
-    if (best[b] < 0 || cand[i].z() > cand[best[b]].z()) best[b] = static_cast<int>(i);
-  }
-  auto deep_enough = [&](const Vec2& a, const Vec2& b) {
-    const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() * 2.0)));
-    for (int k = 0; k <= steps; ++k) {
-      const Vec2 p = a + (b - a) * (static_cast<double>(k) / steps);
-      const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
-      if (x < 0 || y < 0 || x >= bw || y >= bh || dist.at<float>(y, x) < kMinDepth) return false;
+    // Stop when what is left is a small part of the region's inside.
+    if (left == 0 || (!out.empty() && left * 12 < inside)) break;
+    const double level = out.empty() ? thr : std::max(kMinDepth, 0.5 * deepest);
+    cv::Mat candidate = (dist >= level) & (covered == 0);
+    Polyline line = ridge_walk(dist, candidate, level);
+    if (line.empty()) break;
+    std::vector<cv::Point> pts;
+    for (const Vec2& p : line) pts.emplace_back(static_cast<int>(p.x()), static_cast<int>(p.y()));
+    const int radius = static_cast<int>(reach);
+    if (pts.size() == 1) {
+      cv::circle(covered, pts[0], radius, cv::Scalar(255), cv::FILLED);
+    } else {
+      cv::polylines(covered, std::vector{pts}, false, cv::Scalar(255), 2 * radius);
     }
-    return true;
-  };
-  std::vector<Polyline> chains;
-  Polyline chain;
-  for (int b = 0; b < bins; ++b) {
-    if (best[b] < 0) continue;
-    const Vec2 p(cand[best[b]].x(), cand[best[b]].y());
-    if (!chain.empty() && !deep_enough(chain.back(), p)) {
-      chains.push_back(chain);
-      chain.clear();
-    }
-    chain.push_back(p);
+    for (Vec2& p : line) p += Vec2(c.x0 - 1, c.y0 - 1);
+    out.push_back(std::move(line));
   }
-  if (!chain.empty()) chains.push_back(chain);
-  std::stable_sort(chains.begin(), chains.end(), [](const Polyline& a, const Polyline& b) {
-    return polyline_length(a) > polyline_length(b);
-  });
-  if (static_cast<int>(chains.size()) > max_strokes) chains.resize(max_strokes);
-  for (Polyline& l : chains) {
-    for (Vec2& p : l) p += Vec2(c.x0 - 1, c.y0 - 1);
-  }
-  return chains;
+  return out;
 }
 
 // Short strokes on the paper around the hair, a fixed distance from it, one per

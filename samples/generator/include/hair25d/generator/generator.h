@@ -49,8 +49,10 @@ struct Options {
 // - two regions are a pair when they meet across one line: after each region
 //   grows by ceil(line_width / 2) + 1 pixels into the line around it, they
 //   share at least 3 pixel edges;
-// - every pixel under a stroke (width 3) lies in the stroke's region (label 0
-//   strokes: on background, face or body);
+// - strokes (width 3) follow the middle of their region, one to three per
+//   region (more where a region bends); every pixel under a stroke lies in
+//   the stroke's region (label 0 strokes: on paper, face or body, and a ring
+//   of short ones around the hair);
 // - head_center is the centre of the cranium circle the hair is laid around;
 // - noise and JPEG change the picture only, never the ground truth.
 AnnotatedCase generate_case(const Options& options);
