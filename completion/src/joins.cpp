@@ -9,6 +9,10 @@
 namespace hair25d::completion::detail {
 namespace {
 
+// Weight of the width change half-way along a join (|log(middle / ends)|)
+// in the cost; chosen on the annotated cases with the other weights.
+constexpr double kBulgeWeight = 4.0;
+
 double angle(const Vec2& a, const Vec2& b) {
   const double la = a.norm(), lb = b.norm();
   if (la <= 0 || lb <= 0) return M_PI;
@@ -98,6 +102,14 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       const double angles[4] = {angle(a.tangent_p, c1), angle(-b.tangent_q, c1),
                                 angle(b.tangent_p, c2), angle(-a.tangent_q, c2)};
       if (*std::max_element(angles, angles + 4) > max_angle) continue;
+      // The hidden part keeps a strand's width: half-way along the joins its
+      // width lies near the widths at the two cuts (criterion 3 of §5.1 seen
+      // from the whole join, not only its ends).
+      const CubicBezier first = join_bezier(a.p, a.tangent_p, b.q, -b.tangent_q);
+      const CubicBezier second = join_bezier(b.p, b.tangent_p, a.q, -a.tangent_q);
+      const double middle = (first.point(0.5) - second.point(0.5)).norm();
+      const double ends = 0.5 * (a.width + b.width);
+      const double bulge = std::abs(std::log(std::max(middle, 1.0) / std::max(ends, 1.0)));
       Join join;
       join.edge_a = static_cast<int>(i);
       join.edge_b = static_cast<int>(j);
@@ -111,7 +123,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       const double mean_angle = (angles[0] + angles[1] + angles[2] + angles[3]) / 4;
       join.cost = 2.0 * mean_angle / max_angle + *std::max_element(angles, angles + 4) / max_angle +
                   0.4 * colour / o.max_colour_distance + 0.5 * (1.0 - narrow / wide) +
-                  0.5 * std::min(gap / wide, 3.0) + 3.0 * (1.0 - cover);
+                  0.5 * std::min(gap / wide, 3.0) + 3.0 * (1.0 - cover) + kBulgeWeight * bulge;
       // §5.1 matches edges "around a common occluder"; a gap under two
       // overlapping occluders is allowed but costs more.
       bool common = false;

@@ -46,8 +46,8 @@ TEST(AnnotatedCases, JoinsMatchTheAnnotatedStrands) {
   std::printf("all: precision %.3f recall %.3f, mean strand IoU %.3f\n", total.precision(),
               total.recall(), iou_sum / std::max(1, iou_count));
   // Floors at the measured level (see docs/completion.md for the targets).
-  EXPECT_GE(total.precision(), 0.88);
-  EXPECT_GE(total.recall(), 0.74);
+  EXPECT_GE(total.precision(), 0.93);
+  EXPECT_GE(total.recall(), 0.78);
   EXPECT_GE(iou_sum / iou_count, 0.65);
 }
 

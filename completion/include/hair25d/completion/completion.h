@@ -34,7 +34,7 @@ struct Options {
   double max_colour_distance = 90.0;  // RGB distance of the pieces' colours
   double min_join_coverage = 0.85;    // share of the join patch under occluders
   double min_width_ratio = 0.2;       // narrower / wider occluding edge
-  double max_join_cost = 2.1;
+  double max_join_cost = 2.4;
 
   // Cases 2 and 3 (§5.2–5.4).
   ContourOptions contour;
