@@ -3,6 +3,7 @@
 // counters; the drawing is made once, outside the timed loop.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <map>
 
 #include "hair25d/generator/generator.h"
@@ -13,23 +14,29 @@ namespace {
 
 using namespace hair25d;
 
-// Strand counts and sizes chosen so the cases have about 10, 40 and 160 regions.
+// Image sizes per target region count; the strand count is raised until the
+// generated case has at least that many regions (the generator splits strands
+// into several regions, so the ratio is not fixed).
 struct Size {
-  int strands, width, height;
+  int width, height;
 };
-const std::map<int, Size> kSizes = {
-    {10, {9, 640, 480}}, {40, {36, 640, 480}}, {160, {165, 1280, 960}}};
+const std::map<int, Size> kSizes = {{10, {640, 480}}, {40, {640, 480}}, {160, {1280, 960}}};
 
 const AnnotatedCase& case_for(int regions) {
   static std::map<int, AnnotatedCase> cache;
   auto it = cache.find(regions);
   if (it == cache.end()) {
     generator::Options o;
-    o.strand_count = kSizes.at(regions).strands;
     o.width = kSizes.at(regions).width;
     o.height = kSizes.at(regions).height;
     o.seed = 42;
-    it = cache.emplace(regions, generator::generate_case(o)).first;
+    AnnotatedCase c;
+    for (int strands = std::max(1, regions * 2 / 3);; strands += std::max(1, strands / 10)) {
+      o.strand_count = strands;
+      c = generator::generate_case(o);
+      if (static_cast<int>(c.regions.labels().size()) >= regions || strands > 4 * regions) break;
+    }
+    it = cache.emplace(regions, std::move(c)).first;
   }
   return it->second;
 }
