@@ -110,6 +110,20 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       const double middle = (first.point(0.5) - second.point(0.5)).norm();
       const double ends = 0.5 * (a.width + b.width);
       const double bulge = std::abs(std::log(std::max(middle, 1.0) / std::max(ends, 1.0)));
+      const double gap = 0.5 * (c1.norm() + c2.norm());
+      // Tangent continuity is the most reliable cue (§5.1 criterion 3); colour
+      // varies with shading and widths with the angle of the cut.
+      const double mean_angle = (angles[0] + angles[1] + angles[2] + angles[3]) / 4;
+      double cost = 2.0 * mean_angle / max_angle +
+                    *std::max_element(angles, angles + 4) / max_angle +
+                    0.4 * colour / o.max_colour_distance + 0.5 * (1.0 - narrow / wide) +
+                    0.5 * std::min(gap / wide, 3.0) + kBulgeWeight * bulge;
+      // §5.1 matches edges "around a common occluder"; a gap under two
+      // overlapping occluders is allowed but costs more.
+      bool common = false;
+      for (int occ : a.occluders) common = common || b.occluders.count(occ) > 0;
+      if (!common) cost += 0.4;
+      if (cost > o.max_join_cost) continue;  // before the costly coverage raster
       Join join;
       join.edge_a = static_cast<int>(i);
       join.edge_b = static_cast<int>(j);
@@ -117,18 +131,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       int hidden = 0;
       const double cover = coverage(ctx, join.patch, a.region, b.region, &hidden);
       if (cover < o.min_join_coverage) continue;
-      const double gap = 0.5 * (c1.norm() + c2.norm());
-      // Tangent continuity is the most reliable cue (§5.1 criterion 3); colour
-      // varies with shading and widths with the angle of the cut.
-      const double mean_angle = (angles[0] + angles[1] + angles[2] + angles[3]) / 4;
-      join.cost = 2.0 * mean_angle / max_angle + *std::max_element(angles, angles + 4) / max_angle +
-                  0.4 * colour / o.max_colour_distance + 0.5 * (1.0 - narrow / wide) +
-                  0.5 * std::min(gap / wide, 3.0) + 3.0 * (1.0 - cover) + kBulgeWeight * bulge;
-      // §5.1 matches edges "around a common occluder"; a gap under two
-      // overlapping occluders is allowed but costs more.
-      bool common = false;
-      for (int occ : a.occluders) common = common || b.occluders.count(occ) > 0;
-      if (!common) join.cost += 0.4;
+      join.cost = cost + 3.0 * (1.0 - cover);
       if (join.cost > o.max_join_cost) continue;
       candidates.push_back(std::move(join));
     }
