@@ -115,21 +115,27 @@ Polyline ridge_walk(const cv::Mat& dist, const cv::Mat& candidate, double level)
     Vec2 p = origin;
     Vec2 dir = half == 0 ? Vec2(0, 0) : Vec2(-first_dir);
     for (int n = 0; n < kMaxSteps; ++n) {
-      double best = -1;
-      Vec2 next(0, 0);
+      // Deepest first; the segment test runs only until one passes.
+      std::vector<std::pair<double, Vec2>> ahead;
       for (int k = 0; k < kAngles; ++k) {
         const double a = 2.0 * kPi * k / kAngles;
         const Vec2 u(std::cos(a), std::sin(a));
         if (dir.squaredNorm() > 0 && u.dot(dir) < 0.5) continue;  // at most 60 degrees
         const Vec2 q = p + u * step;
-        if (!candidate_at(q)) continue;
-        const double d = depth_at(q);
-        if (d > best && deep_enough(p, q)) {
-          best = d;
+        if (candidate_at(q)) ahead.emplace_back(depth_at(q), q);
+      }
+      std::stable_sort(ahead.begin(), ahead.end(),
+                       [](const auto& a, const auto& b) { return a.first > b.first; });
+      Vec2 next(0, 0);
+      bool found = false;
+      for (const auto& [d, q] : ahead) {
+        if (deep_enough(p, q)) {
           next = q;
+          found = true;
+          break;
         }
       }
-      if (best < 0) break;
+      if (!found) break;
       // Do not walk back over the other half.
       bool revisit = false;
       for (const Polyline& h : halves) {
