@@ -108,6 +108,15 @@ TEST(FluidApi, OptionsNameOptionValueAndRule) {
   o.obstacle_labels(2, 2) = -3;
   expect_invalid(o, "fluid::Options::obstacle_labels has -3");
   o = small();
+  o.sponge_width = 4;  // half of the 7-cell height is 3
+  expect_invalid(o, "fluid::Options::sponge_width = 4; must be in [0, 3]");
+  o = small();
+  o.sponge_velocity = Vec2(0, 0.3);
+  expect_invalid(o, "fluid::Options::sponge_velocity = (0, 0.3)");
+  o = small();
+  o.smagorinsky = -0.1;
+  expect_invalid(o, "fluid::Options::smagorinsky = -0.1");
+  o = small();
   o.obstacle_polygons = {{Vec2(1, 1), Vec2(2, 2)}};
   expect_invalid(o, "fluid::Options::obstacle_polygons[0] has 2 points");
   o.obstacle_polygons = {{Vec2(1, 1), Vec2(2, 2), Vec2(INFINITY, 1)}};
@@ -127,6 +136,7 @@ TEST(FluidApi, SolverCallsRejectBadArguments) {
   expect_error([&] { s.set_inlet_velocities(SideName::kLeft, std::vector<Vec2>(7, Vec2(1, 0))); },
                "velocity 0 = (1, 0)");
   expect_error([&] { s.set_body_acceleration(Vec2(std::nan(""), 0)); }, "body_acceleration");
+  expect_error([&] { s.set_sponge_velocity(Vec2(1, 0)); }, "sponge_velocity = (1, 0)");
   expect_error([&] { s.velocity(13, 0); }, "cell (13, 0) is outside the 13 x 7 grid");
   expect_error([&] { s.density(0, -1); }, "cell (0, -1)");
   const Eigen::MatrixXd ones = Eigen::MatrixXd::Ones(7, 13), zero = Eigen::MatrixXd::Zero(7, 13);
