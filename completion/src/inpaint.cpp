@@ -55,12 +55,21 @@ class Filler {
       for (int x = 0; x < w_; ++x)
         integral_[idx1(x + 1, y + 1)] = is_source[idx(x, y)] + integral_[idx1(x, y + 1)] +
                                         integral_[idx1(x + 1, y)] - integral_[idx1(x, y)];
-    const int r = o_.patch_radius;
-    valid_.assign(n, 0);
-    for (int y = r; y < h_ - r; ++y)
-      for (int x = r; x < w_ - r; ++x)
-        valid_[idx(x, y)] =
-            source_sum(x - r, y - r, x + r + 1, y + r + 1) == (2 * r + 1) * (2 * r + 1);
+    // Thin shapes hold no whole patch of the asked size: use the largest
+    // size that has at least one whole source patch.
+    for (r_ = o_.patch_radius; r_ >= 1; --r_) {
+      const int r = r_;
+      valid_.assign(n, 0);
+      bool any = false;
+      for (int y = r; y < h_ - r; ++y)
+        for (int x = r; x < w_ - r; ++x) {
+          const bool ok =
+              source_sum(x - r, y - r, x + r + 1, y + r + 1) == (2 * r + 1) * (2 * r + 1);
+          valid_[idx(x, y)] = ok;
+          any = any || ok;
+        }
+      if (any || r_ == 1) break;
+    }
     grey_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const Rgba& c = image_.data()[i];
@@ -114,7 +123,7 @@ class Filler {
 
   // P(p) = C(p) D(p) (Criminisi et al. 2004, §3).
   void push(int x, int y) {
-    const int r = o_.patch_radius;
+    const int r = r_;
     float c = 0;
     int count = 0;
     for (int dy = -r; dy <= r; ++dy)
@@ -151,7 +160,7 @@ class Filler {
   // Best source patch centre for the target at (x, y): least SSD over the
   // target's known pixels, searched in a window that widens until it holds one.
   bool best_source(int x, int y, int* bx, int* by) const {
-    const int r = o_.patch_radius;
+    const int r = r_;
     long best = std::numeric_limits<long>::max();
     for (int radius = o_.search_radius;; radius *= 2) {
       const int step = o_.search_step;
@@ -180,7 +189,7 @@ class Filler {
   }
 
   int fill_patch(int x, int y, InpaintResult* result) {
-    const int r = o_.patch_radius;
+    const int r = r_;
     int bx = 0, by = 0;
     const bool found = best_source(x, y, &bx, &by);
     // Confidence of the filled pixels: the target patch's C(p).
@@ -236,6 +245,7 @@ class Filler {
   Image& image_;
   const InpaintOptions& o_;
   int w_, h_;
+  int r_ = 1;  // patch radius in use
   std::vector<std::uint8_t> known_;
   std::vector<float> confidence_;
   std::vector<int> integral_;
