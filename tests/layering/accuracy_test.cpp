@@ -6,8 +6,10 @@
 // that a regression fails; the gap to 95% is reported, not hidden.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 
 #include "hair25d/core/annotation.h"
 #include "hair25d/layering/evaluation.h"
@@ -73,6 +75,34 @@ TEST(Accuracy, GeneratedCasesInSeveralStyles) {
               100 * kTarget);
   RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
   EXPECT_GE(t.accuracy(), 0.75);
+}
+
+TEST(Accuracy, GeneratedOrderDoesNotDependOnRegionNumbers) {
+  for (std::uint64_t seed : {31u, 32u, 33u}) {
+    generator::Options o;
+    o.width = 480;
+    o.height = 360;
+    o.strand_count = 10;
+    o.seed = seed;
+    const AnnotatedCase c = generator::generate_case(o);
+    const Result r = layer_regions(c.image, c.regions);
+    // Renumber: reverse the order of ids and spread them out.
+    const std::vector<int> ids = c.regions.labels();
+    std::map<int, int> perm;
+    for (std::size_t i = 0; i < ids.size(); ++i) perm[ids[i]] = 1000 - 7 * static_cast<int>(i);
+    LabelMap moved = c.regions;
+    for (std::size_t i = 0; i < moved.size(); ++i)
+      if (moved.data()[i] != 0) moved.data()[i] = perm.at(moved.data()[i]);
+    const Result p = layer_regions(c.image, moved);
+    ASSERT_EQ(r.depth.size(), p.depth.size());
+    for (const auto& [id, depth] : r.depth) EXPECT_EQ(p.depth.at(perm.at(id)), depth) << seed;
+    // And the order is acyclic: every relation holds in it.
+    for (const RegionRelation& x : p.relations) {
+      if (x.relation == Relation::kAbove) EXPECT_GT(p.depth.at(x.a), p.depth.at(x.b));
+      if (x.relation == Relation::kBelow) EXPECT_LT(p.depth.at(x.a), p.depth.at(x.b));
+      if (x.relation == Relation::kEqual) EXPECT_EQ(p.depth.at(x.a), p.depth.at(x.b));
+    }
+  }
 }
 #endif
 
