@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <numeric>
 #include <opencv2/imgproc.hpp>
 #include <set>
@@ -201,13 +202,20 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   for (auto& [root, members] : groups) pieces.groups.push_back(members);
 
   report(progress, "completion", 0.6, "strands");
+  // The background fill is independent of the strands: run it beside them.
+  std::future<Image> background;
+  if (options.inpaint_background && options.threads > 1)
+    background = std::async(std::launch::async, [&] {
+      return detail::fill_background(ctx, &result.background_inpaint);
+    });
   result.strands = detail::assemble_strands(ctx, pieces, &reports, &result.strand_inpaint);
   report(progress, "completion", 0.85, "background");
-  if (options.inpaint_background) {
+  if (background.valid())
+    result.background = background.get();
+  else if (options.inpaint_background)
     result.background = detail::fill_background(ctx, &result.background_inpaint);
-  } else {
+  else
     result.background = image;
-  }
   result.edges = std::move(reports);
   result.regions = std::move(ctx.labels);
   std::ostringstream s;

@@ -33,6 +33,8 @@ bool Options::is_valid(std::string* error) const {
   if (!(fit_length >= 3)) return fail("fit_length = " + num(fit_length) + "; must be >= 3");
   if (!(fit_regularization >= 0))
     return fail("fit_regularization = " + num(fit_regularization) + "; must be >= 0");
+  if (threads < 1 || threads > 64)
+    return fail("threads = " + std::to_string(threads) + "; must be in [1, 64]");
   if (background_max_side < 16)
     return fail("background_max_side = " + std::to_string(background_max_side) + "; must be >= 16");
   std::string inner;

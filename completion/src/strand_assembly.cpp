@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <opencv2/imgproc.hpp>
 
 #include "hair25d/completion/inpaint.h"
@@ -130,12 +131,39 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
 std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPieces& pieces,
                                               std::vector<EdgeReport>* reports,
                                               InpaintResult* inpainted) {
-  std::vector<CompletedStrand> out;
-  for (const std::vector<int>& members : pieces.groups) {
-    std::vector<const PieceArea*> areas;
-    for (const PieceArea& a : pieces.areas)
-      if (std::find(members.begin(), members.end(), a.region) != members.end()) areas.push_back(&a);
-    out.push_back(build_strand(ctx, members, areas, reports, inpainted));
+  const std::size_t n = pieces.groups.size();
+  std::vector<CompletedStrand> out(n);
+  // Strands are independent (each edge report belongs to one strand): two
+  // workers take every other strand; counters are summed afterwards.
+  InpaintResult counts[2];
+  auto work = [&](std::size_t first, InpaintResult* count) {
+    for (std::size_t g = first; g < n; g += 2) {
+      const std::vector<int>& members = pieces.groups[g];
+      std::vector<const PieceArea*> areas;
+      for (const PieceArea& a : pieces.areas)
+        if (std::find(members.begin(), members.end(), a.region) != members.end())
+          areas.push_back(&a);
+      out[g] = build_strand(ctx, members, areas, reports, count);
+    }
+  };
+  if (ctx.options->threads > 1 && n > 1) {
+    auto other = std::async(std::launch::async, work, 1, &counts[1]);
+    work(0, &counts[0]);
+    other.get();
+  } else {
+    for (std::size_t g = 0; g < n; ++g) {
+      const std::vector<int>& members = pieces.groups[g];
+      std::vector<const PieceArea*> areas;
+      for (const PieceArea& a : pieces.areas)
+        if (std::find(members.begin(), members.end(), a.region) != members.end())
+          areas.push_back(&a);
+      out[g] = build_strand(ctx, members, areas, reports, &counts[0]);
+    }
+  }
+  for (const InpaintResult& c : counts) {
+    inpainted->filled += c.filled;
+    inpainted->patches += c.patches;
+    inpainted->unfilled += c.unfilled;
   }
   return out;
 }

@@ -47,6 +47,7 @@ struct Options {
   bool inpaint_background = true;
   InpaintOptions inpaint;
   int background_max_side = 320;  // the background is filled at most this size, then upscaled
+  int threads = 2;  // strands and background filled by up to this many threads (1 = serial)
 
   // False, with a message naming the option, its value and the rule, if unusable.
   bool is_valid(std::string* error) const;
