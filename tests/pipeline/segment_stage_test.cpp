@@ -58,6 +58,20 @@ TEST(SegmentStage, WithoutStrokesRegionsAreNumberedFromOne) {
   EXPECT_NE(run.regions.at(5, 5), run.regions.at(90, 5));
 }
 
+TEST(SegmentStage, HairColourPicksTheRegionsOfThatColour) {
+  Image img = split_drawing();  // light tan left and right of the line ...
+  for (int y = 0; y < 64; ++y)
+    for (int x = 60; x < 96; ++x) img.at(x, y) = {40, 90, 200, 255};  // ... and a blue part
+  for (int y = 0; y < 64; ++y)
+    for (int x = 59; x <= 61; ++x) img.at(x, y) = {15, 15, 15, 255};
+  const SegmentRun run = run_segment_by_colour(img, {40, 90, 200}, 30.0);
+  EXPECT_EQ(run.regions.at(80, 30), 1);
+  EXPECT_EQ(run.regions.at(10, 30), 0);
+  EXPECT_EQ(run.regions.at(50, 30), 0);
+  EXPECT_THROW(run_segment_by_colour(img, {255, 0, 255}, 10.0), Error);
+  EXPECT_THROW(run_segment_by_colour(img, {40, 90, 200}, -1.0), Error);
+}
+
 TEST(SegmentStage, WritesTheOutputFolderAtomically) {
   const fs::path dir = fs::temp_directory_path() / "hair25d_segment_stage_test";
   fs::remove_all(dir);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "commands.h"
+#include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
 #include "hair25d/core/strokes.h"
 #include "hair25d/pipeline/segment_stage.h"
@@ -17,6 +18,8 @@ void add_segment_command(CLI::App& app, const CommonOptions& common) {
     std::string image;
     std::string strokes;
     std::string out;
+    std::string hair_colour;
+    double tolerance = 40.0;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -25,6 +28,13 @@ void add_segment_command(CLI::App& app, const CommonOptions& common) {
   cmd->add_option("--strokes", args->strokes,
                   "strokes.json: labelled hair strokes; without it every face enclosed by "
                   "lines becomes a region");
+  cmd->add_option("--hair-colour", args->hair_colour,
+                  "Without strokes: take the regions of this colour (#RRGGBB) as the hair, one "
+                  "region each")
+      ->excludes(cmd->get_option("--strokes"));
+  cmd->add_option("--colour-tolerance", args->tolerance,
+                  "RGB distance (0-255) a region's mean colour may be from --hair-colour")
+      ->check(CLI::Range(0.0, 442.0));
   cmd->add_option("-o,--output", args->out,
                   "Folder to write regions.png, segmentation.json and overlay.png into")
       ->required();
@@ -33,8 +43,21 @@ void add_segment_command(CLI::App& app, const CommonOptions& common) {
     std::optional<Strokes> strokes;
     if (!args->strokes.empty()) strokes = read_strokes(args->strokes);
     TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
-    const pipeline::SegmentRun run =
-        pipeline::run_segment(image, strokes ? &*strokes : nullptr, &progress);
+    pipeline::SegmentRun run;
+    if (!args->hair_colour.empty()) {
+      unsigned r = 0, g = 0, b = 0;
+      char tail = 0;
+      if (args->hair_colour.size() != 7 ||
+          std::sscanf(args->hair_colour.c_str(), "#%2x%2x%2x%c", &r, &g, &b, &tail) != 3)
+        throw Error("--hair-colour \"" + args->hair_colour + "\": expected #RRGGBB, e.g. #8a5a3c");
+      run = pipeline::run_segment_by_colour(
+          image,
+          {static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g),
+           static_cast<std::uint8_t>(b)},
+          args->tolerance, &progress);
+    } else {
+      run = pipeline::run_segment(image, strokes ? &*strokes : nullptr, &progress);
+    }
     pipeline::write_segment_run(args->out, run);
     std::set<int> regions(run.segmentation.triangle_region.begin(),
                           run.segmentation.triangle_region.end());

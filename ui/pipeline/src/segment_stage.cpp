@@ -1,12 +1,15 @@
 #include "hair25d/pipeline/segment_stage.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 
 #include "hair25d/core/atomic_file.h"
 #include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
 #include "hair25d/segment/mesh.h"
 #include "hair25d/segment/overlay.h"
+#include "hair25d/segment/regions.h"
 #include "hair25d/segment/segmentation_io.h"
 #include "hair25d/segment/segmenter.h"
 
@@ -20,6 +23,34 @@ SegmentRun run_segment(const Image& image, const Strokes* strokes, Progress* pro
   run.regions =
       segment::rasterize_triangle_values(s.mesh, s.triangle_region, image.width(), image.height());
   run.overlay = segment::draw_overlay(image, s, run.regions);
+  return run;
+}
+
+SegmentRun run_segment_by_colour(const Image& image, std::array<std::uint8_t, 3> rgb,
+                                 double tolerance, Progress* progress) {
+  segment::SegmentResult result = segment::segment_image(image, nullptr, {}, progress);
+  Segmentation& s = result.segmentation;
+  segment::ColourPick pick;
+  pick.rgb = rgb;
+  pick.tolerance = tolerance;
+  // Specks (a few pixels between crossing lines) are never a strand.
+  pick.min_area = 1e-4 * image.width() * image.height();
+  s.triangle_region =
+      segment::label_regions_by_colour(image, s.mesh, s.triangle_region, result.line_mask, pick);
+  if (std::none_of(s.triangle_region.begin(), s.triangle_region.end(),
+                   [](int l) { return l > 0; })) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
+    throw Error(std::string("segment: no region has a mean colour within ") +
+                std::to_string(tolerance) + " of " + hex +
+                "; pick another colour or a larger tolerance");
+  }
+  s.adjacency = segment::label_adjacency(s.mesh, s.triangle_region);
+  SegmentRun run;
+  run.segmentation = std::move(s);
+  run.regions = segment::rasterize_triangle_values(
+      run.segmentation.mesh, run.segmentation.triangle_region, image.width(), image.height());
+  run.overlay = segment::draw_overlay(image, run.segmentation, run.regions);
   return run;
 }
 

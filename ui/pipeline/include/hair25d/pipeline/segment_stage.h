@@ -2,6 +2,8 @@
 // optional strokes to regions on a mesh, a region label map and an overlay.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 
 #include "hair25d/core/image.h"
@@ -20,6 +22,13 @@ struct SegmentRun {
 // With strokes: one region per stroke label (graph cut). Without: automatic
 // regions, the faces enclosed by curves, numbered from 1.
 SegmentRun run_segment(const Image& image, const Strokes* strokes, Progress* progress = nullptr);
+
+// Without strokes, from a hair colour: the automatic regions whose mean colour
+// lies within `tolerance` (RGB distance, 0-255) of `rgb` become regions 1..n,
+// everything else background. Throws hair25d::Error if no region matches or
+// the tolerance is negative.
+SegmentRun run_segment_by_colour(const Image& image, std::array<std::uint8_t, 3> rgb,
+                                 double tolerance, Progress* progress = nullptr);
 
 // Writes the run into folder `out_dir`, replacing it atomically: regions.png
 // (16-bit label map), segmentation.json ("hair25d-segmentation/1") and
