@@ -1,6 +1,7 @@
 #include "hair25d/pipeline/model_stage.h"
 
 #include <algorithm>
+#include <future>
 #include <set>
 #include <sstream>
 
@@ -40,6 +41,12 @@ bool ModelOptions::is_valid(std::string* error) const {
   if (!layering.is_valid(error) || !completion.is_valid(error) || !skeleton.is_valid(error) ||
       !mesh.is_valid(error))
     return false;
+  if (threads < 1 || threads > 64) {
+    if (error != nullptr)
+      *error =
+          "pipeline::ModelOptions::threads = " + std::to_string(threads) + "; must be in [1, 64]";
+    return false;
+  }
   if (cover_reach < 0 || cover_reach > 32) {
     if (error != nullptr)
       *error = "pipeline::ModelOptions::cover_reach = " + std::to_string(cover_reach) +
@@ -97,6 +104,7 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
   for (int index : order)
     for (int r : done[index].regions) strand_depth_of_region[r] = rank[key[index]];
 
+  std::vector<std::optional<Vec2>> root_hints;
   int next = 0;
   for (int index : order) {
     completion::CompletedStrand& c = done[index];
@@ -110,6 +118,15 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
     s.texture_origin = c.origin;
     StrandReport info;
     info.mask = std::move(c.mask);
+    root_hints.push_back(c.root_hint ? c.root_hint : m.head_center);
+    m.strands.push_back(std::move(s));
+    run.strands.push_back(std::move(info));
+  }
+
+  // Skeleton and mesh of one strand; strands are independent.
+  const auto finish = [&](std::size_t i) {
+    Strand& s = m.strands[i];
+    StrandReport& info = run.strands[i];
     if (s.outline.size() >= 3) {
       // A corner under a strand drawn above is hidden: not a tip (§6).
       std::vector<bool> covered(s.outline.size(), false);
@@ -130,7 +147,7 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
         skeleton::Input sk;
         sk.outline = s.outline;
         sk.covered = std::move(covered);
-        sk.root_hint = c.root_hint ? c.root_hint : m.head_center;
+        sk.root_hint = root_hints[i];
         const skeleton::Result r = skeleton::build_skeleton(sk, options.skeleton);
         s.skeleton = r.skeleton;
         info.skeleton = r.status;
@@ -147,22 +164,35 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
     } else {
       info.problem = "outline has fewer than 3 points";
     }
-    if (s.skeleton.nodes.empty() && !c.regions.empty()) {
+    if (s.skeleton.nodes.empty()) {
       // Still a usable strand: one fixed node where its pixels are.
       Vec2 centre(0, 0);
       int n = 0;
       for (int y = 0; y < info.mask.height(); ++y)
         for (int x = 0; x < info.mask.width(); ++x)
           if (info.mask.at(x, y))
-            centre += Vec2(x + c.origin.x() + 0.5, y + c.origin.y() + 0.5), ++n;
+            centre += Vec2(x + s.texture_origin.x() + 0.5, y + s.texture_origin.y() + 0.5), ++n;
       if (n > 0) {
         s.skeleton.nodes = {centre / n};
         s.skeleton.parent = {-1};
       }
     }
-    m.strands.push_back(std::move(s));
-    run.strands.push_back(std::move(info));
-    report(progress, "skeleton", static_cast<double>(next) / std::max<std::size_t>(1, done.size()));
+  };
+  const std::size_t count = m.strands.size();
+  if (options.threads > 1 && count > 1) {
+    auto other = std::async(std::launch::async, [&] {
+      for (std::size_t i = 1; i < count; i += 2) finish(i);
+    });
+    for (std::size_t i = 0; i < count; i += 2) {
+      finish(i);
+      report(progress, "skeleton", static_cast<double>(i + 1) / count);
+    }
+    other.get();
+  } else {
+    for (std::size_t i = 0; i < count; ++i) {
+      finish(i);
+      report(progress, "skeleton", static_cast<double>(i + 1) / count);
+    }
   }
   run.seconds["skeleton"] = since(start);
 

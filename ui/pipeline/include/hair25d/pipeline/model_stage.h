@@ -29,6 +29,7 @@ struct ModelOptions {
   // An outline vertex is covered (not a tip) when a strand drawn above has a
   // pixel within this many pixels of it.
   int cover_reach = 3;
+  int threads = 2;  // skeletons and meshes built by up to this many threads (1 = serial)
 
   // False, naming the option, its value and the rule, if unusable.
   bool is_valid(std::string* error) const;
