@@ -38,6 +38,9 @@ TEST(AnnotatedCases, JoinsMatchTheAnnotatedStrands) {
         "mean strand IoU %.3f over %zu strands\n",
         c.name.c_str(), s.predicted, s.truth, s.correct, s.precision(), s.recall(), mean,
         ious.size());
+    std::printf("  strand IoUs:");
+    for (double v : ious) std::printf(" %.2f", v);
+    std::printf("\n");
     total.predicted += s.predicted;
     total.truth += s.truth;
     total.correct += s.correct;
