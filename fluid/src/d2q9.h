@@ -20,50 +20,42 @@ struct Relaxation {
   T omega_minus;  // relaxes the antisymmetric part; equal to omega_plus for BGK
   T gx, gy;       // body acceleration
   // Smagorinsky sub-grid model (only read when enabled): tau0 the molecular relaxation time,
-  // les = 18 sqrt(2) C^2, magic the TRT Lambda (0 for BGK: omega_minus = omega_plus).
-  T tau0, les, magic;
+  // les = 18 sqrt(2) C^2, magic the TRT Lambda, bgk = 1 for BGK (omega_minus = omega_plus).
+  T tau0, les, magic, bgk;
 };
 
 // Populations are stored as deviations from the rest weights (f - w_i): sums of small numbers
 // keep float round-off away from density 1. Relaxes `f` in place; returns |u|^2, whose sum
 // over the grid is the divergence check (NaN and infinity propagate through it).
 template <typename T, bool kForce, bool kLes = false>
-inline T collide(T (&f)[9], const Relaxation<T>& r) {
+[[gnu::always_inline]] inline T collide(T (&f)[9], const Relaxation<T>& r) {
   const T drho = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8];
   const T rho = T(1) + drho;
   const T inv_rho = T(1) / rho;
   const T jx = f[1] - f[3] + f[5] - f[6] - f[7] + f[8];
   const T jy = f[2] - f[4] + f[5] + f[6] - f[7] - f[8];
-  T ux = jx * inv_rho;
-  T uy = jy * inv_rho;
-  if constexpr (kForce) {
-    ux += T(0.5) * r.gx;
-    uy += T(0.5) * r.gy;
-  }
+  const T ux = jx * inv_rho + (kForce ? T(0.5) * r.gx : T(0));
+  const T uy = jy * inv_rho + (kForce ? T(0.5) * r.gy : T(0));
   const T usq = ux * ux + uy * uy;
-  T op = r.omega_plus;
-  T om = r.omega_minus;
-  if constexpr (kLes) {
-    // Smagorinsky (Hou et al. 1996): the eddy viscosity follows the local strain, read from
-    // the non-equilibrium stress, so under-resolved shear (hair tips, gusts) is damped
-    // instead of blowing up. Populations are deviations: sum c c f = P - I/3.
-    const T pxx = f[1] + f[3] + f[5] + f[6] + f[7] + f[8] - rho * ux * ux - drho * T(1.0 / 3.0);
-    const T pyy = f[2] + f[4] + f[5] + f[6] + f[7] + f[8] - rho * uy * uy - drho * T(1.0 / 3.0);
-    const T pxy = f[5] - f[6] + f[7] - f[8] - rho * ux * uy;
-    const T q = std::sqrt(pxx * pxx + pyy * pyy + T(2) * pxy * pxy);
-    const T tau = T(0.5) * (r.tau0 + std::sqrt(r.tau0 * r.tau0 + r.les * q * inv_rho));
-    op = T(1) / tau;
-    om = r.magic > T(0) ? T(1) / (T(0.5) + r.magic / (tau - T(0.5))) : op;
-  }
+  // Smagorinsky (Hou et al. 1996): the eddy viscosity follows the local strain, read from the
+  // non-equilibrium stress (deviations: sum c c f = P - I/3), so under-resolved shear (hair
+  // tips, gusts) is damped instead of blowing up. All constants, no branches: the loop
+  // around this must vectorise.
+  const T pxx = f[1] + f[3] + f[5] + f[6] + f[7] + f[8] - rho * ux * ux - drho * T(1.0 / 3.0);
+  const T pyy = f[2] + f[4] + f[5] + f[6] + f[7] + f[8] - rho * uy * uy - drho * T(1.0 / 3.0);
+  const T pxy = f[5] - f[6] + f[7] - f[8] - rho * ux * uy;
+  const T q = kLes ? std::sqrt(pxx * pxx + pyy * pyy + T(2) * pxy * pxy) : T(0);
+  const T tau = kLes ? T(0.5) * (r.tau0 + std::sqrt(r.tau0 * r.tau0 + r.les * q * inv_rho)) : T(0);
+  const T op = kLes ? T(1) / tau : r.omega_plus;
+  // TRT keeps Lambda = (tau+ - 1/2)(tau- - 1/2) fixed; BGK (bgk = 1) relaxes both alike.
+  const T om =
+      !kLes ? r.omega_minus : r.bgk * op + (T(1) - r.bgk) / (T(0.5) + r.magic / (tau - T(0.5)));
   const T sym_base = drho - T(1.5) * rho * usq;  // w_i [drho + rho (4.5 cu^2 - 1.5 u^2)]
-  T fx = T(0), fy = T(0), uf = T(0), kp = T(0), km = T(0);
-  if constexpr (kForce) {
-    fx = rho * r.gx;
-    fy = rho * r.gy;
-    uf = ux * fx + uy * fy;
-    kp = T(1) - T(0.5) * op;
-    km = T(1) - T(0.5) * om;
-  }
+  const T fx = kForce ? rho * r.gx : T(0);
+  const T fy = kForce ? rho * r.gy : T(0);
+  const T uf = ux * fx + uy * fy;
+  const T kp = T(1) - T(0.5) * op;
+  const T km = T(1) - T(0.5) * om;
   {
     const T w0 = T(4.0 / 9.0);
     f[0] -= op * (f[0] - w0 * sym_base);

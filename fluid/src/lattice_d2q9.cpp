@@ -29,7 +29,7 @@ using d2q9::kCy;
 using d2q9::kOpp;
 using d2q9::kW;
 
-constexpr int kCellsPerThread = 8192;
+constexpr int kCellsPerThread = 16384;
 constexpr int kSideLeft = 0, kSideRight = 1, kSideTop = 2, kSideBottom = 3;
 
 int side_index(SideName s) {
@@ -150,7 +150,8 @@ class Lattice final : public LatticeBase {
 template <typename T>
 Lattice<T>::Lattice(const Options& o, const Eigen::MatrixXi& labels)
     : LatticeBase(o.width, o.height), width_(o.width), height_(o.height), threads_(o.threads) {
-  // Waking a second thread costs a few microseconds per step: below ~8k cells one thread wins
+  // Waking a second thread costs a few microseconds per step (far more on a loaded machine):
+  // below ~16k cells per thread one thread wins
   // (and does not fight over a loaded machine).
   threads_ = std::max(1, std::min(threads_, width_ * height_ / kCellsPerThread));
   // Rows padded to whole cache lines, and never to a multiple of 512 bytes: rows whose length
@@ -179,6 +180,7 @@ Lattice<T>::Lattice(const Options& o, const Eigen::MatrixXi& labels)
   }
   relax_.tau0 = T(o.tau);
   relax_.magic = o.collision == Collision::kTrt ? T(o.trt_magic) : T(0);
+  relax_.bgk = o.collision == Collision::kBgk ? T(1) : T(0);
   relax_.les = T(18.0 * std::sqrt(2.0) * o.smagorinsky * o.smagorinsky);
   les_ = o.smagorinsky > 0.0;
   set_body_acceleration(o.body_acceleration);
