@@ -202,10 +202,10 @@ void Solver::set_body_acceleration(const Vec2& acceleration) {
 }
 
 void Solver::set_sponge_velocity(const Vec2& velocity) {
-  Options copy = options_;
-  copy.sponge_velocity = velocity;
-  std::string error;
-  if (!copy.is_valid(&error)) throw Error(error);
+  // Called every step by the wind: checked here rather than by copying the whole Options.
+  if (!velocity.allFinite() || velocity.norm() > kMaxLatticeSpeed)
+    throw Error("fluid::Options::sponge_velocity = " + vec_str(velocity) +
+                "; must be finite with |v| <= " + std::to_string(kMaxLatticeSpeed));
   options_.sponge_velocity = velocity;
   lattice_->set_sponge_velocity(velocity);
 }
