@@ -122,7 +122,21 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
 
   // --- Occluding boundaries: on a drawn line (§4.1). ---
   report(progress, "layering", 0.2, "line response");
-  const detail::LineResponse lines(image, out.line_width);
+  // Lines are measured only around the hair: the box of all non-background
+  // boundaries, grown by the farthest sample (paper search + smoothing).
+  int bx0 = image.width(), by0 = image.height(), bx1 = 0, by1 = 0;
+  for (const Boundary& b : bs) {
+    if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+    for (const Vec2& p : b.points) {
+      bx0 = std::min(bx0, static_cast<int>(p.x()));
+      by0 = std::min(by0, static_cast<int>(p.y()));
+      bx1 = std::max(bx1, static_cast<int>(p.x()));
+      by1 = std::max(by1, static_cast<int>(p.y()));
+    }
+  }
+  const int margin = static_cast<int>(std::ceil(4.0 * out.line_width)) + 8;
+  const detail::LineResponse lines(image, out.line_width, bx0 - margin, by0 - margin, bx1 + margin,
+                                   by1 + margin);
   std::set<std::pair<int, int>> fixed_equal;
   for (const RegionRelation& r : options.fixed)
     if (r.relation == Relation::kEqual) fixed_equal.insert(key(r.a, r.b));

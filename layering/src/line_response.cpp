@@ -12,12 +12,13 @@ namespace {
 
 constexpr int kOutside = -2147483647;
 
-cv::Mat grey_of(const Image& image) {
-  cv::Mat grey(image.height(), image.width(), CV_32F);
-  for (int y = 0; y < image.height(); ++y) {
+// Grey levels of the window [x0, x0 + w) × [y0, y0 + h) of `image`.
+cv::Mat grey_of(const Image& image, int x0, int y0, int w, int h) {
+  cv::Mat grey(h, w, CV_32F);
+  for (int y = 0; y < h; ++y) {
     float* row = grey.ptr<float>(y);
-    for (int x = 0; x < image.width(); ++x) {
-      const Rgba& p = image.at(x, y);
+    for (int x = 0; x < w; ++x) {
+      const Rgba& p = image.at(x0 + x, y0 + y);
       // Transparent pixels read as white paper.
       const double a = p.a / 255.0;
       const double lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
@@ -36,10 +37,14 @@ double median_of(std::vector<double>& v) {
 
 }  // namespace
 
-LineResponse::LineResponse(const Image& image, double line_width)
-    : w_(image.width()), h_(image.height()), line_width_(std::max(1.0, line_width)) {
+LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0, int x1, int y1)
+    : line_width_(std::max(1.0, line_width)) {
+  x0_ = std::clamp(x0, 0, std::max(0, image.width() - 1));
+  y0_ = std::clamp(y0, 0, std::max(0, image.height() - 1));
+  w_ = std::clamp(x1, x0_ + 1, image.width()) - x0_;
+  h_ = std::clamp(y1, y0_ + 1, image.height()) - y0_;
   try {
-    cv::Mat grey = grey_of(image);
+    cv::Mat grey = grey_of(image, x0_, y0_, w_, h_);
     // Noise: MAD of a 3x3 Laplacian on the raw grey image, over pixels where
     // it is small (flat areas), scaled for a Gaussian.
     cv::Mat lap;
@@ -62,8 +67,8 @@ LineResponse::LineResponse(const Image& image, double line_width)
 }
 
 double LineResponse::sample(double x, double y) const {
-  x = std::clamp(x - 0.5, 0.0, w_ - 1.0);  // pixel centres are at +0.5
-  y = std::clamp(y - 0.5, 0.0, h_ - 1.0);
+  x = std::clamp(x - 0.5 - x0_, 0.0, w_ - 1.0);  // pixel centres are at +0.5
+  y = std::clamp(y - 0.5 - y0_, 0.0, h_ - 1.0);
   const int x0 = std::min(static_cast<int>(x), w_ - 2 < 0 ? 0 : w_ - 2);
   const int y0 = std::min(static_cast<int>(y), h_ - 2 < 0 ? 0 : h_ - 2);
   const int x1 = std::min(x0 + 1, w_ - 1);
@@ -122,7 +127,7 @@ double LineResponse::boundary_contrast(const Polyline& curve, double skip, const
 double LineResponse::estimate_line_width(const Image& image) {
   // Dark runs: pixels well below the local paper level. Widths of runs along
   // rows and columns; the mode of the short ones is the typical line width.
-  const cv::Mat grey = grey_of(image);
+  const cv::Mat grey = grey_of(image, 0, 0, image.width(), image.height());
   cv::Mat bright;
   cv::dilate(grey, bright, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(15, 15)));
   std::vector<int> histogram(32, 0);

@@ -13,8 +13,10 @@ namespace hair25d::layering::detail {
 
 class LineResponse {
  public:
-  // Grey levels of `image` smoothed at a scale from the line width.
-  LineResponse(const Image& image, double line_width);
+  // Grey levels of `image` smoothed at a scale from the line width, kept for
+  // the window [x0, x1) × [y0, y1) only (clipped to the image): the part that
+  // holds the boundaries, with a margin. Samples outside it are clamped.
+  LineResponse(const Image& image, double line_width, int x0, int y0, int x1, int y1);
 
   // Median over samples along `curve` (pixel corners) of
   // min(paper left, paper right) − darkest point of the line's cross-section,
@@ -35,7 +37,7 @@ class LineResponse {
 
  private:
   double sample(double x, double y) const;
-  int w_ = 0, h_ = 0;
+  int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
   double line_width_ = 1.0;
   double noise_sigma_ = 0.0;
   std::vector<float> grey_;
