@@ -38,8 +38,12 @@ Image render_overlay(const Image& image, const Result& result,
         const Rgba& p = image.at(x, y);
         cv::Vec3b& c = canvas.at<cv::Vec3b>(y, x);
         const int l = labels.at(x, y);
-        // Faded drawing; hair regions tinted so pieces can be told apart.
-        double r = 0.5 * p.r + 127, g = 0.5 * p.g + 127, b = 0.5 * p.b + 127;
+        // Faded drawing over white paper (transparent = paper); hair regions
+        // tinted so pieces can be told apart.
+        const double a = p.a / 255.0;
+        double r = 0.5 * (a * p.r + (1 - a) * 255) + 127;
+        double g = 0.5 * (a * p.g + (1 - a) * 255) + 127;
+        double b = 0.5 * (a * p.b + (1 - a) * 255) + 127;
         if (l > 0) {
           const cv::Scalar t = tint_of(l);
           r = 0.55 * r + 0.45 * t[2];
