@@ -51,8 +51,8 @@ struct CurveResult {
 CurveResult extract_curves(const Image& image, const CurveOptions& options = {});
 
 struct SimplifyOptions {
-  double smoothing_sigma = 1.5;  // Gaussian along the curve, in pixels of arc length
-  double tolerance = 0.7;        // Douglas–Peucker distance, pixels
+  double smoothing_sigma = 1.0;  // Gaussian along the curve, in pixels of arc length
+  double tolerance = 0.5;        // Douglas–Peucker distance, pixels
 
   bool is_valid(std::string* error) const;
 };

@@ -32,7 +32,7 @@ struct GraphCutOptions {
   // A curve edge counts as drawn (φ = phi_curve) only if no stretch longer
   // than this (pixels) along it is off the line mask; links that close gaps
   // between lines get phi_other.
-  int max_undrawn_run = 1;
+  int max_undrawn_run = 2;
   // A face closed off by drawn lines that holds no stroke is background (the
   // user marks every strand); false: it takes the hair label that fits it
   // best, or background, by its terminal weights.
