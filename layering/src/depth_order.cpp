@@ -10,28 +10,80 @@
 namespace hair25d::layering {
 namespace {
 
-int find(std::vector<int>& parent, int a) {
-  while (parent[a] != a) a = parent[a] = parent[parent[a]];
-  return a;
-}
-
-// Whether `to` can be reached from `from` along `above` edges (lower → upper).
-bool reaches(const std::vector<std::vector<int>>& up, int from, int to, std::vector<int>& mark,
-             int stamp) {
-  std::vector<int> stack{from};
-  mark[from] = stamp;
-  while (!stack.empty()) {
-    const int v = stack.back();
-    stack.pop_back();
-    if (v == to) return true;
-    for (int w : up[v])
-      if (mark[w] != stamp) {
-        mark[w] = stamp;
-        stack.push_back(w);
-      }
+// Groups of regions at one depth (merged by "equal"), and the relations
+// placed so far between groups, as edges lower → upper.
+class GroupDag {
+ public:
+  explicit GroupDag(int n) : parent_(n), up_(n), mark_(n, -1) {
+    std::iota(parent_.begin(), parent_.end(), 0);
   }
-  return false;
-}
+  int find(int a) {
+    while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
+    return a;
+  }
+  // Whether group `to` lies above group `from` along placed relations.
+  bool reaches(int from, int to) {
+    from = find(from);
+    to = find(to);
+    ++stamp_;
+    std::vector<int> stack{from};
+    mark_[from] = stamp_;
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      if (v == to) return true;
+      for (int w : up_[v]) {
+        w = find(w);
+        if (mark_[w] != stamp_) {
+          mark_[w] = stamp_;
+          stack.push_back(w);
+        }
+      }
+    }
+    return false;
+  }
+  void add_edge(int lower, int upper) { up_[find(lower)].push_back(find(upper)); }
+  void merge(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return;
+    if (a > b) std::swap(a, b);
+    parent_[b] = a;
+    up_[a].insert(up_[a].end(), up_[b].begin(), up_[b].end());
+    up_[b].clear();
+  }
+  // Longest chain of groups below each region's group (Kahn's algorithm).
+  std::vector<int> levels() {
+    const int n = static_cast<int>(parent_.size());
+    std::vector<std::vector<int>> up(n);
+    std::vector<int> indegree(n, 0), level(n, 0);
+    for (int g = 0; g < n; ++g)
+      for (int h : up_[g]) {
+        up[find(g)].push_back(find(h));
+        ++indegree[find(h)];
+      }
+    std::vector<int> ready;
+    for (int g = 0; g < n; ++g)
+      if (find(g) == g && indegree[g] == 0) ready.push_back(g);
+    while (!ready.empty()) {
+      const int g = ready.back();
+      ready.pop_back();
+      for (int h : up[g]) {
+        level[h] = std::max(level[h], level[g] + 1);
+        if (--indegree[h] == 0) ready.push_back(h);
+      }
+    }
+    std::vector<int> out(n);
+    for (int i = 0; i < n; ++i) out[i] = level[find(i)];
+    return out;
+  }
+
+ private:
+  std::vector<int> parent_;
+  std::vector<std::vector<int>> up_;
+  std::vector<int> mark_;
+  int stamp_ = 0;
+};
 
 }  // namespace
 
@@ -55,67 +107,54 @@ DepthOrder order_regions(const std::vector<int>& regions,
                   " with itself; a and b must differ");
   }
 
-  // Strongest first, so a cycle is broken at its weakest link.
+  // Strongest first, so a cycle is broken at its weakest link: user-fixed
+  // relations, then above/below by |score|, then "equal" (which has no
+  // score): a same-depth claim never undoes a placed above/below.
   std::vector<int> order(relations.size());
   std::iota(order.begin(), order.end(), 0);
+  auto rank = [&](const RegionRelation& r) {
+    return r.user_fixed ? 0 : (r.relation == Relation::kEqual ? 2 : 1);
+  };
   std::stable_sort(order.begin(), order.end(), [&](int p, int q) {
     const RegionRelation& a = relations[p];
     const RegionRelation& b = relations[q];
-    if (a.user_fixed != b.user_fixed) return a.user_fixed;
+    if (rank(a) != rank(b)) return rank(a) < rank(b);
     return std::abs(a.score) > std::abs(b.score);
   });
 
-  // Equal relations merge regions into one group first.
-  std::vector<int> group(n);
-  std::iota(group.begin(), group.end(), 0);
-  for (const RegionRelation& r : relations)
-    if (r.relation == Relation::kEqual) {
-      const int ga = find(group, at(r.a, "a"));
-      const int gb = find(group, at(r.b, "b"));
-      if (ga != gb) group[std::max(ga, gb)] = std::min(ga, gb);
-    }
-
   DepthOrder out;
   out.relations = relations;
-  std::vector<std::vector<int>> up(n);  // group → groups directly above it
-  std::vector<int> mark(n, -1);
-  int stamp = 0;
+  GroupDag dag(n);
   for (int k : order) {
     RegionRelation& r = out.relations[k];
-    if (r.relation == Relation::kEqual) continue;
-    int lower = find(group, at(r.a, "a"));
-    int upper = find(group, at(r.b, "b"));
-    if (r.relation == Relation::kAbove) std::swap(lower, upper);
-    // A relation inside one merged group, or one whose reverse already
-    // follows from stronger relations, contradicts the order.
-    if (lower == upper || reaches(up, upper, lower, mark, stamp++)) {
+    const int a = at(r.a, "a");
+    const int b = at(r.b, "b");
+    if (r.relation == Relation::kEqual) {
+      if (dag.find(a) == dag.find(b)) continue;
+      // Equal contradicts an order already implied between the two.
+      if (dag.reaches(a, b) || dag.reaches(b, a)) {
+        r.overridden = true;
+        r.relation = dag.reaches(a, b) ? Relation::kBelow : Relation::kAbove;
+        out.overridden.emplace_back(r.a, r.b);
+        continue;
+      }
+      dag.merge(a, b);
+      continue;
+    }
+    const int lower = r.relation == Relation::kAbove ? b : a;
+    const int upper = r.relation == Relation::kAbove ? a : b;
+    // A relation inside one merged group, or whose reverse already follows
+    // from stronger relations, contradicts the order.
+    if (dag.find(lower) == dag.find(upper) || dag.reaches(upper, lower)) {
       r.overridden = true;
-      if (lower != upper)
-        r.relation = reversed(r.relation);
-      else
-        r.relation = Relation::kEqual;
+      r.relation = dag.find(lower) == dag.find(upper) ? Relation::kEqual : reversed(r.relation);
       out.overridden.emplace_back(r.a, r.b);
       continue;
     }
-    up[lower].push_back(upper);
+    dag.add_edge(lower, upper);
   }
-
-  // Longest chain below each group: Kahn's algorithm over the group DAG.
-  std::vector<int> indegree(n, 0), level(n, 0);
-  for (int g = 0; g < n; ++g)
-    for (int h : up[g]) ++indegree[h];
-  std::vector<int> ready;
-  for (int g = 0; g < n; ++g)
-    if (find(group, g) == g && indegree[g] == 0) ready.push_back(g);
-  while (!ready.empty()) {
-    const int g = ready.back();
-    ready.pop_back();
-    for (int h : up[g]) {
-      level[h] = std::max(level[h], level[g] + 1);
-      if (--indegree[h] == 0) ready.push_back(h);
-    }
-  }
-  for (const auto& [id, i] : index) out.depth[id] = level[find(group, i)];
+  const std::vector<int> level = dag.levels();
+  for (const auto& [id, i] : index) out.depth[id] = level[i];
   return out;
 }
 

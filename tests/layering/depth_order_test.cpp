@@ -68,6 +68,17 @@ TEST(OrderRegions, EqualRegionsShareADepth) {
   EXPECT_GT(o.depth.at(6), o.depth.at(5));
 }
 
+TEST(OrderRegions, EqualDoesNotUndoAnOrderAlreadyPlaced) {
+  // 1 < 2 < 3 by strong relations; a claim that 1 = 3 contradicts them.
+  const DepthOrder o =
+      order_regions({1, 2, 3}, {rel(1, 3, Relation::kEqual, 0.0), rel(1, 2, Relation::kBelow, 1.0),
+                                rel(2, 3, Relation::kBelow, 1.0)});
+  ASSERT_EQ(o.overridden.size(), 1u);
+  EXPECT_EQ(o.overridden[0], std::make_pair(1, 3));
+  EXPECT_EQ(o.relations[0].relation, Relation::kBelow);
+  expect_consistent(o);
+}
+
 TEST(OrderRegions, RandomRelationsGiveAnAcyclicOrderIndependentOfNumbering) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> score(-1.0, 1.0);

@@ -23,7 +23,8 @@ struct DepthOrder {
 
 // Orders `regions` (ids; every id named by a relation must be listed) by the
 // relations. Relations are taken strongest first (user-fixed ones before all,
-// then by |score|); one that would close a cycle is overridden. Depth is the
+// then above/below by |score|, then equal); one that would close a cycle, or
+// an equal between regions already ordered, is overridden. Depth is the
 // longest chain of "below" relations under a region, so it does not depend on
 // how regions are numbered. Throws hair25d::Error for a relation naming an
 // unlisted region or a region related to itself.
