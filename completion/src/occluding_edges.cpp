@@ -179,13 +179,22 @@ std::vector<Edge> find_edges(const Context& ctx, const RegionInfo& region, int f
   int start = -1;
   for (int i = 0; i < n && start < 0; ++i)
     if (labels[i] == 0) start = i;
-  if (start < 0) return edges;  // wholly hidden outline: nothing to grow from
+  // A piece wholly surrounded by occluders (a sliver between strands) still
+  // has one edge per occluder, split where the occluder changes; with no
+  // visible outline its tangents are taken across its cut chords.
+  bool enclosed = false;
+  if (start < 0) {
+    for (int i = 0; i < n && start < 0; ++i)
+      if (labels[i] != labels[wrap(i - 1, n)]) start = i;
+    if (start < 0) return edges;  // under one occluder all round
+    enclosed = true;
+  }
 
   struct Run {
     int begin, end, label;
   };
   std::vector<Run> runs;
-  for (int k = 1; k < n; ++k) {
+  for (int k = enclosed ? 0 : 1; k < n; ++k) {
     const int i = start + k, l = labels[wrap(i, n)];
     if (l == 0) continue;
     if (!runs.empty() && runs.back().end == i - 1 && runs.back().label == l)
