@@ -227,17 +227,27 @@ double Lattice<T>::step() {
       usq += forced_ ? bulk<true, true>(y0, y1) : bulk<false, true>(y0, y1);
     else
       usq += forced_ ? bulk<true, false>(y0, y1) : bulk<false, false>(y0, y1);
-#pragma omp barrier
-    const std::size_t n = special_.size();
-    boundary(n * tid / nt, n * (tid + 1) / nt, tid);
-    const std::size_t m = solid_idx_.size();
-    for (std::size_t k = m * tid / nt; k < m * (tid + 1) / nt; ++k)
-      for (int i = 0; i < 9; ++i) dst_[i][solid_idx_[k]] = T(0);
-    if (!sponge_.empty()) {
-#pragma omp barrier
-      const std::size_t ns = sponge_.size();
-      absorb(ns * tid / nt, ns * (tid + 1) / nt);
-    }
+    // Every pass after the bulk writes only the cell it works on and reads only the source
+    // planes, so each thread takes the boundary, solid and sponge cells of its own rows
+    // (all three lists are in row order) and no barrier is needed: one fork and one join per
+    // step, which matters when the machine is busy and a waiting thread loses a time slice.
+    const std::ptrdiff_t lo = idx(-1, y0), hi = idx(-1, y1);
+    const auto sb = std::partition_point(special_.begin(), special_.end(),
+                                         [&](const Special& c) { return c.idx < lo; });
+    const auto se =
+        std::partition_point(sb, special_.end(), [&](const Special& c) { return c.idx < hi; });
+    boundary(static_cast<std::size_t>(sb - special_.begin()),
+             static_cast<std::size_t>(se - special_.begin()), tid);
+    const auto ob = std::lower_bound(solid_idx_.begin(), solid_idx_.end(), lo);
+    const auto oe = std::lower_bound(ob, solid_idx_.end(), hi);
+    for (auto k = ob; k != oe; ++k)
+      for (int i = 0; i < 9; ++i) dst_[i][*k] = T(0);
+    const auto ab = std::partition_point(sponge_.begin(), sponge_.end(),
+                                         [&](const SpongeCell& c) { return c.idx < lo; });
+    const auto ae =
+        std::partition_point(ab, sponge_.end(), [&](const SpongeCell& c) { return c.idx < hi; });
+    absorb(static_cast<std::size_t>(ab - sponge_.begin()),
+           static_cast<std::size_t>(ae - sponge_.begin()));
   }
   for (int s = 0; s < segment_count_; ++s) {
     Vec2 sum = Vec2::Zero();

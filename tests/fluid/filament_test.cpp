@@ -158,9 +158,10 @@ TEST(FluidFilament, PlateAcrossStreamGetsPlateDrag) {
 
   const double cd_thin = thin_force.x() / (0.5 * U * U * L);
   const double cd_solid = solid_force.x() / (0.5 * U * U * L);
-  std::printf("[ info ] plate across stream, Re %.0f: Cd thin filament %.3f, solid plate %.3f "
-              "after %d steps\n",
-              U * L / viscosity_of_tau(tau), cd_thin, cd_solid, r.steps);
+  std::printf(
+      "[ info ] plate across stream, Re %.0f: Cd thin filament %.3f, solid plate %.3f "
+      "after %d steps\n",
+      U * L / viscosity_of_tau(tau), cd_thin, cd_solid, r.steps);
   // The thin plate is slightly longer in effect: links that touch its ends are cut too.
   EXPECT_NEAR(cd_thin / cd_solid, 1.0, 0.12);
   // A 2D plate in free stream has Cd ~ 2 at high Re and more at low Re; this channel blocks a
@@ -250,20 +251,27 @@ TEST(FluidFilament, ForcesHaveOneEntryPerSegmentAndVanishOutsideTheGrid) {
   EXPECT_TRUE(s.filament_forces().empty());
 }
 
-// Two long crossing filaments (links cut by both belong to the first): one and two threads
-// give the same forces, so the owner of a link does not depend on the thread count.
+// Two long crossing filaments (links cut by both belong to the first), an obstacle and an
+// outflow sponge on a grid big enough for two lattice threads: one and two threads give the
+// same flow and forces, so neither the owner of a link nor any boundary pass depends on how
+// the rows are split.
 TEST(FluidFilament, ThreadCountDoesNotChangeTheResult) {
   std::vector<std::vector<std::vector<SegmentForce>>> results;
+  std::vector<FlowField> fields;
+  std::vector<Vec2> obstacle;
   for (int threads : {1, 2}) {
     Options o;
-    o.width = 160;
-    o.height = 120;
+    o.width = 200;
+    o.height = 170;  // 34000 cells: two threads
     o.tau = 0.7;
     o.precision = Precision::kDouble;
     o.threads = threads;
     o.left.kind = SideKind::kInlet;
     o.left.velocity = Vec2(0.04, 0.01);
     o.right.kind = SideKind::kOutflow;
+    o.sponge_width = 10;
+    o.sponge_velocity = Vec2(0.04, 0);
+    o.obstacle_polygons = {{Vec2(150, 80), Vec2(165, 84), Vec2(158, 100)}};
     Solver s(o);
     Filament a, b;
     for (int k = 0; k <= 160; ++k) {
@@ -273,8 +281,10 @@ TEST(FluidFilament, ThreadCountDoesNotChangeTheResult) {
       b.velocities.push_back(Vec2(0, -0.01));
     }
     s.set_filaments({a, b});
-    s.step(60);
+    s.step(300);  // long enough for the inflow to reach the obstacle and the sponge
     results.push_back(s.filament_forces());
+    fields.push_back(s.field());
+    obstacle.push_back(s.obstacle_forces().at(0).force);
   }
   ASSERT_EQ(results[0].size(), results[1].size());
   double scale = 0;
@@ -285,6 +295,10 @@ TEST(FluidFilament, ThreadCountDoesNotChangeTheResult) {
     for (std::size_t j = 0; j < results[0][k].size(); ++j)
       EXPECT_LT((results[0][k][j].force - results[1][k][j].force).norm(), 1e-12 * scale)
           << k << " " << j;
+  EXPECT_LT((fields[0].ux - fields[1].ux).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_LT((fields[0].density - fields[1].density).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_LT((obstacle[0] - obstacle[1]).norm(), 1e-12 * obstacle[0].norm());
+  EXPECT_GT(obstacle[0].x(), 0.0);
 }
 
 TEST(FluidFilament, BadFilamentsGiveClearErrorsAndKeepThePreviousOnes) {
