@@ -37,6 +37,8 @@ bool MeshOptions::is_valid(std::string* error) const {
     o << "segment::MeshOptions::max_edge_fraction = " << max_edge_fraction << "; must be in (0, 1]";
   else if (!(min_edge_px >= 1.0 && min_edge_px <= 1e6))
     o << "segment::MeshOptions::min_edge_px = " << min_edge_px << "; must be in [1, 1e6]";
+  else if (max_steiner_points < 0)
+    o << "segment::MeshOptions::max_steiner_points = " << max_steiner_points << "; must be >= 0";
   else if (!(shape_bound >= 0.0 && shape_bound <= 0.125))
     o << "segment::MeshOptions::shape_bound = " << shape_bound
       << "; must be in [0, 0.125] (larger bounds may not terminate)";
@@ -78,7 +80,14 @@ MeshResult build_mesh(const std::vector<Curve>& curves, int width, int height,
     if (options.refine) {
       const double edge =
           std::max(options.min_edge_px, options.max_edge_fraction * std::sqrt(W * H));
-      CGAL::refine_Delaunay_mesh_2(cdt, Criteria(options.shape_bound, edge));
+      // Step by step with a cap: nearly touching constraints would make the
+      // mesher split them down to their tiny distance.
+      CGAL::Delaunay_mesher_2<Cdt, Criteria> mesher(cdt, Criteria(options.shape_bound, edge));
+      mesher.init();
+      const std::size_t cap = before + static_cast<std::size_t>(options.max_steiner_points);
+      while (!mesher.is_refinement_done() && cdt.number_of_vertices() < cap)
+        mesher.step_by_step_refine_mesh();
+      result.refinement_complete = mesher.is_refinement_done();
     }
     result.steiner_points = static_cast<int>(cdt.number_of_vertices() - before);
   } catch (const std::exception& e) {

@@ -96,6 +96,20 @@ TEST(BuildMesh, WithoutRefinementOnlyInputPointsAreVertices) {
   EXPECT_EQ(r.constraint_segments, 1);
 }
 
+TEST(BuildMesh, RefinementStopsAtTheCapOnNearlyTouchingCurves) {
+  // Two constraints 1e-3 px apart: a full refinement would split them finely.
+  const std::vector<Curve> curves{polyline_curve({{10, 10}, {90, 10}}),
+                                  polyline_curve({{10, 10.001}, {90, 10.001}})};
+  MeshOptions o;
+  o.max_steiner_points = 500;
+  const MeshResult r = build_mesh(curves, 100, 40, o);
+  EXPECT_LE(r.steiner_points, 500);
+  r.mesh.validate("capped");
+  EXPECT_NEAR(total_area(r.mesh), 4000.0, 1e-6);
+  const MeshResult full = build_mesh({}, 100, 40);
+  EXPECT_TRUE(full.refinement_complete);
+}
+
 TEST(BuildMesh, BadInputIsRejected) {
   EXPECT_THROW(build_mesh({}, 0, 10), Error);
   EXPECT_THROW(build_mesh({}, 10, -1), Error);

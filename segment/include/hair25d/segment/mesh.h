@@ -21,6 +21,9 @@ struct MeshOptions {
   // for α ≥ 20.7°, 0 refines by size only.
   double shape_bound = 0.125;
   bool refine = true;
+  // Refinement stops after adding this many vertices (a guard against
+  // constraints that nearly touch); MeshResult says whether it finished.
+  int max_steiner_points = 200000;
 
   bool is_valid(std::string* error) const;
 };
@@ -28,7 +31,8 @@ struct MeshOptions {
 struct MeshResult {
   TriMesh2 mesh;  // covers [0, width] × [0, height]; on_curve marks curve edges
   int constraint_segments = 0;
-  int steiner_points = 0;  // vertices added by refinement
+  int steiner_points = 0;           // vertices added by refinement
+  bool refinement_complete = true;  // false: stopped at max_steiner_points
 };
 
 // Triangulates the rectangle [0, width] × [0, height] with every curve segment
