@@ -91,6 +91,19 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       ctx.regions[r.b].occluders.insert(r.a);
   }
 
+  for (const auto& [id, info] : ctx.regions) {
+    std::vector<int> stack(info.occluders.begin(), info.occluders.end());
+    std::set<int>& seen = ctx.above[id];
+    while (!stack.empty()) {
+      const int r = stack.back();
+      stack.pop_back();
+      if (!seen.insert(r).second) continue;
+      auto it = ctx.regions.find(r);
+      if (it != ctx.regions.end())
+        stack.insert(stack.end(), it->second.occluders.begin(), it->second.occluders.end());
+    }
+  }
+
   // Head centre: given, else the centroid of the hair (it frames the face).
   if (input.head_center) {
     ctx.head = *input.head_center;
@@ -140,19 +153,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   };
   // A strand cannot lie above itself: two regions one of which is above the
   // other through a chain of relations are never joined.
-  std::map<int, std::set<int>> above;  // region -> regions transitively above it
-  for (const auto& [id, info] : ctx.regions) {
-    std::vector<int> stack(info.occluders.begin(), info.occluders.end());
-    std::set<int>& seen = above[id];
-    while (!stack.empty()) {
-      const int r = stack.back();
-      stack.pop_back();
-      if (!seen.insert(r).second) continue;
-      auto it = ctx.regions.find(r);
-      if (it != ctx.regions.end())
-        stack.insert(stack.end(), it->second.occluders.begin(), it->second.occluders.end());
-    }
-  }
+  const auto& above = ctx.above;
   const auto try_join = [&](int a, int b) {
     const int ga = strands.find(a), gb = strands.find(b);
     if (ga == gb) return false;
@@ -160,7 +161,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       if (strands.find(x) != ga) continue;
       for (const auto& [y, iy] : ctx.regions) {
         if (strands.find(y) != gb) continue;
-        if (above[x].count(y) || above[y].count(x)) return false;
+        if (ctx.is_above(y, x) || ctx.is_above(x, y)) return false;
       }
     }
     strands.unite(a, b);

@@ -48,6 +48,12 @@ struct Context {
   int label(const Vec2& p) const {
     return label(static_cast<int>(std::floor(p.x())), static_cast<int>(std::floor(p.y())));
   }
+  // region -> regions above it through any chain of relations (drawn above it).
+  std::map<int, std::set<int>> above;
+  bool is_above(int upper, int region) const {
+    auto it = above.find(region);
+    return it != above.end() && it->second.count(upper) > 0;
+  }
   bool occludes(int occluder, int region) const {
     auto it = regions.find(region);
     return it != regions.end() && it->second.occluders.count(occluder) > 0;

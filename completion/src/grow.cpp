@@ -109,7 +109,7 @@ Growth grow_edge(const Context& ctx, const Edge& e) {
 
   const auto allowed = [&](const Vec2& x) {
     const int l = ctx.label(x);
-    return l != 0 && (l == e.region || region.occluders.count(l) > 0);
+    return l != 0 && (l == e.region || ctx.is_above(l, e.region));
   };
   const ContourResult grown = grow_contour(initial_curve(e, region.centroid), e.tangent_p,
                                            e.tangent_q, fields, allowed, ctx.options->contour);

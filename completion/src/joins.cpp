@@ -71,7 +71,7 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, int* 
       const int l = ctx.labels.at(gx, gy);
       if (l == ra || l == rb) continue;
       ++total;
-      if (l != 0 && (ctx.occludes(l, ra) || ctx.occludes(l, rb))) ++under;
+      if (l != 0 && (ctx.is_above(l, ra) || ctx.is_above(l, rb))) ++under;
     }
   *hidden = total;
   return total > 0 ? static_cast<double>(under) / total : 1.0;

@@ -25,7 +25,7 @@ cv::Rect polygon_box(const Polyline& poly) {
 bool occluded_by_any(const Context& ctx, int label, const std::vector<int>& members) {
   if (label == 0) return false;
   for (int m : members)
-    if (ctx.occludes(label, m)) return true;
+    if (ctx.is_above(label, m)) return true;
   return false;
 }
 

@@ -29,12 +29,22 @@ TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
     o.inpaint_background = false;
     const Result r = complete_strands(in, o);
     SCOPED_TRACE(seed);
-    // Which regions lie above which (the relations, transitively not needed:
-    // a completed pixel must show a direct occluder of one of its pieces).
-    std::map<int, std::set<int>> above;
+    // Which regions lie above which, through any chain of relations: a
+    // completed pixel must show one of those above one of its pieces.
+    std::map<int, std::set<int>> direct, above;
     for (const RegionRelation& rel : in.relations) {
-      if (rel.relation == Relation::kBelow) above[rel.a].insert(rel.b);
-      if (rel.relation == Relation::kAbove) above[rel.b].insert(rel.a);
+      if (rel.relation == Relation::kBelow) direct[rel.a].insert(rel.b);
+      if (rel.relation == Relation::kAbove) direct[rel.b].insert(rel.a);
+    }
+    for (const auto& [id, ups] : direct) {
+      std::vector<int> stack(ups.begin(), ups.end());
+      while (!stack.empty()) {
+        const int r = stack.back();
+        stack.pop_back();
+        if (!above[id].insert(r).second) continue;
+        auto it = direct.find(r);
+        if (it != direct.end()) stack.insert(stack.end(), it->second.begin(), it->second.end());
+      }
     }
     std::set<int> seen;
     for (const CompletedStrand& s : r.strands) {
