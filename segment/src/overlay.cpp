@@ -47,7 +47,12 @@ Image draw_overlay(const Image& image, const Segmentation& seg, const LabelMap& 
   Image out(image.width(), image.height());
   for (int y = 0; y < image.height(); ++y) {
     for (int x = 0; x < image.width(); ++x) {
-      const Rgba p = image.at(x, y);
+      // Transparent paper shows as white.
+      const Rgba q = image.at(x, y);
+      auto over_white = [&](std::uint8_t c) {
+        return static_cast<std::uint8_t>((c * q.a + 255 * (255 - q.a) + 127) / 255);
+      };
+      const Rgba p{over_white(q.r), over_white(q.g), over_white(q.b), 255};
       const int id = regions.at(x, y);
       const Rgba c = label_colour(id);
       // Background stays a faded drawing; regions get a strong tint.
