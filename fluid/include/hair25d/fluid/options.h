@@ -28,7 +28,8 @@ enum class SideKind {
               // periodic)
   kWall,      // no-slip wall half a cell outside the grid; `velocity` makes it a moving wall (lid)
   kInlet,     // velocity inlet: `velocity` (times `profile`), imposed by moving-wall bounce-back
-  kOutflow,   // open outlet at density 1 (pressure outlet, anti-bounce-back): flow leaves freely
+  kOutflow,   // open outlet at density 1 (pressure outlet, anti-bounce-back): flow leaves
+              // freely; flow trying to come back in is stopped (vortices crossing it stay stable)
 };
 
 enum class SideName { kLeft, kRight, kTop, kBottom };
