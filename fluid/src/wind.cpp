@@ -91,6 +91,19 @@ double LatticeParameters::pressure_to_image(double p) const {
   return p * c * c;
 }
 
+Filament to_filament(const Polyline& skeleton, const std::vector<Vec2>& velocities,
+                     const LatticeParameters& lattice) {
+  if (!velocities.empty() && velocities.size() != skeleton.size())
+    throw Error("fluid::to_filament: " + std::to_string(velocities.size()) + " velocities for " +
+                std::to_string(skeleton.size()) + " skeleton points; must be 0 or one per point");
+  Filament f;
+  f.points.reserve(skeleton.size());
+  for (const Vec2& p : skeleton) f.points.push_back(lattice.to_grid(p));
+  f.velocities.reserve(velocities.size());
+  for (const Vec2& v : velocities) f.velocities.push_back(lattice.to_lattice_velocity(v));
+  return f;
+}
+
 LatticeParameters to_lattice(const WindSettings& wind, const SceneUnits& scene) {
   std::string error;
   if (!wind.is_valid(&error) || !scene.is_valid(&error)) throw Error(error);

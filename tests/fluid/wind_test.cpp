@@ -55,6 +55,15 @@ TEST(FluidWind, ToLatticeConvertsUnits) {
   EXPECT_NEAR(p.to_lattice_velocity(Vec2(200, 0)).x(), 200 * p.dt / 4.0, 1e-15);
   EXPECT_EQ(p.to_grid(Vec2(8, 12)), Vec2(2, 3));
   EXPECT_EQ(p.to_image(Vec2(2, 3)), Vec2(8, 12));
+  const Filament f = to_filament({Vec2(8, 12), Vec2(16, 12)}, {Vec2(200, 0), Vec2(0, 100)}, p);
+  EXPECT_EQ(f.points[1], Vec2(4, 3));
+  EXPECT_NEAR(f.velocities[0].x(), 200 * p.dt / 4.0, 1e-15);
+  EXPECT_NEAR(f.velocities[1].y(), 100 * p.dt / 4.0, 1e-15);
+  expect_error(
+      [&] {
+        to_filament({Vec2(8, 12), Vec2(16, 12)}, {Vec2(1, 0)}, p);
+      },
+      "fluid::to_filament: 1 velocities for 2 skeleton points");
   EXPECT_NEAR(p.pressure_to_image(1.0), std::pow(4.0 / p.dt, 2), 1e-6);
   // Explicit step count is kept.
   SceneUnits s = scene();
@@ -243,7 +252,11 @@ TEST(FluidWind, WindTunnelPushesHairDownwind) {
   Solver solver(o);
   const WindField wind(w, p);
   Filament hair;
-  for (int k = 0; k <= 10; ++k) hair.points.push_back(p.to_grid(Vec2(150 + 3 * k, 40 + 10 * k)));
+  Polyline skeleton;
+  for (int k = 0; k <= 10; ++k) skeleton.push_back(Vec2(150 + 3 * k, 40 + 10 * k));
+  hair = to_filament(skeleton, {}, p);
+  EXPECT_EQ(hair.points[2], Vec2(156, 60) / s.cell_size);
+  EXPECT_TRUE(hair.velocities.empty());
   solver.set_filaments({hair});
   double fmin = 1e9, fmax = -1e9, mean = 0;
   const int frames = 36;

@@ -71,6 +71,12 @@ struct LatticeParameters {
   double pressure_to_image(double lattice_pressure) const;
 };
 
+// A hair skeleton in image pixels with its node velocities in pixels per second (empty = at
+// rest) as a filament in grid coordinates and cells per step, ready for Solver::set_filaments.
+// Throws hair25d::Error when the velocity count is neither 0 nor the point count.
+Filament to_filament(const Polyline& skeleton, const std::vector<Vec2>& velocities,
+                     const LatticeParameters& lattice);
+
 // Converts to lattice units. Throws hair25d::Error naming the setting when the result would
 // be unstable: wind too fast for the steps per frame (Mach), viscosity so low that tau comes
 // too close to 1/2 or the cell Reynolds number gets too high, or so high that tau explodes.
