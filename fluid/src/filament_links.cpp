@@ -5,8 +5,6 @@
 // conserves mass for a wall at rest and gives the force by momentum exchange on the same
 // links, at the cost of O(length) work per segment per step. An immersed boundary spreads
 // the wall over ~2 cells, so a zero-thickness plate leaks unless the coupling is iterated.
-#include <omp.h>
-
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -117,7 +115,7 @@ void LinkCutter::cut_segment(const Filament& fil, std::size_t k, std::int32_t se
     }
 }
 
-void LinkCutter::cut(const std::vector<Filament>& filaments, int threads,
+void LinkCutter::cut(const std::vector<Filament>& filaments, WorkerPool& pool,
                      std::vector<CutLink>* links, std::vector<int>* first_segment) {
   touched_.clear();
   raw_.clear();
@@ -128,21 +126,19 @@ void LinkCutter::cut(const std::vector<Filament>& filaments, int threads,
       segments_.push_back({static_cast<std::int32_t>(f), static_cast<std::int32_t>(k)});
     first_segment->push_back(static_cast<int>(segments_.size()));
   }
-  // The geometry runs in parallel over contiguous blocks of segments; the blocks are then
-  // merged in order, so the first segment to cut a link owns it, whatever the thread count.
+  // The geometry runs in parallel over chunks of segments; the chunks are then merged in
+  // order, so the first segment to cut a link owns it, whatever the thread count.
   const int n = static_cast<int>(segments_.size());
-  const int nt = std::max(1, std::min(threads, n / kSegmentsPerThread));
-  if (static_cast<int>(found_.size()) < nt) found_.resize(nt);
-#pragma omp parallel num_threads(nt) if (nt > 1)
-  {
-    const int tid = omp_get_thread_num(), used = omp_get_num_threads();
-    std::vector<CutLink>& out = found_[tid];
+  const int chunks = (n + kSegmentsPerChunk - 1) / kSegmentsPerChunk;
+  if (static_cast<int>(found_.size()) < chunks) found_.resize(chunks);
+  pool.run(chunks, [&](int c, int) {
+    std::vector<CutLink>& out = found_[c];
     out.clear();
-    for (int s = n * tid / used; s < n * (tid + 1) / used; ++s)
+    for (int s = c * kSegmentsPerChunk; s < std::min(n, (c + 1) * kSegmentsPerChunk); ++s)
       cut_segment(filaments[segments_[s].first], segments_[s].second, s, out);
-  }
-  for (int t = 0; t < nt; ++t)
-    for (const CutLink& l : found_[t]) add(l);
+  });
+  for (int c = 0; c < chunks; ++c)
+    for (const CutLink& l : found_[c]) add(l);
   // Order by (cell, dir) without sorting the links: sort the cells, give each its offset, then
   // scatter every link to offset + rank of its direction among the cell's cut directions.
   // Two counting passes (x, then y) sort the cells in O(cells + width + height).

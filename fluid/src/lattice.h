@@ -11,6 +11,7 @@
 
 #include "hair25d/fluid/options.h"
 #include "hair25d/fluid/solver.h"
+#include "worker_pool.h"
 
 namespace hair25d::fluid {
 
@@ -31,11 +32,11 @@ class LinkCutter {
   // All links cut, sorted by (cell, dir), one per (cell, dir): the first segment that cuts a
   // link owns it. `first_segment` gets the global id of each filament's first segment, then
   // the total.
-  void cut(const std::vector<Filament>& filaments, int threads, std::vector<CutLink>* links,
+  void cut(const std::vector<Filament>& filaments, WorkerPool& pool, std::vector<CutLink>* links,
            std::vector<int>* first_segment);
 
  private:
-  static constexpr int kSegmentsPerThread = 128;
+  static constexpr int kSegmentsPerChunk = 128;
   void cut_segment(const Filament& fil, std::size_t k, std::int32_t segment,
                    std::vector<CutLink>& out) const;
   void add(const CutLink& link);
@@ -47,13 +48,14 @@ class LinkCutter {
   std::vector<CutLink> raw_;           // unique links in the order found
   std::vector<std::int32_t> scratch_, count_;
   std::vector<std::pair<std::int32_t, std::int32_t>> segments_;  // (filament, index)
-  std::vector<std::vector<CutLink>> found_;                      // per thread
+  std::vector<std::vector<CutLink>> found_;                      // per chunk of segments
 };
 
 class LatticeBase {
  public:
-  LatticeBase(int width, int height) : cutter(width, height) {}
+  LatticeBase(int width, int height, int threads) : pool(threads), cutter(width, height) {}
   virtual ~LatticeBase() = default;
+  WorkerPool pool;    // shared by the steps and the link cutting
   LinkCutter cutter;  // scratch of set_filaments, kept to avoid reallocation
   std::vector<CutLink> cut_scratch;
   // One time step; returns the sum of |u|^2 over the bulk (NaN or huge when diverged).

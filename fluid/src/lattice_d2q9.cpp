@@ -1,7 +1,6 @@
 // Construction, the bulk kernel, the step and the read-out of the D2Q9 lattice. The domain
 // sides live in a one-cell halo refilled before every step (lattice_boundary.cpp), so the
 // bulk never tests where it is.
-#include <omp.h>
 #ifdef __linux__
 #include <sys/mman.h>
 #endif
@@ -19,11 +18,11 @@ namespace detail {
 
 template <typename T>
 Lattice<T>::Lattice(const Options& o, const Eigen::MatrixXi& labels)
-    : LatticeBase(o.width, o.height), width_(o.width), height_(o.height), threads_(o.threads) {
-  // Waking a second thread costs a few microseconds per step (far more on a loaded machine):
-  // below ~16k cells per thread one thread wins
-  // (and does not fight over a loaded machine).
-  threads_ = std::max(1, std::min(threads_, width_ * height_ / kCellsPerThread));
+    : LatticeBase(o.width, o.height,
+                  std::max(1, std::min(o.threads, o.width * o.height / kCellsPerThread))),
+      width_(o.width),
+      height_(o.height),
+      threads_(pool.size()) {
   // Rows padded to whole cache lines, and never to a multiple of 512 bytes: rows whose length
   // is a power of two map the three rows a cell reads onto the same cache sets.
   std::size_t stride = round_up(static_cast<std::size_t>(width_) + 2, kAlign);
@@ -216,39 +215,40 @@ double Lattice<T>::step() {
   fill_halo();
   for (auto& acc : segment_acc_) std::fill(acc.begin(), acc.end(), Vec2::Zero());
   for (auto& acc : obstacle_acc_) std::fill(acc.begin(), acc.end(), Vec2::Zero());
-  double usq = 0.0;
-#pragma omp parallel num_threads(threads_) if (threads_ > 1) reduction(+ : usq)
-  {
-    const int nt = omp_get_num_threads();
-    const int tid = omp_get_thread_num();
-    const int y0 = static_cast<int>(static_cast<std::int64_t>(height_) * tid / nt);
-    const int y1 = static_cast<int>(static_cast<std::int64_t>(height_) * (tid + 1) / nt);
+  // Rows go out in chunks; every pass after the bulk writes only the cell it works on and
+  // reads only the source planes, so a chunk does all passes for its rows with no barrier
+  // in between (all three cell lists are in row order).
+  const int rows =
+      threads_ > 1 ? std::max(4, (height_ + kChunksPerStep - 1) / kChunksPerStep) : height_;
+  const int chunks = (height_ + rows - 1) / rows;
+  for (auto& u : usq_) u.value = 0.0;
+  pool.run(chunks, [&](int c, int slot) {
+    const int y0 = c * rows, y1 = std::min(height_, y0 + rows);
+    double& usq = usq_[slot].value;
     if (les_)
       usq += forced_ ? bulk<true, true>(y0, y1) : bulk<false, true>(y0, y1);
     else
       usq += forced_ ? bulk<true, false>(y0, y1) : bulk<false, false>(y0, y1);
-    // Every pass after the bulk writes only the cell it works on and reads only the source
-    // planes, so each thread takes the boundary, solid and sponge cells of its own rows
-    // (all three lists are in row order) and no barrier is needed: one fork and one join per
-    // step, which matters when the machine is busy and a waiting thread loses a time slice.
     const std::ptrdiff_t lo = idx(-1, y0), hi = idx(-1, y1);
     const auto sb = std::partition_point(special_.begin(), special_.end(),
-                                         [&](const Special& c) { return c.idx < lo; });
+                                         [&](const Special& sp) { return sp.idx < lo; });
     const auto se =
-        std::partition_point(sb, special_.end(), [&](const Special& c) { return c.idx < hi; });
+        std::partition_point(sb, special_.end(), [&](const Special& sp) { return sp.idx < hi; });
     boundary(static_cast<std::size_t>(sb - special_.begin()),
-             static_cast<std::size_t>(se - special_.begin()), tid);
+             static_cast<std::size_t>(se - special_.begin()), slot);
     const auto ob = std::lower_bound(solid_idx_.begin(), solid_idx_.end(), lo);
     const auto oe = std::lower_bound(ob, solid_idx_.end(), hi);
     for (auto k = ob; k != oe; ++k)
       for (int i = 0; i < 9; ++i) dst_[i][*k] = T(0);
     const auto ab = std::partition_point(sponge_.begin(), sponge_.end(),
-                                         [&](const SpongeCell& c) { return c.idx < lo; });
+                                         [&](const SpongeCell& sc) { return sc.idx < lo; });
     const auto ae =
-        std::partition_point(ab, sponge_.end(), [&](const SpongeCell& c) { return c.idx < hi; });
+        std::partition_point(ab, sponge_.end(), [&](const SpongeCell& sc) { return sc.idx < hi; });
     absorb(static_cast<std::size_t>(ab - sponge_.begin()),
            static_cast<std::size_t>(ae - sponge_.begin()));
-  }
+  });
+  double usq = 0.0;
+  for (const auto& u : usq_) usq += u.value;
   for (int s = 0; s < segment_count_; ++s) {
     Vec2 sum = Vec2::Zero();
     for (const auto& acc : segment_acc_) sum += acc[s];

@@ -29,7 +29,9 @@ using d2q9::kCy;
 using d2q9::kOpp;
 using d2q9::kW;
 
+// Below ~16k cells per thread a second thread does not pay for waking it.
 constexpr int kCellsPerThread = 16384;
+constexpr int kChunksPerStep = 16;  // row chunks per step with several threads
 constexpr int kSideLeft = 0, kSideRight = 1, kSideTop = 2, kSideBottom = 3;
 
 inline int side_index(SideName s) {
@@ -104,6 +106,10 @@ class Lattice final : public LatticeBase {
   void moments(std::ptrdiff_t id, T& rho, T& ux, T& uy) const;
 
   int width_, height_, threads_;
+  struct alignas(64) Partial {
+    double value = 0.0;
+  };
+  std::vector<Partial> usq_ = std::vector<Partial>(64);  // per thread slot, own cache line
   std::ptrdiff_t stride_ = 0;
   std::size_t plane_ = 0;
   struct Free {

@@ -136,7 +136,7 @@ void Solver::set_filaments(const std::vector<Filament>& filaments) {
                     " cells/step");
   }
   std::vector<int> first;
-  lattice_->cutter.cut(filaments, options_.threads, &lattice_->cut_scratch, &first);
+  lattice_->cutter.cut(filaments, lattice_->pool, &lattice_->cut_scratch, &first);
   const int total = first.back();
   lattice_->set_cut_links(lattice_->cut_scratch, total);
   first_segment_ = std::move(first);
