@@ -107,6 +107,14 @@ Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<i
   // parallel to its other side, or straight out across the chord.
   if (!has_p) e.tangent_p = has_q ? e.tangent_q : out;
   if (!has_q) e.tangent_q = has_p ? e.tangent_p : out;
+  // Both sides of a band run into the hidden part the same way; opposite
+  // tangents mean the shorter visible run turned a corner: trust the longer.
+  if (e.tangent_p.dot(e.tangent_q) < -0.3) {
+    if (free_before >= free_after)
+      e.tangent_q = e.tangent_p;
+    else
+      e.tangent_p = e.tangent_q;
+  }
   // The region's colour next to the edge (drawn pixels only, not outlines).
   Eigen::Vector3d sum(0, 0, 0);
   int count = 0;
