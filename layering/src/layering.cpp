@@ -147,6 +147,8 @@ bool Options::is_valid(std::string* error) const {
     if (error) *error = "layering::Options::" + what;
     return false;
   };
+  if (!positive_finite(learned_scale))
+    return fail("learned_scale = " + num(learned_scale) + "; must be finite and > 0");
   if (!(std::isfinite(junction_weight) && junction_weight >= 0))
     return fail("junction_weight = " + num(junction_weight) + "; must be finite and >= 0");
   if (!positive_finite(coupling_cap))
@@ -277,9 +279,16 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   for (int i = 0; i < nb; ++i) {
     const Boundary& b = bs[i];
     if (b.closed()) continue;
-    rays[b.start].push_back({i, true, leaving_direction(b.points, reach)});
+    const Vec2 leave_start = leaving_direction(b.points, reach);
     Polyline back(b.points.rbegin(), b.points.rend());
-    rays[b.end].push_back({i, false, leaving_direction(back, reach)});
+    const Vec2 leave_end = leaving_direction(back, reach);
+    rays[b.start].push_back({i, true, leave_start});
+    rays[b.end].push_back({i, false, leave_end});
+    // From the first direction to the last one (arriving, -leave_end); on
+    // the screen (y down) a positive cross product turns right.
+    const Vec2 arrive = -leave_end;
+    const double cross = leave_start.x() * arrive.y() - leave_start.y() * arrive.x();
+    out.boundaries[i].cues.turning = -std::atan2(cross, leave_start.dot(arrive));
     const bool on_border = b.left == kOutsideLabel || b.right == kOutsideLabel;
     if (!on_border && !out.boundaries[i].occluding) cusp[b.start] = cusp[b.end] = 1;
   }
@@ -302,6 +311,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       if (cusp[j]) continue;
       const double term = junction_metric(alpha, beta);
       BoundaryReport& rep = out.boundaries[r.boundary];
+      (r.at_start ? rep.cues.start : rep.cues.end) = {true, alpha, beta};
       rep.phi_j += term;
       (r.at_start ? rep.phi_j_start : rep.phi_j_end) = term;
     }
@@ -322,6 +332,31 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     rep.phi_r = overlap_metric(curve) / scale2;
     rep.phi = options.junction_weight * rep.phi_j + rep.phi_r;
   }
+  // Region areas (Green's theorem over each region's boundaries, walked with
+  // the region on their left) and perimeters, for the learned metric.
+  std::map<int, double> area, perimeter;
+  for (int i = 0; i < nb; ++i) {
+    const Polyline& p = bs[i].points;
+    double twice = 0.0;
+    for (std::size_t k = 0; k + 1 < p.size(); ++k)
+      twice += p[k].x() * p[k + 1].y() - p[k + 1].x() * p[k].y();
+    if (bs[i].closed() && p.size() > 1)
+      twice += p.back().x() * p.front().y() - p.front().x() * p.back().y();
+    area[bs[i].left] += 0.5 * twice;
+    area[bs[i].right] -= 0.5 * twice;
+    perimeter[bs[i].left] += out.boundaries[i].length;
+    perimeter[bs[i].right] += out.boundaries[i].length;
+  }
+  for (int i = 0; i < nb; ++i) {
+    BoundaryReport& rep = out.boundaries[i];
+    rep.cues.phi_r = rep.phi_r;
+    rep.cues.area_left = std::abs(area[bs[i].left]);
+    rep.cues.area_right = std::abs(area[bs[i].right]);
+    rep.cues.perimeter_left = perimeter[bs[i].left];
+    rep.cues.perimeter_right = perimeter[bs[i].right];
+    rep.features = boundary_features(rep.cues);
+    rep.learned = learned_metric(rep.features);
+  }
 
   // --- Eq. (2): boundary states by one minimum cut (§4.5). ---
   report(progress, "layering", 0.6, "optimisation");
@@ -337,7 +372,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     const BoundaryReport& rep = out.boundaries[i];
     if (!rep.occluding || b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
     if (!options.background_states && (b.left == 0 || b.right == 0)) continue;
-    double unary = rep.phi;
+    double unary =
+        options.metric == Metric::kLearned ? options.learned_scale * rep.learned : rep.phi;
     auto f = fixed_dir.find(key(b.left, b.right));
     if (f != fixed_dir.end()) {
       const bool left_above = (f->second == Relation::kAbove) == (b.left < b.right);

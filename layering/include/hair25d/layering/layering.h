@@ -13,6 +13,7 @@
 #include "hair25d/core/image.h"
 #include "hair25d/core/progress.h"
 #include "hair25d/layering/boundary_graph.h"
+#include "hair25d/layering/learned_metric.h"
 
 namespace hair25d::layering {
 
@@ -23,7 +24,17 @@ enum class Coupling {
   kNone,           // no pairwise term: each boundary follows its own Φ
 };
 
+// The unary term of Eq. (2).
+enum class Metric {
+  kLearned,  // learned_metric (learned_metric.h) over the paper's cues and region shape
+  kPaper,    // Φ of Eq. (1) as the paper defines it
+};
+
 struct Options {
+  Metric metric = Metric::kLearned;
+  // The learned log-odds are multiplied by this before Eq. (2), which puts
+  // them on the scale of Φ and of the coupling weights φ_ij.
+  double learned_scale = 0.25;
   double junction_weight = 0.25;  // w in Eq. (1)
   // Cap of φ_ij = tan(|(θ mod π) − π/2|) in Eq. (2); θ near 0 or π would be infinite.
   double coupling_cap = 0.5;
@@ -68,7 +79,10 @@ struct BoundaryReport {
   double phi_j_end = 0.0;    // its term at the end junction
   double phi_r = 0.0;        // Φ_R / ‖L‖²
   double phi = 0.0;          // Eq. (1)
-  int state = 0;             // +1 left above, −1 right above, 0 no state
+  BoundaryCues cues;         // what the learned metric is computed from
+  BoundaryFeatures features{};
+  double learned = 0.0;  // learned_metric(features), log-odds of left above
+  int state = 0;         // +1 left above, −1 right above, 0 no state
 };
 
 // Where the relation of a pair is drawn: a point on their longest common

@@ -1,0 +1,56 @@
+#include "hair25d/layering/learned_metric.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "hair25d/layering/metrics.h"
+
+namespace hair25d::layering {
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+// Soft indicators of the junction shapes the paper's properties name: a
+// straight continuation (the occluder's outline runs through, Property 1), a
+// right angle (the occludee's cut outline), a tip (Property 4), a reflex
+// sector (a region wrapping around the junction).
+double straight(double a) { return std::max(0.0, 1.0 - std::abs(a - kPi) / (kPi / 4)); }
+double right_angle(double a) { return std::max(0.0, 1.0 - std::abs(a - kPi / 2) / (kPi / 4)); }
+double tip(double a) { return std::max(0.0, 1.0 - a / (kPi / 4)); }
+double reflex(double a) { return std::clamp((a - kPi) / (kPi / 2), 0.0, 1.0); }
+
+double safe_log(double v) { return std::log(std::max(v, 1.0)); }
+}  // namespace
+
+BoundaryFeatures boundary_features(const BoundaryCues& c) {
+  BoundaryFeatures f{};
+  for (const EndAngles& e : {c.start, c.end}) {
+    if (!e.used) continue;
+    const double a = e.left, b = e.right;
+    f[0] += junction_metric(a, b);
+    f[1] += (a - b) / kPi;
+    f[2] += straight(a) - straight(b);
+    f[3] += right_angle(a) - right_angle(b);
+    f[4] += tip(a) - tip(b);
+    f[5] += reflex(a) - reflex(b);
+  }
+  f[6] = std::clamp(c.phi_r, -1.0, 1.0);
+  f[7] = safe_log(c.area_left) - safe_log(c.area_right);
+  // Compactness, area / perimeter²: a strand is long and thin, a tuft or a
+  // cap round.
+  auto compact = [](double area, double perimeter) {
+    return perimeter > 0 ? 4 * kPi * area / (perimeter * perimeter) : 0.0;
+  };
+  f[8] = compact(c.area_left, c.perimeter_left) - compact(c.area_right, c.perimeter_right);
+  f[9] = c.turning / kPi;
+  return f;
+}
+
+double learned_metric(const BoundaryFeatures& features) {
+  const BoundaryFeatures& w = learned_weights();
+  double s = 0.0;
+  for (int i = 0; i < kBoundaryFeatureCount; ++i) s += w[i] * features[i];
+  return s;
+}
+
+}  // namespace hair25d::layering
