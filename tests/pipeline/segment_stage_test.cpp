@@ -97,6 +97,13 @@ TEST(SegmentStage, BadInputIsAClearError) {
   Strokes empty;
   EXPECT_THROW(run_segment(split_drawing(), &empty), Error);
   EXPECT_THROW(run_segment(Image(), nullptr), Error);
+  // Labels must fit the 16-bit regions.png.
+  Strokes big;
+  big.strokes = {{70000, 3.0, {{10, 30}}}};
+  const SegmentRun too_big = run_segment(split_drawing(), &big);
+  const fs::path dir = fs::temp_directory_path() / "hair25d_segment_stage_big";
+  EXPECT_THROW(write_segment_run(dir, too_big), Error);
+  EXPECT_FALSE(fs::exists(dir));
   // Tiny and non-square drawings are fine.
   Strokes dot;
   dot.strokes = {{1, 1.0, {{0, 0}}}};

@@ -127,5 +127,20 @@ TEST(LabelHelpers, MergeRelabelCompactAdjacency) {
   EXPECT_THROW(label_adjacency(m, {1}), Error);
 }
 
+TEST(AutomaticRegions, BrokenMeshAndBadOptionsAreRejected) {
+  TriMesh2 m;
+  m.V.resize(3, 2);
+  m.V << 0, 0, 1, 0, 0, 1;
+  m.F.resize(1, 3);
+  m.F << 0, 1, 7;  // no vertex 7
+  EXPECT_THROW(automatic_regions(m), Error);
+  SegmentOptions o;
+  o.cut.max_cycles = 0;
+  std::string why;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("max_cycles"), std::string::npos);
+  EXPECT_THROW(segment_image(Image(10, 10, {1, 1, 1, 255}), nullptr, o), Error);
+}
+
 }  // namespace
 }  // namespace hair25d::segment
