@@ -64,7 +64,9 @@ class Solver {
   // names the step and what to change); the solver then refuses further steps.
   void step(int steps = 1);
 
-  // Replaces all filaments (call every step when they move). Throws hair25d::Error on NaN or
+  // Replaces all filaments. Call it whenever they move: every step, or once per animation
+  // frame when they move less than a cell per frame (the node velocities then carry the
+  // motion in between, at a fraction of the cost). Throws hair25d::Error on NaN or
   // infinite points, zero-length segments, fewer than 2 points, wrong velocity count or
   // velocities above kMaxLatticeSpeed; the previous filaments stay in place then.
   void set_filaments(const std::vector<Filament>& filaments);
