@@ -85,77 +85,83 @@ LineField compute_line_field(const cv::Mat& grey, const std::vector<double>& sca
     cv::sepFilter2D(b, ix, CV_32F, k_d1, k_id, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
     cv::sepFilter2D(b, iy, CV_32F, k_id, k_d1, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
     const float s2 = static_cast<float>(sigma * sigma);
-    for (int y = 0; y < h; ++y) {
-      const float* pxx = ixx.ptr<float>(y);
-      const float* pyy = iyy.ptr<float>(y);
-      const float* pxy = ixy.ptr<float>(y);
-      const float* px = ix.ptr<float>(y);
-      const float* py = iy.ptr<float>(y);
-      float* resp = f.response.ptr<float>(y);
-      for (int x = 0; x < w; ++x) {
-        const float a = pxx[x], c = pyy[x], bxy = pxy[x];
-        const float half = 0.5f * (a - c);
-        const float root = std::sqrt(half * half + bxy * bxy);
-        const float lambda = 0.5f * (a + c) + root;   // largest: across a dark valley
-        const float lambda2 = 0.5f * (a + c) - root;  // along the line: ~0 on a line
-        // A dark dot (screentone) curves the same way in every direction: the
-        // second eigenvalue takes it out; on a line it is near zero.
-        const float r = s2 * (lambda - blob_weight * std::max(lambda2, 0.0f));
-        if (r <= resp[x]) continue;
-        // Eigenvector of the largest eigenvalue.
-        float ex, ey;
-        if (half >= 0.0f) {
-          ex = half + root;
-          ey = bxy;
-        } else {
-          ex = bxy;
-          ey = root - half;
+    // Rows are independent: two cores share them.
+    cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& rows) {
+      for (int y = rows.start; y < rows.end; ++y) {
+        const float* pxx = ixx.ptr<float>(y);
+        const float* pyy = iyy.ptr<float>(y);
+        const float* pxy = ixy.ptr<float>(y);
+        const float* px = ix.ptr<float>(y);
+        const float* py = iy.ptr<float>(y);
+        float* resp = f.response.ptr<float>(y);
+        for (int x = 0; x < w; ++x) {
+          const float a = pxx[x], c = pyy[x], bxy = pxy[x];
+          const float half = 0.5f * (a - c);
+          const float root = std::sqrt(half * half + bxy * bxy);
+          const float lambda = 0.5f * (a + c) + root;   // largest: across a dark valley
+          const float lambda2 = 0.5f * (a + c) - root;  // along the line: ~0 on a line
+          // A dark dot (screentone) curves the same way in every direction: the
+          // second eigenvalue takes it out; on a line it is near zero.
+          const float r = s2 * (lambda - blob_weight * std::max(lambda2, 0.0f));
+          if (r <= resp[x]) continue;
+          // Eigenvector of the largest eigenvalue.
+          float ex, ey;
+          if (half >= 0.0f) {
+            ex = half + root;
+            ey = bxy;
+          } else {
+            ex = bxy;
+            ey = root - half;
+          }
+          const float len = std::sqrt(ex * ex + ey * ey);
+          if (len < 1e-12f) {
+            ex = 1.0f;
+            ey = 0.0f;
+          } else {
+            ex /= len;
+            ey /= len;
+          }
+          resp[x] = r;
+          f.nx.at<float>(y, x) = ex;
+          f.ny.at<float>(y, x) = ey;
+          dn.at<float>(y, x) = ex * px[x] + ey * py[x];
+          l1.at<float>(y, x) = lambda;
+          scale_index.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(s);
         }
-        const float len = std::sqrt(ex * ex + ey * ey);
-        if (len < 1e-12f) {
-          ex = 1.0f;
-          ey = 0.0f;
-        } else {
-          ex /= len;
-          ey /= len;
-        }
-        resp[x] = r;
-        f.nx.at<float>(y, x) = ex;
-        f.ny.at<float>(y, x) = ey;
-        dn.at<float>(y, x) = ex * px[x] + ey * py[x];
-        l1.at<float>(y, x) = lambda;
-        scale_index.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(s);
       }
-    }
+    });
     blurred.push_back(std::move(b));
   }
   // A dark line is darker than both of its sides; the second derivative
   // alone also answers beside a step between two flat tones.
-  for (int y = 0; y < h; ++y) {
-    float* resp = f.response.ptr<float>(y);
-    for (int x = 0; x < w; ++x) {
-      if (resp[x] <= low_threshold) {
-        resp[x] = std::max(resp[x], 0.0f);
-        continue;
+  // Rows are independent: two cores share them.
+  cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      float* resp = f.response.ptr<float>(y);
+      for (int x = 0; x < w; ++x) {
+        if (resp[x] <= low_threshold) {
+          resp[x] = std::max(resp[x], 0.0f);
+          continue;
+        }
+        const int s = scale_index.at<std::uint8_t>(y, x);
+        const cv::Mat& b = blurred[s];
+        const float sigma = static_cast<float>(scales[s]);
+        const float d = std::max(1.5f, 2.0f * sigma);
+        const float ex = f.nx.at<float>(y, x), ey = f.ny.at<float>(y, x);
+        const float centre = b.at<float>(y, x);
+        const float side =
+            std::min(bilinear(b, x + d * ex, y + d * ey), bilinear(b, x - d * ex, y - d * ey));
+        const float depth = side - centre;
+        // Gate, not cap: the second derivative keeps its single peak at the
+        // line centre (a cap by the flat depth would make plateaus).
+        resp[x] = resp[x] * std::clamp(depth / (0.5f * resp[x]), 0.0f, 1.0f);
+        const float lambda = l1.at<float>(y, x);
+        float t = lambda > 1e-6f ? -dn.at<float>(y, x) / lambda : 0.0f;
+        f.offset.at<float>(y, x) = std::clamp(t, -0.5f, 0.5f);
+        f.sigma.at<float>(y, x) = sigma;
       }
-      const int s = scale_index.at<std::uint8_t>(y, x);
-      const cv::Mat& b = blurred[s];
-      const float sigma = static_cast<float>(scales[s]);
-      const float d = std::max(1.5f, 2.0f * sigma);
-      const float ex = f.nx.at<float>(y, x), ey = f.ny.at<float>(y, x);
-      const float centre = b.at<float>(y, x);
-      const float side =
-          std::min(bilinear(b, x + d * ex, y + d * ey), bilinear(b, x - d * ex, y - d * ey));
-      const float depth = side - centre;
-      // Gate, not cap: the second derivative keeps its single peak at the
-      // line centre (a cap by the flat depth would make plateaus).
-      resp[x] = resp[x] * std::clamp(depth / (0.5f * resp[x]), 0.0f, 1.0f);
-      const float lambda = l1.at<float>(y, x);
-      float t = lambda > 1e-6f ? -dn.at<float>(y, x) / lambda : 0.0f;
-      f.offset.at<float>(y, x) = std::clamp(t, -0.5f, 0.5f);
-      f.sigma.at<float>(y, x) = sigma;
     }
-  }
+  });
   return f;
 }
 
