@@ -26,6 +26,7 @@ namespace generator = hair25d::generator;
 struct Sample {
   layering::BoundaryFeatures x;
   double y = 0;  // +1 left above, -1 right above
+  double weight = 1;
 };
 
 // A spread of styles so the weights do not learn one look: shading, line
@@ -64,8 +65,8 @@ Eigen::VectorXd fit(const std::vector<Sample>& samples, double ridge) {
       const Eigen::Map<const Eigen::VectorXd> x(s.x.data(), d);
       const double m = s.y * w.dot(x);
       const double p = 1.0 / (1.0 + std::exp(m));  // σ(−m)
-      grad -= s.y * p * x;
-      hess += p * (1 - p) * x * x.transpose();
+      grad -= s.weight * s.y * p * x;
+      hess += s.weight * p * (1 - p) * x * x.transpose();
     }
     const Eigen::VectorXd step = hess.ldlt().solve(grad);
     w -= step;
@@ -81,9 +82,11 @@ int main(int argc, char** argv) {
   int cases = 240;
   std::uint64_t seed = 20000;
   double ridge = 1.0;
+  bool length_weighted = false;
   app.add_option("--cases", cases, "generated drawings")->check(CLI::PositiveNumber);
   app.add_option("--seed", seed, "seed of the first drawing");
   app.add_option("--ridge", ridge, "L2 penalty")->check(CLI::NonNegativeNumber);
+  app.add_flag("--length-weighted", length_weighted, "weight boundaries by sqrt(length)");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<Sample> samples;
@@ -108,7 +111,10 @@ int main(int argc, char** argv) {
       if (!b.occluding || b.left <= 0 || b.right <= 0) continue;
       auto t = truth.find({b.left, b.right});
       if (t == truth.end() || t->second == Relation::kEqual) continue;
-      samples.push_back({b.features, t->second == Relation::kAbove ? 1.0 : -1.0});
+      // A pair is decided by its boundaries' votes weighted by length; the
+      // square root keeps short boundaries (most junction errors) in play.
+      samples.push_back({b.features, t->second == Relation::kAbove ? 1.0 : -1.0,
+                         length_weighted ? std::sqrt(b.length / r.line_width) : 1.0});
     }
   }
   const Eigen::VectorXd w = fit(samples, ridge);

@@ -311,9 +311,31 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       if (cusp[j]) continue;
       const double term = junction_metric(alpha, beta);
       BoundaryReport& rep = out.boundaries[r.boundary];
-      (r.at_start ? rep.cues.start : rep.cues.end) = {true, alpha, beta};
+      (r.at_start ? rep.cues.start : rep.cues.end) = {true, alpha, beta, n};
       rep.phi_j += term;
       (r.at_start ? rep.phi_j_start : rep.phi_j_end) = term;
+    }
+  }
+  // The same sectors seen from farther away (3 × the fit length): a tip
+  // stays narrow, a wedge cut by rasterised lines opens up.
+  for (int j = 0; j < nj; ++j) {
+    if (cusp[j]) continue;
+    std::vector<Vec2> dirs;
+    for (const Ray& r : rays[j]) {
+      const Polyline& p = bs[r.boundary].points;
+      dirs.push_back(r.at_start ? leaving_direction(p, 3 * reach)
+                                : leaving_direction(Polyline(p.rbegin(), p.rend()), 3 * reach));
+    }
+    const RaySectors around = sectors_around(dirs);
+    const int n = static_cast<int>(dirs.size());
+    for (int k = 0; k < n; ++k) {
+      const Ray& r = rays[j][around.order[k]];
+      const double after = around.sectors[k];
+      const double before = around.sectors[(k + n - 1) % n];
+      EndAngles& e =
+          r.at_start ? out.boundaries[r.boundary].cues.start : out.boundaries[r.boundary].cues.end;
+      e.wide_left = r.at_start ? before : after;
+      e.wide_right = r.at_start ? after : before;
     }
   }
   if (!hair_junction)

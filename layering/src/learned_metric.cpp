@@ -33,6 +33,17 @@ BoundaryFeatures boundary_features(const BoundaryCues& c) {
     f[3] += right_angle(a) - right_angle(b);
     f[4] += tip(a) - tip(b);
     f[5] += reflex(a) - reflex(b);
+    // Property 3 (α + β ≈ π: the stem of a T between two regions both below
+    // the bar) says nothing; the ideal T and the tip as products.
+    f[10] += junction_metric(a, b) * (1.0 - straight(a + b));
+    f[11] += e.rays >= 4 ? (a - b) / kPi : 0.0;
+    f[12] += straight(a) * right_angle(b) - straight(b) * right_angle(a);
+    f[13] += tip(a) * (1.0 - straight(b)) - tip(b) * (1.0 - straight(a));
+    const double wa = e.wide_left, wb = e.wide_right;
+    f[14] += junction_metric(wa, wb);
+    f[15] += (wa - wb) / kPi;
+    f[16] += straight(wa) - straight(wb);
+    f[17] += tip(wa) - tip(wb);
   }
   f[6] = std::clamp(c.phi_r, -1.0, 1.0);
   f[7] = safe_log(c.area_left) - safe_log(c.area_right);

@@ -62,25 +62,51 @@ Relation relation_of(const Result& r, int a, int b) {
 }
 
 TEST(LayerRegions, CrossingStrands) {
-  const Scene s = crossing();
+  for (Metric metric : {Metric::kLearned, Metric::kPaper}) {
+    SCOPED_TRACE(metric == Metric::kPaper ? "paper" : "learned");
+    Options options;
+    options.metric = metric;
+    const Scene s = crossing();
+    const Result r = layer_regions(s.image, s.regions, options);
+    EXPECT_EQ(relation_of(r, 1, 2), Relation::kBelow);
+    EXPECT_EQ(relation_of(r, 1, 3), Relation::kBelow);
+    EXPECT_EQ(relation_of(r, 1, 4), Relation::kBelow);
+    EXPECT_EQ(relation_of(r, 2, 3), Relation::kBelow);
+    EXPECT_EQ(relation_of(r, 4, 3), Relation::kBelow);
+    EXPECT_TRUE(r.overridden.empty());
+    EXPECT_EQ(r.depth.at(1), 0);
+    EXPECT_GT(r.depth.at(3), r.depth.at(2));
+    EXPECT_GT(r.depth.at(3), r.depth.at(4));
+    EXPECT_NEAR(r.line_width, 3.0, 1.0);
+    EXPECT_EQ(r.anchors.size(), r.relations.size());
+    EXPECT_FALSE(r.summary.empty());
+    // Every reported relation is between hair regions, smaller id first.
+    for (const RegionRelation& x : r.relations) {
+      EXPECT_GT(x.a, 0);
+      EXPECT_LT(x.a, x.b);
+    }
+  }
+}
+
+TEST(LayerRegions, RegionsAcrossASliverStrandAreNeighbours) {
+  // A strand only 2 pixels wide inside its outline (2) lies over the back
+  // hair and splits it into 1 (left) and 5 (right), which never touch but
+  // are judged neighbours by a reader. 190 × 140.
+  Scene s = paint(
+      190, 140,
+      {{20, 15, 170, 125, 1, {200, 170, 120, 255}}, {80, 3, 87, 137, 2, {190, 150, 110, 255}}}, 3,
+      0);
+  for (int y = 0; y < s.image.height(); ++y)
+    for (int x = 88; x < s.image.width(); ++x)
+      if (s.regions.at(x, y) == 1) s.regions.at(x, y) = 5;
   const Result r = layer_regions(s.image, s.regions);
   EXPECT_EQ(relation_of(r, 1, 2), Relation::kBelow);
-  EXPECT_EQ(relation_of(r, 1, 3), Relation::kBelow);
-  EXPECT_EQ(relation_of(r, 1, 4), Relation::kBelow);
-  EXPECT_EQ(relation_of(r, 2, 3), Relation::kBelow);
-  EXPECT_EQ(relation_of(r, 4, 3), Relation::kBelow);
-  EXPECT_TRUE(r.overridden.empty());
-  EXPECT_EQ(r.depth.at(1), 0);
-  EXPECT_GT(r.depth.at(3), r.depth.at(2));
-  EXPECT_GT(r.depth.at(3), r.depth.at(4));
-  EXPECT_NEAR(r.line_width, 3.0, 1.0);
+  EXPECT_EQ(relation_of(r, 5, 2), Relation::kBelow);
+  // Related, and in agreement with the drawing order.
+  const Relation across = relation_of(r, 1, 5);
+  const int d1 = r.depth.at(1), d5 = r.depth.at(5);
+  EXPECT_EQ(across, d1 > d5 ? Relation::kAbove : d1 < d5 ? Relation::kBelow : Relation::kEqual);
   EXPECT_EQ(r.anchors.size(), r.relations.size());
-  EXPECT_FALSE(r.summary.empty());
-  // Every reported relation is between hair regions, smaller id first.
-  for (const RegionRelation& x : r.relations) {
-    EXPECT_GT(x.a, 0);
-    EXPECT_LT(x.a, x.b);
-  }
 }
 
 TEST(LayerRegions, BoundaryWithoutALineIsEqual) {
@@ -177,6 +203,9 @@ TEST(LayerRegions, RejectsBadOptions) {
   const Scene s = crossing();
   Options o;
   o.coupling_cap = -1;
+  EXPECT_THROW(layer_regions(s.image, s.regions, o), Error);
+  o = {};
+  o.learned_scale = 0;
   EXPECT_THROW(layer_regions(s.image, s.regions, o), Error);
   o = {};
   o.equal_fraction = 2;

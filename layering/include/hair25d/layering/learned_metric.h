@@ -13,6 +13,10 @@ struct EndAngles {
   bool used = false;  // false at a cusp or where the boundary has no junction
   double left = 0.0;
   double right = 0.0;
+  int rays = 3;  // boundaries meeting at the junction
+  // The same sectors from directions fitted over a 3 × longer arc.
+  double wide_left = 0.0;
+  double wide_right = 0.0;
 };
 
 // The cues of one boundary between regions `left` and `right`. Every feature
@@ -30,7 +34,7 @@ struct BoundaryCues {
   double turning = 0.0;
 };
 
-inline constexpr int kBoundaryFeatureCount = 10;
+inline constexpr int kBoundaryFeatureCount = 18;
 using BoundaryFeatures = std::array<double, kBoundaryFeatureCount>;
 
 BoundaryFeatures boundary_features(const BoundaryCues& cues);

@@ -1,0 +1,75 @@
+// The learned boundary metric: its features change sign with the walking
+// direction (so the model cannot prefer a side), and the trained weights keep
+// the paper's basic cues — the bar of an ideal T and the convex side on top.
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <random>
+
+#include "hair25d/layering/learned_metric.h"
+
+namespace hair25d::layering {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+BoundaryCues swapped(BoundaryCues c) {
+  for (EndAngles* e : {&c.start, &c.end}) {
+    std::swap(e->left, e->right);
+    std::swap(e->wide_left, e->wide_right);
+  }
+  std::swap(c.start, c.end);  // walked the other way
+  std::swap(c.area_left, c.area_right);
+  std::swap(c.perimeter_left, c.perimeter_right);
+  c.phi_r = -c.phi_r;
+  c.turning = -c.turning;
+  return c;
+}
+
+TEST(LearnedMetric, ChangesSignWhenTheBoundaryIsWalkedTheOtherWay) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> angle(0.05, 2 * kPi - 0.3), unit(-1, 1), size(10, 5000);
+  for (int i = 0; i < 200; ++i) {
+    BoundaryCues c;
+    c.start = {i % 3 != 0, angle(rng), angle(rng), 3 + i % 2, angle(rng), angle(rng)};
+    c.end = {i % 5 != 0, angle(rng), angle(rng), 3 + i % 3, angle(rng), angle(rng)};
+    c.phi_r = 2 * unit(rng);
+    c.turning = kPi * unit(rng);
+    c.area_left = size(rng);
+    c.area_right = size(rng);
+    c.perimeter_left = size(rng) / 10;
+    c.perimeter_right = size(rng) / 10;
+    const BoundaryFeatures f = boundary_features(c), g = boundary_features(swapped(c));
+    for (int k = 0; k < kBoundaryFeatureCount; ++k) EXPECT_NEAR(f[k], -g[k], 1e-12) << k;
+    EXPECT_NEAR(learned_metric(f), -learned_metric(g), 1e-9);
+  }
+}
+
+TEST(LearnedMetric, BarOfAnIdealTIsOnTop) {
+  BoundaryCues c;
+  c.start = {true, kPi, kPi / 2, 3, kPi, kPi / 2};
+  c.end = {true, kPi, kPi / 2, 3, kPi, kPi / 2};
+  c.area_left = c.area_right = 1000;
+  c.perimeter_left = c.perimeter_right = 200;
+  EXPECT_GT(learned_metric(boundary_features(c)), 1.0);
+  EXPECT_LT(learned_metric(boundary_features(swapped(c))), -1.0);
+}
+
+TEST(LearnedMetric, ConvexSideIsOnTopWithoutJunctions) {
+  BoundaryCues c;  // no junction ends used: only the region overlap speaks
+  c.phi_r = 0.3;
+  c.area_left = c.area_right = 1000;
+  c.perimeter_left = c.perimeter_right = 200;
+  EXPECT_GT(learned_metric(boundary_features(c)), 0.5);
+}
+
+TEST(LearnedMetric, CuspEndsSayNothing) {
+  BoundaryCues c;
+  c.start = {false, kPi, kPi / 2, 3, kPi, kPi / 2};
+  c.end = {false, 0.2, 1.7, 3, 0.3, 1.6};
+  const BoundaryFeatures f = boundary_features(c);
+  for (double v : f) EXPECT_EQ(v, 0.0);
+}
+
+}  // namespace
+}  // namespace hair25d::layering
