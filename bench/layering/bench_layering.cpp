@@ -14,21 +14,25 @@ namespace {
 
 using namespace hair25d;
 
-// Image sizes per target region count; the strand count is raised until the
-// generated case has at least that many regions (the generator splits strands
-// into several regions, so the ratio is not fixed).
-struct Size {
-  int width, height;
+// The benchmark argument names a case: a target region count and an image
+// size. The strand count is raised until the generated case has at least that
+// many regions (the generator splits strands into several regions, so the
+// ratio is not fixed). 1024 is ~40 regions on a 1024 × 1024 image.
+struct CaseSize {
+  int regions, width, height;
 };
-const std::map<int, Size> kSizes = {{10, {640, 480}}, {40, {640, 480}}, {160, {1280, 960}}};
+const std::map<int, CaseSize> kSizes = {
+    {10, {10, 640, 480}}, {40, {40, 640, 480}}, {1024, {40, 1024, 1024}}, {160, {160, 1280, 960}}};
 
-const AnnotatedCase& case_for(int regions) {
+const AnnotatedCase& case_for(int id) {
   static std::map<int, AnnotatedCase> cache;
-  auto it = cache.find(regions);
+  auto it = cache.find(id);
   if (it == cache.end()) {
+    const CaseSize size = kSizes.at(id);
+    const int regions = size.regions;
     generator::Options o;
-    o.width = kSizes.at(regions).width;
-    o.height = kSizes.at(regions).height;
+    o.width = size.width;
+    o.height = size.height;
     o.seed = 42;
     AnnotatedCase c;
     for (int strands = std::max(1, regions * 2 / 3);; strands += std::max(1, strands / 10)) {
@@ -36,7 +40,7 @@ const AnnotatedCase& case_for(int regions) {
       c = generator::generate_case(o);
       if (static_cast<int>(c.regions.labels().size()) >= regions || strands > 4 * regions) break;
     }
-    it = cache.emplace(regions, std::move(c)).first;
+    it = cache.emplace(id, std::move(c)).first;
   }
   return it->second;
 }
@@ -54,6 +58,7 @@ void BM_LayerRegions(benchmark::State& state) {
 BENCHMARK(BM_LayerRegions)
     ->Arg(10)
     ->Arg(40)
+    ->Arg(1024)
     ->Arg(160)
     ->Unit(benchmark::kMillisecond)
     ->Repetitions(5)
