@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hair25d/core/error.h"
+#include "inpaint_internal.h"
 
 namespace hair25d::completion {
 
@@ -24,6 +25,11 @@ bool InpaintOptions::is_valid(std::string* error) const {
     return fail("distance_weight = " + std::to_string(distance_weight) + "; must be >= 0");
   if (search_step < 1 || search_step > search_radius)
     return fail("search_step = " + std::to_string(search_step) + "; must be in [1, search_radius]");
+  if (ink_luma < 0 || ink_luma > 256)
+    return fail("ink_luma = " + std::to_string(ink_luma) + "; must be in [0, 256]");
+  if (ink_step < 1) return fail("ink_step = " + std::to_string(ink_step) + "; must be >= 1");
+  if (!(guide_weight >= 0))
+    return fail("guide_weight = " + std::to_string(guide_weight) + "; must be >= 0");
   return true;
 }
 
@@ -32,8 +38,9 @@ namespace {
 // The state of one fill: the working crop, what is known, confidences.
 class Filler {
  public:
-  Filler(Image& image, const LabelMap& fill, const LabelMap& source, const InpaintOptions& o)
-      : image_(image), o_(o), w_(image.width()), h_(image.height()) {
+  Filler(Image& image, const LabelMap& fill, const LabelMap& source, const InpaintOptions& o,
+         const Image* guide)
+      : image_(image), o_(o), guide_(guide), w_(image.width()), h_(image.height()) {
     const std::size_t n = static_cast<std::size_t>(w_) * h_;
     known_.assign(n, 1);
     stamp_.assign(n, 0);
@@ -75,6 +82,17 @@ class Filler {
       const Rgba& c = image_.data()[i];
       grey_[i] = 0.299f * c.r + 0.587f * c.g + 0.114f * c.b;
     }
+    if (guide_ != nullptr) {
+      ink_ = detail::ink_mask(image_, o_);
+      for (std::size_t i = 0; i < n; ++i)
+        if (!known_[i]) ink_[i] = 0;
+      ink_integral_.assign(integral_.size(), 0);
+      for (int y = 0; y < h_; ++y)
+        for (int x = 0; x < w_; ++x)
+          ink_integral_[idx1(x + 1, y + 1)] = ink_[idx(x, y)] + ink_integral_[idx1(x, y + 1)] +
+                                              ink_integral_[idx1(x + 1, y)] -
+                                              ink_integral_[idx1(x, y)];
+    }
   }
 
   InpaintResult run() {
@@ -109,6 +127,10 @@ class Filler {
 
   std::size_t idx(int x, int y) const { return static_cast<std::size_t>(y) * w_ + x; }
   std::size_t idx1(int x, int y) const { return static_cast<std::size_t>(y) * (w_ + 1) + x; }
+  int ink_sum(int x0, int y0, int x1, int y1) const {
+    return ink_integral_[idx1(x1, y1)] - ink_integral_[idx1(x0, y1)] - ink_integral_[idx1(x1, y0)] +
+           ink_integral_[idx1(x0, y0)];
+  }
   int source_sum(int x0, int y0, int x1, int y1) const {
     return integral_[idx1(x1, y1)] - integral_[idx1(x0, y1)] - integral_[idx1(x1, y0)] +
            integral_[idx1(x0, y0)];
@@ -146,6 +168,10 @@ class Filler {
         if (!is_known(px, py) || !is_known(px + 1, py) || !is_known(px - 1, py) ||
             !is_known(px, py + 1) || !is_known(px, py - 1))
           continue;
+        // Cel art: an isolated dark feature must not pull the fill along it.
+        if (!ink_.empty() && (ink_[idx(px, py)] || ink_[idx(px + 1, py)] || ink_[idx(px - 1, py)] ||
+                              ink_[idx(px, py + 1)] || ink_[idx(px, py - 1)]))
+          continue;
         const float ix = 0.5f * (grey_[idx(px + 1, py)] - grey_[idx(px - 1, py)]);
         const float iy = 0.5f * (grey_[idx(px, py + 1)] - grey_[idx(px, py - 1)]);
         if (ix * ix + iy * iy > gx * gx + gy * gy) gx = ix, gy = iy;
@@ -162,11 +188,23 @@ class Filler {
   bool best_source(int x, int y, int* bx, int* by) const {
     const int r = r_;
     long best = std::numeric_limits<long>::max();
+    // Ink in the target's known part: a source may hold at most about twice
+    // as much (the line continued), none when the known part has none. Only
+    // original ink counts: copied ink licensing more ink would let a feature
+    // chain across the hole.
+    int target_ink = 0;
+    if (!ink_.empty())
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx)
+          if (is_known(x + dx, y + dy)) target_ink += ink_[idx(x + dx, y + dy)];
+    const long guide_w = std::lround(o_.guide_weight * 256);
     for (int radius = o_.search_radius;; radius *= 2) {
       const int step = o_.search_step;
       for (int cy = std::max(r, y - radius); cy <= std::min(h_ - 1 - r, y + radius); cy += step)
         for (int cx = std::max(r, x - radius); cx <= std::min(w_ - 1 - r, x + radius); cx += step) {
           if (!valid_[idx(cx, cy)]) continue;
+          if (!ink_.empty() && ink_sum(cx - r, cy - r, cx + r + 1, cy + r + 1) > 2 * target_ink)
+            continue;
           long ssd =
               static_cast<long>(o_.distance_weight * ((cx - x) * (cx - x) + (cy - y) * (cy - y)));
           for (int dy = -r; dy <= r && ssd < best; ++dy) {
@@ -174,11 +212,18 @@ class Filler {
             if (ty < 0 || ty >= h_) continue;
             for (int dx = -r; dx <= r; ++dx) {
               const int tx = x + dx;
-              if (tx < 0 || tx >= w_ || !known_[idx(tx, ty)]) continue;
-              const Rgba& a = image_.data()[idx(tx, ty)];
+              if (tx < 0 || tx >= w_) continue;
               const Rgba& b = image_.data()[idx(cx + dx, cy + dy)];
-              const int dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-              ssd += dr * dr + dg * dg + db * db;
+              if (known_[idx(tx, ty)]) {
+                const Rgba& a = image_.data()[idx(tx, ty)];
+                const int dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+                ssd += dr * dr + dg * dg + db * db;
+                if (guide_ != nullptr) ssd += (a.a - b.a) * (a.a - b.a);
+              } else if (guide_ != nullptr) {
+                const Rgba& a = guide_->data()[idx(tx, ty)];
+                const int dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b, da = a.a - b.a;
+                ssd += (guide_w * (dr * dr + dg * dg + db * db + da * da)) >> 8;
+              }
             }
           }
           if (ssd < best) best = ssd, *bx = cx, *by = cy;
@@ -221,11 +266,14 @@ class Filler {
         const std::uint8_t alpha = dst.a;
         if (found) {
           dst = image_.data()[idx(bx + dx, by + dy)];
+        } else if (guide_ != nullptr) {
+          dst = guide_->data()[idx(px, py)];  // no allowed patch: the coarse fill
         } else {
           dst = mean;  // no source patch anywhere: the mean of what is known
           ++result->unfilled;
         }
-        dst.a = alpha;
+        // Cel mode fills transparency too (a drawing on a transparent sheet).
+        if (guide_ == nullptr) dst.a = alpha;
         grey_[idx(px, py)] = 0.299f * dst.r + 0.587f * dst.g + 0.114f * dst.b;
         known_[idx(px, py)] = 1;
         confidence_[idx(px, py)] = c;
@@ -244,6 +292,7 @@ class Filler {
 
   Image& image_;
   const InpaintOptions& o_;
+  const Image* guide_;  // coarse fill (cel mode) or null
   int w_, h_;
   int r_ = 1;  // patch radius in use
   std::vector<std::uint8_t> known_;
@@ -251,6 +300,8 @@ class Filler {
   std::vector<int> integral_;
   std::vector<std::uint8_t> valid_;
   std::vector<float> grey_;
+  std::vector<std::uint8_t> ink_;  // cel mode only
+  std::vector<int> ink_integral_;
   std::vector<unsigned> stamp_ = {};
   unsigned stamp_counter_ = 0;
   std::priority_queue<Item> heap_;
@@ -259,8 +310,10 @@ class Filler {
 
 }  // namespace
 
-InpaintResult inpaint_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
-                               const InpaintOptions& options) {
+namespace {
+
+void check_inputs(const Image& image, const LabelMap& fill, const LabelMap& source,
+                  const InpaintOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw Error(why);
   if (fill.width() != image.width() || fill.height() != image.height())
@@ -272,9 +325,60 @@ InpaintResult inpaint_exemplar(Image& image, const LabelMap& fill, const LabelMa
                 "x" + std::to_string(source.height()) + ", the image " +
                 std::to_string(image.width()) + "x" + std::to_string(image.height()) +
                 "; they must be the same size or empty");
-  if (image.empty()) return {};
-  Filler filler(image, fill, source, options);
+}
+
+}  // namespace
+
+namespace detail {
+
+std::vector<std::uint8_t> ink_mask(const Image& image, const InpaintOptions& o) {
+  const int w = image.width(), h = image.height();
+  std::vector<int> luma(static_cast<std::size_t>(w) * h);
+  for (std::size_t i = 0; i < luma.size(); ++i) {
+    // Over paper white: transparent pixels are background, not ink.
+    const Rgba& c = image.data()[i];
+    luma[i] = ((299 * c.r + 587 * c.g + 114 * c.b) / 1000 * c.a + 255 * (255 - c.a)) / 255;
+  }
+  std::vector<std::uint8_t> ink(luma.size(), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      bool dark = luma[i] < o.ink_luma;
+      // A ridge: darker than both sides, 1 or 2 px away (a line or a dot,
+      // not the border between two flat regions).
+      auto at = [&](int px, int py) {
+        return luma[static_cast<std::size_t>(std::clamp(py, 0, h - 1)) * w +
+                    std::clamp(px, 0, w - 1)];
+      };
+      for (int d = 1; d <= 2 && !dark; ++d)
+        dark = std::min(at(x - d, y), at(x + d, y)) - luma[i] > o.ink_step ||
+               std::min(at(x, y - d), at(x, y + d)) - luma[i] > o.ink_step;
+      ink[i] = dark ? 1 : 0;
+    }
+  return ink;
+}
+
+InpaintResult run_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
+                           const InpaintOptions& options, const Image* guide) {
+  Filler filler(image, fill, source, options, guide);
   return filler.run();
+}
+
+}  // namespace detail
+
+InpaintResult inpaint_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
+                               const InpaintOptions& options) {
+  check_inputs(image, fill, source, options);
+  if (image.empty()) return {};
+  return detail::run_exemplar(image, fill, source, options, nullptr);
+}
+
+InpaintResult inpaint_cel(Image& image, const LabelMap& fill, const LabelMap& source,
+                          const InpaintOptions& options) {
+  check_inputs(image, fill, source, options);
+  if (image.empty()) return {};
+  const Image guide = detail::coarse_fill(image, fill, source, options);
+  return detail::run_exemplar(image, fill, source, options, &guide);
 }
 
 }  // namespace hair25d::completion

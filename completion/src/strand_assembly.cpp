@@ -193,20 +193,20 @@ Image fill_background(const Context& ctx, InpaintResult* inpainted) {
   LabelMap hole(sw, sh), source(sw, sh);
   for (int sy = 0; sy < sh; ++sy)
     for (int sx = 0; sx < sw; ++sx) {
-      int r = 0, g = 0, b = 0, n = 0;
+      int r = 0, g = 0, b = 0, a = 0, n = 0;
       bool any = false;
       for (int y = sy * factor; y < std::min(h, (sy + 1) * factor); ++y)
         for (int x = sx * factor; x < std::min(w, (sx + 1) * factor); ++x) {
           const Rgba& c = image.at(x, y);
-          r += c.r, g += c.g, b += c.b, ++n;
+          r += c.r, g += c.g, b += c.b, a += c.a, ++n;
           any = any || hair.at<std::uint8_t>(y, x) != 0;
         }
       small.at(sx, sy) = {static_cast<std::uint8_t>(r / n), static_cast<std::uint8_t>(g / n),
-                          static_cast<std::uint8_t>(b / n), 255};
+                          static_cast<std::uint8_t>(b / n), static_cast<std::uint8_t>(a / n)};
       hole.at(sx, sy) = any ? 1 : 0;
       source.at(sx, sy) = any ? 0 : 1;
     }
-  *inpainted = inpaint_exemplar(small, hole, source, o.inpaint);
+  *inpainted = inpaint_cel(small, hole, source, o.inpaint);
   Image out = image;
   cv::Mat big;
   cv::resize(view(small), big, cv::Size(sw * factor, sh * factor), 0, 0, cv::INTER_LINEAR);
@@ -214,7 +214,7 @@ Image fill_background(const Context& ctx, InpaintResult* inpainted) {
     for (int x = 0; x < w; ++x) {
       if (!hair.at<std::uint8_t>(y, x)) continue;
       const cv::Vec4b& v = big.at<cv::Vec4b>(y, x);
-      out.at(x, y) = {v[0], v[1], v[2], 255};
+      out.at(x, y) = {v[0], v[1], v[2], v[3]};  // transparent sheets stay transparent
     }
   return out;
 }

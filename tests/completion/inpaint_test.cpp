@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
+
 #include "hair25d/core/error.h"
 
 namespace hair25d::completion {
@@ -71,6 +74,113 @@ TEST(Inpaint, BadInputThrows) {
   InpaintOptions bad;
   bad.patch_radius = 0;
   EXPECT_THROW(inpaint_exemplar(img, LabelMap(20, 30), LabelMap{}, bad), Error);
+}
+
+}  // namespace
+}  // namespace hair25d::completion
+
+namespace hair25d::completion {
+namespace {
+
+constexpr Rgba kSkin{240, 200, 170, 255};
+
+int channel_gap(const Rgba& a, const Rgba& b) {
+  return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
+
+// A flat skin sheet with one dark dot (an "eye") 2 px left of a hole: inside
+// the known part of the patches on the hole's left border.
+struct DotFace {
+  Image image{150, 110, kSkin};
+  LabelMap hole{150, 110};
+  DotFace() {
+    for (int y = 0; y < 110; ++y)
+      for (int x = 0; x < 150; ++x) {
+        if ((x - 64) * (x - 64) + (y - 55) * (y - 55) <= 16) image.at(x, y) = {30, 20, 20, 255};
+        if (x >= 70 && x < 115 && y >= 30 && y < 85) hole.at(x, y) = 1;
+      }
+  }
+};
+
+int dark_in_hole(const Image& img, const LabelMap& hole) {
+  int dark = 0;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x)
+      if (hole.at(x, y) && img.at(x, y).r < 150) ++dark;
+  return dark;
+}
+
+TEST(InpaintCel, DistinctFeatureNextToTheHoleIsNotCopiedIntoIt) {
+  DotFace face;
+  const Image before = face.image;
+  const InpaintResult r = inpaint_cel(face.image, face.hole, LabelMap{});
+  EXPECT_EQ(r.filled, 45 * 55);
+  EXPECT_EQ(dark_in_hole(face.image, face.hole), 0);
+  for (int y = 0; y < 110; ++y)
+    for (int x = 0; x < 150; ++x) {
+      if (!face.hole.at(x, y))
+        ASSERT_EQ(face.image.at(x, y), before.at(x, y))
+            << "known pixel changed at " << x << "," << y;
+      else
+        ASSERT_LE(channel_gap(face.image.at(x, y), kSkin), 6) << x << "," << y;
+    }
+}
+
+TEST(InpaintCel, PlainExemplarFillDoesCopyTheFeature) {
+  // The failure inpaint_cel exists for: patches on the border hold part of
+  // the dot, so the best match continues the dot into the flat hole.
+  DotFace face;
+  inpaint_exemplar(face.image, face.hole, LabelMap{});
+  EXPECT_GT(dark_in_hole(face.image, face.hole), 0);
+}
+
+TEST(InpaintCel, FlatRegionsAreContinuedAcrossTheHole) {
+  // Left skin, right white, a dark line between; the hole covers the line.
+  const Rgba white{252, 252, 250, 255};
+  Image img(131, 87);
+  LabelMap hole(131, 87);
+  for (int y = 0; y < 87; ++y)
+    for (int x = 0; x < 131; ++x) {
+      img.at(x, y) = x < 64 ? kSkin : x < 67 ? Rgba{20, 20, 30, 255} : white;
+      if (x >= 40 && x < 95 && y >= 25 && y < 60) hole.at(x, y) = 1;
+    }
+  inpaint_cel(img, hole, LabelMap{});
+  int wrong = 0, total = 0;
+  for (int y = 25; y < 60; ++y)
+    for (int x = 40; x < 95; ++x) {
+      if (x >= 56 && x < 75) continue;  // where the two regions meet, either is fine
+      ++total;
+      wrong += channel_gap(img.at(x, y), x < 64 ? kSkin : white) > 8;
+    }
+  EXPECT_LT(wrong, total / 50) << wrong << " of " << total;
+}
+
+TEST(InpaintCel, TransparentSheetStaysTransparent) {
+  Image img(90, 70, Rgba{0, 0, 0, 0});
+  LabelMap hole(90, 70);
+  for (int y = 0; y < 70; ++y)
+    for (int x = 0; x < 90; ++x) {
+      if (x < 20) img.at(x, y) = kSkin;
+      if (x >= 40 && x < 70 && y >= 20 && y < 50) hole.at(x, y) = 1;
+    }
+  inpaint_cel(img, hole, LabelMap{});
+  for (int y = 20; y < 50; ++y)
+    for (int x = 40; x < 70; ++x) ASSERT_LT(img.at(x, y).a, 16) << x << "," << y;
+}
+
+TEST(InpaintCel, BadInputThrows) {
+  Image img(20, 30);
+  EXPECT_THROW(inpaint_cel(img, LabelMap(30, 20), LabelMap{}), Error);
+  EXPECT_THROW(inpaint_cel(img, LabelMap(20, 30), LabelMap(5, 5)), Error);
+  InpaintOptions bad;
+  bad.ink_step = 0;
+  EXPECT_THROW(inpaint_cel(img, LabelMap(20, 30), LabelMap{}, bad), Error);
+  bad = {};
+  bad.guide_weight = -1;
+  EXPECT_THROW(inpaint_cel(img, LabelMap(20, 30), LabelMap{}, bad), Error);
+  bad = {};
+  bad.ink_luma = 300;
+  EXPECT_THROW(inpaint_cel(img, LabelMap(20, 30), LabelMap{}, bad), Error);
 }
 
 }  // namespace

@@ -18,6 +18,13 @@ struct InpaintOptions {
   // among equal matches the nearest wins, so distinct features (an eye) are
   // not copied far across a flat area.
   double distance_weight = 2.0;
+  // Cel-art fill (inpaint_cel) only. Ink = luma below ink_luma, or a ridge
+  // more than ink_step darker than both sides (1–2 px away): drawn lines,
+  // hatching and small dark features, not the border of two flat regions.
+  int ink_luma = 110;
+  int ink_step = 24;
+  // SSD weight of the coarse fill's colours on a target patch's unknown pixels.
+  double guide_weight = 2.0;
   // False, with a message naming the option, its value and the rule, if unusable.
   bool is_valid(std::string* error) const;
 };
@@ -34,5 +41,15 @@ struct InpaintResult {
 // hair25d::Error if the sizes differ or the options are invalid.
 InpaintResult inpaint_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
                                const InpaintOptions& options = {});
+
+// inpaint_exemplar made right for cel art (flat regions bounded by ink): a
+// coarse fill first gives every hole pixel the colour of the nearest known
+// ink-free pixel (the flat region it continues); exemplar synthesis then adds
+// texture, matching known pixels and the coarse fill, and may copy a patch
+// holding ink only when the target's known part holds ink too — an eye or a
+// hair clip next to the hole is never duplicated into it. Same contract as
+// inpaint_exemplar: pixels outside `fill` are never changed.
+InpaintResult inpaint_cel(Image& image, const LabelMap& fill, const LabelMap& source,
+                          const InpaintOptions& options = {});
 
 }  // namespace hair25d::completion
