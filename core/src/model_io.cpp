@@ -103,7 +103,9 @@ TriMesh2 read_mesh(const json& value, const std::string& source, const std::stri
 
 }  // namespace
 
-void write_model(const fs::path& folder, const HairModel& model) {
+namespace {
+
+void check_writable(const fs::path& folder, const HairModel& model) {
   if (model.width <= 0 || model.height <= 0) {
     throw Error(folder.string() + ": the model's size " + std::to_string(model.width) + "x" +
                 std::to_string(model.height) + " is not positive");
@@ -111,7 +113,10 @@ void write_model(const fs::path& folder, const HairModel& model) {
   for (const Strand& s : model.strands) {
     s.mesh.validate(("strand " + std::to_string(s.id) + " mesh").c_str());
   }
-  write_folder_atomically(folder, [&](const fs::path& tmp) {
+}
+
+void write_contents(const fs::path& tmp, const HairModel& model) {
+  {
     json doc;
     doc["format"] = kModelFormat;
     doc["version"] = kModelFormatVersion;
@@ -166,7 +171,22 @@ void write_model(const fs::path& folder, const HairModel& model) {
     }
     doc["relations"] = relations;
     write_text_atomically(tmp / "model.json", doc.dump(1) + "\n");
-  });
+  }
+}
+
+}  // namespace
+
+void write_model_into(const fs::path& folder, const HairModel& model) {
+  check_writable(folder, model);
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw Error(folder.string() + ": not an existing folder; write_model_into writes into one");
+  write_contents(folder, model);
+}
+
+void write_model(const fs::path& folder, const HairModel& model) {
+  check_writable(folder, model);
+  write_folder_atomically(folder, [&](const fs::path& tmp) { write_contents(tmp, model); });
 }
 
 HairModel read_model(const fs::path& folder, const ImageLimits& limits) {

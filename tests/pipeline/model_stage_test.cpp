@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -89,6 +90,34 @@ TEST(ModelStage, AnnotatedCaseBuildsWritesAndReadsBack) {
     EXPECT_EQ(back.strands[i].mesh.triangle_count(), run.model.strands[i].mesh.triangle_count());
   }
   EXPECT_EQ(back.background, run.model.background);
+  fs::remove_all(dir);
+}
+
+TEST(ModelStage, WriteModelRunPutsTheContactSheetInsideTheAtomicFolder) {
+  const fs::path dir = scratch("atomic");
+  fs::create_directories(dir);
+  save_image(dir / "contact_sheet.png", Image(3, 2, Rgba{1, 2, 3, 255}));
+  { std::ofstream(dir / "stale.txt") << "old run"; }
+  ModelRun run;
+  run.model.width = 40;
+  run.model.height = 30;
+  run.model.background = Image(40, 30, Rgba{9, 8, 7, 255});
+  run.contact_sheet = Image(50, 20, Rgba{200, 100, 50, 255});
+  write_model_run(dir, run);
+  // The whole folder was replaced in one step: nothing of the old one is left.
+  EXPECT_FALSE(fs::exists(dir / "stale.txt"));
+  EXPECT_EQ(load_image(dir / "contact_sheet.png"), run.contact_sheet);
+  EXPECT_EQ(read_model(dir).background, run.model.background);
+  for (const auto& e : fs::directory_iterator(dir.parent_path()))
+    EXPECT_EQ(e.path().filename().string().find("." + dir.filename().string()), std::string::npos)
+        << "temporary left behind: " << e.path();
+  // A model that cannot be written leaves the previous folder as it was.
+  ModelRun bad = run;
+  bad.model.width = 0;
+  bad.contact_sheet = Image(5, 5, Rgba{0, 0, 0, 255});
+  EXPECT_THROW(write_model_run(dir, bad), Error);
+  EXPECT_EQ(load_image(dir / "contact_sheet.png"), run.contact_sheet);
+  EXPECT_THROW(write_model_into(dir / "missing", run.model), Error);
   fs::remove_all(dir);
 }
 

@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "hair25d/core/atomic_file.h"
 #include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
 #include "hair25d/core/model_io.h"
@@ -245,8 +246,11 @@ ModelRun run_model(const Image& image, const Strokes* strokes, const ModelOption
 }
 
 void write_model_run(const std::filesystem::path& folder, const ModelRun& run) {
-  write_model(folder, run.model);
-  if (!run.contact_sheet.empty()) save_image(folder / "contact_sheet.png", run.contact_sheet);
+  // The contact sheet goes in before the rename: the folder is whole when it appears.
+  write_folder_atomically(folder, [&](const std::filesystem::path& tmp) {
+    write_model_into(tmp, run.model);
+    if (!run.contact_sheet.empty()) save_image(tmp / "contact_sheet.png", run.contact_sheet);
+  });
 }
 
 }  // namespace hair25d::pipeline

@@ -13,6 +13,9 @@ namespace hair25d {
 inline constexpr int kModelFormatVersion = 1;
 
 void write_model(const std::filesystem::path& folder, const HairModel& model);
+// The same files written into an existing folder, not atomically: for callers
+// that add files of their own inside write_folder_atomically.
+void write_model_into(const std::filesystem::path& folder, const HairModel& model);
 HairModel read_model(const std::filesystem::path& folder, const ImageLimits& limits = {});
 
 }  // namespace hair25d

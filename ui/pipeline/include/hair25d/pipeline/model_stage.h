@@ -74,7 +74,8 @@ ModelRun run_model(const Image& image, const Strokes* strokes, const ModelOption
 // skeletons (red, tips green, roots blue) over the strands.
 Image render_contact_sheet(const ModelRun& run, int panel_max_side = 640);
 
-// Writes the model folder (core write_model) and contact_sheet.png inside it.
+// Writes the model folder (core write_model_into) with contact_sheet.png inside
+// it, atomically: the folder appears only once every file is in it.
 void write_model_run(const std::filesystem::path& folder, const ModelRun& run);
 
 }  // namespace hair25d::pipeline
