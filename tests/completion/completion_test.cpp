@@ -182,6 +182,34 @@ TEST(Completion, BackgroundHasTheHairRemoved) {
   EXPECT_LT(hairy, hair_pixels / 20);
 }
 
+TEST(Completion, BackgroundContinuesTheFaceNotItsEyes) {
+  // A band of hair down the middle of a face, an eye 3 px each side of it.
+  Drawing d = blank(300, 170);
+  const Rgba skin{245, 215, 190, 255};
+  paint(
+      d, [](double x, double y) { return x > 30 && x < 270 && y > 10 && y < 160; }, skin, 0);
+  for (const double ex : {122.0, 178.0})
+    paint(
+        d, [ex](double x, double y) { return (x - ex) * (x - ex) + (y - 80) * (y - 80) < 36; },
+        Rgba{40, 30, 30, 255}, 0);
+  paint(
+      d, [](double x, double) { return x > 130 && x < 170; }, kHair, 1);
+  Options o;
+  o.threads = 1;
+  const Result r = run(d, Vec2(150, 80), o);
+  int dark = 0, off = 0, judged = 0;
+  for (int y = 30; y < 140; ++y)
+    for (int x = 128; x < 172; ++x) {
+      const Rgba c = r.background.at(x, y);
+      ++judged;
+      dark += c.r < 150;
+      off +=
+          std::max({std::abs(c.r - skin.r), std::abs(c.g - skin.g), std::abs(c.b - skin.b)}) > 20;
+    }
+  EXPECT_EQ(dark, 0) << "an eye (or a line) was copied into the face";
+  EXPECT_LT(off, judged / 50) << off << " of " << judged;
+}
+
 TEST(Completion, RegionsWithoutOccludersAndTinyRegions) {
   Drawing d = blank(200, 120);
   paint(
