@@ -209,8 +209,8 @@ void BM_WindFrame(benchmark::State& state) {
     }
     ++frame;
   }
-  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                             benchmark::Counter::kIsRate);
+  state.counters["fps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["steps/frame"] = p.steps_per_frame;
   state.counters["cells"] = static_cast<double>(p.width) * p.height;
 }
