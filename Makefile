@@ -31,6 +31,7 @@ test-sanitize: deps
 	  -DHAIR25D_SANITIZE=ON -DHAIR25D_BUILD_BENCH=OFF $(CMAKE_FLAGS)
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 	cd $(BUILD_ASAN) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizer/lsan.supp \
 	  ctest -j $(JOBS) --output-on-failure
 
 bench: build

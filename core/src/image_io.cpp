@@ -37,6 +37,16 @@ std::string oiio_message(const std::string& fallback) {
   return msg;
 }
 
+// The reader's own error, which must be fetched: OpenImageIO keeps it per
+// reader and leaks it if nobody asks.
+std::string reader_message(oiio::ImageInput& in) {
+  std::string msg = in.geterror();
+  if (msg.empty()) msg = oiio::geterror();
+  if (msg.empty()) msg = "truncated or corrupt";
+  std::replace(msg.begin(), msg.end(), '\n', ' ');
+  return msg;
+}
+
 // Opens `path` and checks its declared size before any pixel is decoded, so a
 // forged header cannot make us allocate gigabytes.
 std::unique_ptr<oiio::ImageInput> open_checked(const fs::path& path, const ImageLimits& limits,
@@ -82,8 +92,7 @@ Image load_image(const fs::path& path, const ImageLimits& limits) {
   // Float read keeps 16-bit and HDR data exact until we quantise once below.
   std::vector<float> buffer(static_cast<std::size_t>(w) * h * nc);
   if (!in->read_image(0, 0, 0, nc, oiio::TypeDesc::FLOAT, buffer.data())) {
-    throw Error(path.string() + ": cannot decode the pixels (" +
-                oiio_message("truncated or corrupt") + ")");
+    throw Error(path.string() + ": cannot decode the pixels (" + reader_message(*in) + ")");
   }
   in->close();
   const int alpha =
@@ -126,8 +135,7 @@ LabelMap load_label_map(const fs::path& path, const ImageLimits& limits) {
   const int w = spec.width, h = spec.height;
   std::vector<std::uint16_t> buffer(static_cast<std::size_t>(w) * h);
   if (!in->read_image(0, 0, 0, 1, oiio::TypeDesc::UINT16, buffer.data())) {
-    throw Error(path.string() + ": cannot decode the pixels (" +
-                oiio_message("truncated or corrupt") + ")");
+    throw Error(path.string() + ": cannot decode the pixels (" + reader_message(*in) + ")");
   }
   in->close();
   // An 8-bit file read as UINT16 is rescaled by OpenImageIO (v * 257): undo it
