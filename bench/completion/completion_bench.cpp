@@ -3,37 +3,17 @@
 // time (strands and background are filled on two threads).
 #include <benchmark/benchmark.h>
 
-#include <map>
-
+#include "common/completion_input.h"
+#include "common/generated_cases.h"
 #include "hair25d/completion/completion.h"
-#include "hair25d/generator/generator.h"
 
 namespace {
 
 using namespace hair25d;
 
-const AnnotatedCase& generated(int strands) {
-  static std::map<int, AnnotatedCase> cache;
-  auto it = cache.find(strands);
-  if (it == cache.end()) {
-    generator::Options o;
-    o.width = 1024;
-    o.height = 1024;
-    o.strand_count = strands;
-    o.seed = 7;
-    o.strand_masks = false;
-    it = cache.emplace(strands, generator::generate_case(o)).first;
-  }
-  return it->second;
-}
-
 void run(benchmark::State& state, bool inpaint) {
-  const AnnotatedCase& c = generated(static_cast<int>(state.range(0)));
-  completion::Input in;
-  in.image = &c.image;
-  in.regions = &c.regions;
-  for (const AnnotatedPair& p : c.pairs) in.relations.push_back({p.a, p.b, p.relation, 1.0});
-  in.head_center = c.head_center;
+  const AnnotatedCase& c = bench::generated_case(static_cast<int>(state.range(0)));
+  const completion::Input in = bench::completion_input(c);
   completion::Options o;
   o.inpaint_strands = inpaint;
   o.inpaint_background = inpaint;
@@ -52,22 +32,8 @@ void run(benchmark::State& state, bool inpaint) {
 void BM_CompletionWithoutInpainting(benchmark::State& state) { run(state, false); }
 void BM_CompletionWithInpainting(benchmark::State& state) { run(state, true); }
 
-BENCHMARK(BM_CompletionWithoutInpainting)
-    ->Arg(10)
-    ->Arg(40)
-    ->Arg(160)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_CompletionWithInpainting)
-    ->Arg(10)
-    ->Arg(40)
-    ->Arg(160)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_CompletionWithoutInpainting)->Apply(bench::strand_counts)->UseRealTime();
+BENCHMARK(BM_CompletionWithInpainting)->Apply(bench::strand_counts)->UseRealTime();
 
 }  // namespace
 

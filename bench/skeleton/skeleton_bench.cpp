@@ -4,8 +4,9 @@
 
 #include <map>
 
+#include "common/completion_input.h"
+#include "common/generated_cases.h"
 #include "hair25d/completion/completion.h"
-#include "hair25d/generator/generator.h"
 #include "hair25d/skeleton/strand_mesh.h"
 #include "hair25d/skeleton/strand_skeleton.h"
 
@@ -21,18 +22,8 @@ const Outlines& outlines(int strands) {
   static std::map<int, Outlines> cache;
   auto it = cache.find(strands);
   if (it != cache.end()) return it->second;
-  generator::Options o;
-  o.width = 1024;
-  o.height = 1024;
-  o.strand_count = strands;
-  o.seed = 7;
-  o.strand_masks = false;
-  const AnnotatedCase c = generator::generate_case(o);
-  completion::Input in;
-  in.image = &c.image;
-  in.regions = &c.regions;
-  for (const AnnotatedPair& p : c.pairs) in.relations.push_back({p.a, p.b, p.relation, 1.0});
-  in.head_center = c.head_center;
+  const AnnotatedCase& c = bench::generated_case(strands);
+  const completion::Input in = bench::completion_input(c);
   completion::Options co;
   co.inpaint_strands = false;
   co.inpaint_background = false;
@@ -78,20 +69,8 @@ void BM_StrandMeshes(benchmark::State& state) {
   state.counters["triangles"] = static_cast<double>(triangles);
 }
 
-BENCHMARK(BM_Skeletons)
-    ->Arg(10)
-    ->Arg(40)
-    ->Arg(160)
-    ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_StrandMeshes)
-    ->Arg(10)
-    ->Arg(40)
-    ->Arg(160)
-    ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_Skeletons)->Apply(bench::strand_counts);
+BENCHMARK(BM_StrandMeshes)->Apply(bench::strand_counts);
 
 }  // namespace
 
