@@ -1,0 +1,63 @@
+// The whole model on generated 1024 × 1024 drawings, as `hair25d model` runs
+// it: from strokes (segment → layering → completion with inpainting →
+// skeletons and meshes → contact sheet) and, separately, the same plus
+// writing the model folder. Wall time (the stages use both cores), medians.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <string>
+
+#include "common/generated_cases.h"
+#include "hair25d/pipeline/model_stage.h"
+
+namespace {
+
+using namespace hair25d;
+
+void add_counters(benchmark::State& state, const AnnotatedCase& c, const pipeline::ModelRun& run) {
+  state.counters["regions"] = static_cast<double>(c.regions.labels().size());
+  state.counters["strands"] = static_cast<double>(run.model.strands.size());
+  state.counters["paper_modelling_s"] = 1.608 + 0.415 + 0.031;  // §7, without inpainting
+}
+
+void BM_ModelFromStrokes(benchmark::State& state) {
+  const AnnotatedCase& c = bench::generated_case(static_cast<int>(state.range(0)));
+  pipeline::ModelRun run;
+  for (auto _ : state) {
+    run = pipeline::run_model(c.image, &*c.strokes);
+    benchmark::DoNotOptimize(run.model.strands.data());
+  }
+  add_counters(state, c, run);
+}
+
+void BM_ModelFromStrokesWritten(benchmark::State& state) {
+  const AnnotatedCase& c = bench::generated_case(static_cast<int>(state.range(0)));
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                       ("hair25d_bench_model_" + std::to_string(state.range(0)));
+  pipeline::ModelRun run;
+  for (auto _ : state) {
+    std::filesystem::remove_all(folder);
+    run = pipeline::run_model(c.image, &*c.strokes);
+    pipeline::write_model_run(folder, run);
+  }
+  std::filesystem::remove_all(folder);
+  add_counters(state, c, run);
+}
+
+void BM_ModelFromRegions(benchmark::State& state) {
+  const AnnotatedCase& c = bench::generated_case(static_cast<int>(state.range(0)));
+  pipeline::ModelRun run;
+  for (auto _ : state) {
+    run = pipeline::run_model(c.image, c.regions, c.head_center);
+    benchmark::DoNotOptimize(run.model.strands.data());
+  }
+  add_counters(state, c, run);
+}
+
+BENCHMARK(BM_ModelFromStrokes)->Apply(bench::strand_counts)->UseRealTime();
+BENCHMARK(BM_ModelFromStrokesWritten)->Apply(bench::strand_counts)->UseRealTime();
+BENCHMARK(BM_ModelFromRegions)->Apply(bench::strand_counts)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
