@@ -89,17 +89,20 @@ void BM_Step(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(2));
   const bool dbl = state.range(3) != 0;
   const int filaments = static_cast<int>(state.range(4));
+  const fluid::Stores stores = static_cast<fluid::Stores>(state.range(5));
   fluid::Options o;
   o.width = width;
   o.height = height;
   o.tau = 0.56;
   o.threads = threads;
+  o.stores = stores;
   o.precision = dbl ? fluid::Precision::kDouble : fluid::Precision::kFloat;
   o.left.kind = fluid::SideKind::kInlet;
   o.left.velocity = Vec2(0.05, 0.0);
   o.right.kind = fluid::SideKind::kOutflow;
   o.top.kind = o.bottom.kind = fluid::SideKind::kWall;
   fluid::Solver solver(o);
+  state.SetLabel(solver.streaming_stores() ? "non-temporal stores" : "ordinary stores");
   solver.step(5);
   int frame = 0;
   std::size_t segments = 0;
@@ -129,16 +132,23 @@ void BM_Step(benchmark::State& state) {
   }
 }
 
+// stores: 0 = automatic (what the solver does by default: non-temporal stores once the
+// populations exceed the L3), 1 = ordinary stores, 2 = non-temporal stores. The label says
+// which ran. Both forced kinds are swept for float without filaments, to show the crossover.
 void step_args(benchmark::internal::Benchmark* b) {
   const int sizes[][2] = {{256, 192}, {512, 384}, {1024, 768}, {2048, 1024}};
+  const auto auto_stores = static_cast<int>(fluid::Stores::kAuto);
   for (int dbl : {0, 1})
     for (const auto& s : sizes)
       for (int threads : {1, 2})
         for (int fil : {0, 24}) {
           if (dbl && fil) continue;
-          b->Args({s[0], s[1], threads, dbl, fil});
+          b->Args({s[0], s[1], threads, dbl, fil, auto_stores});
+          if (dbl || fil) continue;
+          for (auto forced : {fluid::Stores::kCached, fluid::Stores::kStreaming})
+            b->Args({s[0], s[1], threads, dbl, fil, static_cast<int>(forced)});
         }
-  b->ArgNames({"w", "h", "threads", "double", "filaments"});
+  b->ArgNames({"w", "h", "threads", "double", "filaments", "stores"});
 }
 BENCHMARK(BM_Step)
     ->Apply(step_args)

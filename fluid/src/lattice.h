@@ -73,6 +73,7 @@ class LatticeBase {
   virtual double density(int x, int y) const = 0;
   virtual Vec2 velocity(int x, int y) const = 0;
   virtual double total_mass() const = 0;
+  virtual bool streaming_stores() const = 0;
 };
 
 // `options` must be valid; `labels` is height x width, 0 fluid, k > 0 obstacle k.

@@ -77,6 +77,7 @@ class Lattice final : public LatticeBase {
   double density(int x, int y) const override;
   Vec2 velocity(int x, int y) const override;
   double total_mass() const override;
+  bool streaming_stores() const override { return stream_; }
 
  private:
   // 64-byte alignment of x = 0 in every row, in elements.
@@ -98,8 +99,9 @@ class Lattice final : public LatticeBase {
   std::ptrdiff_t idx(int x, int y) const {
     return kAlign + static_cast<std::ptrdiff_t>(y + 1) * stride_ + x;
   }
-  template <bool kForce, bool kLes>
+  template <bool kForce, bool kLes, bool kStream>
   HAIR25D_FLUID_CLONES double bulk(int y0, int y1);
+  double bulk_rows(int y0, int y1);
   void boundary(std::size_t begin, std::size_t end, int tid);
   void fill_halo();
   T halo_value(int hx, int hy, int i, int x, int y) const;
@@ -121,6 +123,7 @@ class Lattice final : public LatticeBase {
   d2q9::Relaxation<T> relax_{};
   bool forced_ = false;
   bool les_ = false;
+  bool stream_ = false;  // non-temporal stores in the bulk (Options::stores)
   std::array<SideKind, 4> kind_{};
   std::array<std::vector<T>, 4> side_ux_, side_uy_;  // per cell along each side
   std::vector<std::int32_t> labels_;

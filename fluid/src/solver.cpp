@@ -261,4 +261,6 @@ Vec2 Solver::velocity(int x, int y) const {
 
 double Solver::total_mass() const { return lattice_->total_mass(); }
 
+bool Solver::streaming_stores() const { return lattice_->streaming_stores(); }
+
 }  // namespace hair25d::fluid

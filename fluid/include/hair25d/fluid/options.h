@@ -23,6 +23,20 @@ enum class Collision {
 
 enum class Precision { kFloat, kDouble };
 
+// How the bulk pass writes the new populations. Out of cache an ordinary store first reads the
+// destination line (write-allocate), so a step moves 108 bytes per cell over the bus (float)
+// instead of the 72 it needs; non-temporal (streaming) stores write whole lines straight to
+// memory. In cache they would throw away lines the next step reads again.
+enum class Stores {
+  kAuto,       // streaming when the two lattices (18 planes) exceed kStreamingStoresAbove
+  kCached,     // ordinary stores
+  kStreaming,  // non-temporal stores (x86 SSE2; ordinary stores elsewhere)
+};
+
+// kAuto switches to streaming stores above this many bytes of populations: the 32 MiB L3 of
+// this machine's core complex (measured crossover: see docs/fluid.md).
+inline constexpr double kStreamingStoresAbove = 32.0 * 1024 * 1024;
+
 enum class SideKind {
   kPeriodic,  // leaves through this side, comes back through the opposite one (both must be
               // periodic)
@@ -57,7 +71,8 @@ struct Options {
   // 0.1 to 0.2 keeps gusty wind around sharp hair tips stable at low viscosity.
   double smagorinsky = 0.0;
   Precision precision = Precision::kFloat;
-  int threads = 1;  // worker threads over rows, 1..64
+  int threads = 1;                // worker threads over rows, 1..64
+  Stores stores = Stores::kAuto;  // results are identical bit for bit; only the speed differs
 
   Side left, right, top, bottom;  // default: periodic everywhere
 

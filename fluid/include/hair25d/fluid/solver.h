@@ -92,6 +92,8 @@ class Solver {
   double density(int x, int y) const;
   Vec2 velocity(int x, int y) const;
   double total_mass() const;  // sum of density over fluid cells, in double
+  // Whether the bulk pass writes with non-temporal stores (Options::stores, kAuto resolved).
+  bool streaming_stores() const;
   std::int64_t steps_done() const;
   const Options& options() const;
 
