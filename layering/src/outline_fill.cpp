@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include "hair25d/core/error.h"
@@ -20,41 +21,116 @@ constexpr int kDiag = 7;
 constexpr int kUnit = 5;
 constexpr double kMaxReach = 7.0;  // pixels grown at most: outlines up to ~14 px wide
 
-struct Growth {
-  std::vector<std::uint16_t> dist;  // chamfer distance (fifths of a pixel) to the nearest region
-  std::vector<int> owner;           // its label, 0 if unreachable
+// The part of the image the growth can reach: the box of all regions grown by
+// the growth limit, with a one-pixel frame so that neighbours need no bounds
+// checks. Indices are row-major in the framed box, which keeps the raster order
+// of the image and so the order in which fronts are seeded and expanded.
+struct Window {
+  int x0 = 0, y0 = 0;  // image position of the first pixel inside the frame
+  int w = 0, h = 0;    // pixels inside the frame
+  int stride() const { return w + 2; }
+  int at(int x, int y) const { return (y - y0 + 1) * stride() + (x - x0 + 1); }
 };
 
+constexpr std::uint16_t kUnreached = std::numeric_limits<std::uint16_t>::max();
+
+struct Growth {
+  Window box;
+  // Chamfer distance (fifths of a pixel) to the nearest region: 0 on region
+  // pixels and on the frame (so nothing grows into them), kUnreached on label-0
+  // pixels not reached. 16 bits halve the memory traffic of the relaxation; the
+  // growth limit keeps real distances far below kUnreached.
+  std::vector<std::uint16_t> dist;
+  // The region that reached a label-0 pixel; set only on the seeds and where
+  // dist was lowered, so it needs no clearing.
+  std::unique_ptr<int[]> owner;
+  // Every label-0 pixel reached, once: the passes after the growth visit
+  // these rather than the whole box.
+  std::vector<int> reached;
+};
+
+// Rows and columns holding non-zero labels; false if there are none.
+bool label_box(const LabelMap& labels, int* x0, int* y0, int* x1, int* y1) {
+  const int w = labels.width();
+  *x0 = w, *y0 = labels.height(), *x1 = -1, *y1 = -1;
+  for (int y = 0; y < labels.height(); ++y) {
+    const int* row = labels.data() + static_cast<std::size_t>(y) * w;
+    int any = 0;  // a branch-free OR first: most rows of a drawing are all paper or all hair
+    for (int x = 0; x < w; ++x) any |= row[x];
+    if (any == 0) continue;
+    int first = 0;
+    while (row[first] == 0) ++first;
+    int last = w - 1;
+    while (row[last] == 0) --last;
+    *x0 = std::min(*x0, first);
+    *x1 = std::max(*x1, last);
+    *y0 = std::min(*y0, y);
+    *y1 = y;
+  }
+  return *x1 >= 0;
+}
+
 // Dial's algorithm: a multi-source shortest path on the 8-neighbour grid with a
-// ring of buckets, linear in the pixel count.
+// ring of buckets, linear in the pixel count. Fronts start from region pixels
+// next to label 0, in raster order; where two fronts reach a pixel at the same
+// distance the one expanded first keeps it.
 Growth grow(const LabelMap& labels, int limit) {
   const int w = labels.width();
   const int h = labels.height();
-  const std::size_t n = labels.size();
-  // 16-bit distances halve the memory traffic of the relaxation; the growth
-  // limit keeps them far below the maximum.
-  Growth g{std::vector<std::uint16_t>(n, std::numeric_limits<std::uint16_t>::max()),
-           std::vector<int>(n, 0)};
+  Growth g;
+  int bx0, by0, bx1, by1;
+  if (!label_box(labels, &bx0, &by0, &bx1, &by1)) return g;
+  // A pixel c steps (Chebyshev) from every region is at least c · kOrtho away.
+  const int margin = limit / kOrtho + 1;
+  Window& box = g.box;
+  box.x0 = std::max(0, bx0 - margin);
+  box.y0 = std::max(0, by0 - margin);
+  box.w = std::min(w, bx1 + margin + 1) - box.x0;
+  box.h = std::min(h, by1 + margin + 1) - box.y0;
+  const int stride = box.stride();
+  const std::size_t n = static_cast<std::size_t>(stride) * (box.h + 2);
+  g.dist.assign(n, 0);
+  g.owner = std::make_unique_for_overwrite<int[]>(n);
+  std::uint16_t* dist = g.dist.data();
+  int* owner = g.owner.get();
+  for (int y = 0; y < box.h; ++y) {
+    const int* row = labels.data() + static_cast<std::size_t>(box.y0 + y) * w + box.x0;
+    std::uint16_t* out = dist + box.at(box.x0, box.y0 + y);
+    for (int x = 0; x < box.w; ++x) out[x] = row[x] == 0 ? kUnreached : 0;
+  }
+  // Only region pixels on the edge of label 0 start a front. Every dist is 0
+  // or kUnreached yet, so "a label-0 neighbour" is an OR of the eight, which
+  // vectorises; the flags are then read in raster order.
   std::array<std::vector<int>, kDiag + 1> ring;
-  const int* lab = labels.data();
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const int i = y * w + x;
-      if (lab[i] == 0) continue;
-      g.dist[i] = 0;
-      g.owner[i] = lab[i];
-      // Only region pixels on the edge of label 0 start a front.
-      const bool edge = (x > 0 && lab[i - 1] == 0) || (x + 1 < w && lab[i + 1] == 0) ||
-                        (y > 0 && lab[i - w] == 0) || (y + 1 < h && lab[i + w] == 0) ||
-                        (x > 0 && y > 0 && lab[i - w - 1] == 0) ||
-                        (x + 1 < w && y > 0 && lab[i - w + 1] == 0) ||
-                        (x > 0 && y + 1 < h && lab[i + w - 1] == 0) ||
-                        (x + 1 < w && y + 1 < h && lab[i + w + 1] == 0);
-      if (edge) ring[0].push_back(i);
+  std::vector<std::uint16_t> edge(box.w);
+  for (int y = 0; y < box.h; ++y) {
+    const int base = box.at(box.x0, box.y0 + y);
+    const std::uint16_t* up = dist + base - stride;
+    const std::uint16_t* mid = dist + base;
+    const std::uint16_t* down = dist + base + stride;
+    for (int x = 0; x < box.w; ++x) {
+      const std::uint16_t around = up[x - 1] | up[x] | up[x + 1] | mid[x - 1] | mid[x + 1] |
+                                   down[x - 1] | down[x] | down[x + 1];
+      edge[x] = mid[x] == 0 ? around : 0;
+    }
+    const int* row = labels.data() + static_cast<std::size_t>(box.y0 + y) * w + box.x0;
+    for (int x = 0; x < box.w; ++x) {
+      if (edge[x] == 0) continue;
+      owner[base + x] = row[x];
+      ring[0].push_back(base + x);
     }
   }
-  static constexpr std::array<int, 8> kNx = {1, -1, 0, 0, 1, 1, -1, -1};
-  static constexpr std::array<int, 8> kNy = {0, 0, 1, -1, 1, -1, 1, -1};
+  // Neighbour offsets: right, left, down, up, then the diagonals.
+  const std::array<int, 4> ortho = {1, -1, stride, -stride};
+  const std::array<int, 4> diag = {stride + 1, -stride + 1, stride - 1, -stride - 1};
+  auto relax = [&](int j, int nd, int own) {
+    // Region pixels and the frame hold 0, so they are never grown into.
+    if (nd >= dist[j]) return;
+    if (dist[j] == kUnreached) g.reached.push_back(j);
+    dist[j] = static_cast<std::uint16_t>(nd);
+    owner[j] = own;
+    ring[nd % ring.size()].push_back(j);
+  };
   std::size_t pending = ring[0].size();
   for (int d = 0; pending > 0; ++d) {
     auto& bucket = ring[d % ring.size()];
@@ -62,26 +138,16 @@ Growth grow(const LabelMap& labels, int limit) {
     // weight 0, which never happens, so iterating by index is safe.
     for (std::size_t k = 0; k < bucket.size(); ++k) {
       const int i = bucket[k];
-      --pending;
-      if (g.dist[i] != d) continue;  // a stale entry
-      const int x = i % w;
-      const int y = i / w;
-      for (int m = 0; m < 8; ++m) {
-        const int nx = x + kNx[m];
-        const int ny = y + kNy[m];
-        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-        const int j = ny * w + nx;
-        if (lab[j] != 0) continue;  // regions are sources, never grown into
-        const int nd = d + (m < 4 ? kOrtho : kDiag);
-        if (nd <= limit && nd < g.dist[j]) {
-          g.dist[j] = static_cast<std::uint16_t>(nd);
-          g.owner[j] = g.owner[i];
-          ring[nd % ring.size()].push_back(j);
-          ++pending;
-        }
-      }
+      if (dist[i] != d) continue;  // a stale entry
+      const int own = owner[i];
+      if (d + kOrtho > limit) continue;
+      for (int s : ortho) relax(i + s, d + kOrtho, own);
+      if (d + kDiag > limit) continue;
+      for (int s : diag) relax(i + s, d + kDiag, own);
     }
     bucket.clear();
+    pending = 0;  // entries still waiting in any bucket
+    for (const auto& r : ring) pending += r.size();
   }
   return g;
 }
@@ -102,24 +168,22 @@ OutlineFill fill_outlines(const LabelMap& labels, const OutlineFillOptions& opti
   std::string why;
   if (!options.is_valid(&why)) throw Error("layering: " + why);
   if (labels.empty()) throw Error("layering: label map is empty; need at least one pixel");
-  const int w = labels.width();
   // Lines wider than this are not outlines but background gaps; growing no
   // farther keeps the cost to a band around the regions.
   const double reach = options.max_distance > 0 ? options.max_distance : kMaxReach;
   const int limit = static_cast<int>(std::ceil(std::min(reach * kUnit, 60000.0)));
   const Growth g = grow(labels, limit);
+  const Window& box = g.box;
 
   // Where fronts of two regions meet inside label-0 pixels, each side has come
   // about half a line width: the typical meeting distance measures the lines.
+  // Each pair of 4-neighbours is counted once, from its left or upper pixel.
   std::vector<int> meet;
-  for (int y = 0; y < labels.height(); ++y) {
-    for (int x = 0; x < w; ++x) {
-      const int i = y * w + x;
-      if (labels.data()[i] != 0 || g.owner[i] == 0) continue;
-      for (int j : {x + 1 < w ? i + 1 : -1, y + 1 < labels.height() ? i + w : -1}) {
-        if (j < 0 || labels.data()[j] != 0 || g.owner[j] == 0 || g.owner[j] == g.owner[i]) continue;
-        meet.push_back(std::max(g.dist[i], g.dist[j]));
-      }
+  for (int i : g.reached) {
+    for (int j : {i + 1, i + box.stride()}) {
+      // The frame and region pixels hold 0, unreached pixels kUnreached.
+      if (g.dist[j] == 0 || g.dist[j] == kUnreached || g.owner[j] == g.owner[i]) continue;
+      meet.push_back(std::max(g.dist[i], g.dist[j]));
     }
   }
   OutlineFill out;
@@ -134,9 +198,11 @@ OutlineFill fill_outlines(const LabelMap& labels, const OutlineFillOptions& opti
   out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
   out.labels = labels;
   const int radius = static_cast<int>(std::floor(out.radius * kUnit));
-  for (std::size_t i = 0; i < labels.size(); ++i)
-    if (labels.data()[i] == 0 && g.owner[i] != 0 && g.dist[i] <= radius)
-      out.labels.data()[i] = g.owner[i];
+  for (int i : g.reached) {
+    if (g.dist[i] > radius) continue;
+    const int x = i % box.stride() - 1 + box.x0, y = i / box.stride() - 1 + box.y0;
+    out.labels.at(x, y) = g.owner[i];
+  }
   return out;
 }
 
