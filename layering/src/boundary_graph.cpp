@@ -3,13 +3,18 @@
 // one pass over the corners.
 #include "hair25d/layering/boundary_graph.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
 #include "hair25d/core/error.h"
+#include "raster_scan.h"
 
 namespace hair25d::layering {
 namespace {
+
+using detail::Bits;
+using detail::for_each_set;
 
 // Directions of travel on the screen: right, down, left, up.
 constexpr std::array<int, 4> kDx = {1, 0, -1, 0};
@@ -137,45 +142,62 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   graph.width = w;
   graph.height = h;
 
+  // Junctions in raster order of their corners, so a corner's junction id is
+  // found by binary search among `junction_corner` once its bit says it is one.
   const std::size_t corners = static_cast<std::size_t>(w + 1) * (h + 1);
-  std::vector<int> junction_at(corners, -1);
+  Bits is_junction_corner(corners);
+  std::vector<std::size_t> junction_corner;
+  auto visit_corner = [&](int x, int y) {
+    if (!is_junction(grid.around(x, y))) return;
+    const std::size_t c = static_cast<std::size_t>(y) * (w + 1) + x;
+    is_junction_corner.set(c);
+    junction_corner.push_back(c);
+    graph.junctions.push_back({Vec2(x, y), {}});
+  };
+  // Inside the image a corner where neither row changes label holds at most
+  // two labels, so is no junction (almost all corners): flags from two rows
+  // at once, which vectorises.
+  std::vector<std::uint8_t> differs(static_cast<std::size_t>(w) + 1, 0);
   for (int y = 0; y <= h; ++y) {
-    // Inside the image a corner whose four pixels agree (almost all) is
-    // skipped by comparing two rows directly.
-    const int* above = y > 0 ? labels.data() + static_cast<std::size_t>(y - 1) * w : nullptr;
-    const int* below = y < h ? labels.data() + static_cast<std::size_t>(y) * w : nullptr;
-    for (int x = 0; x <= w; ++x) {
-      if (above && below && x > 0 && x < w) {
-        const int a = above[x - 1];
-        if (a == above[x] && a == below[x - 1] && a == below[x]) continue;
-      }
-      if (is_junction(grid.around(x, y))) {
-        junction_at[static_cast<std::size_t>(y) * (w + 1) + x] =
-            static_cast<int>(graph.junctions.size());
-        graph.junctions.push_back({Vec2(x, y), {}});
-      }
+    if (y == 0 || y == h) {
+      for (int x = 0; x <= w; ++x) visit_corner(x, y);
+      continue;
     }
+    const int* above = labels.data() + static_cast<std::size_t>(y - 1) * w;
+    const int* below = labels.data() + static_cast<std::size_t>(y) * w;
+    for (int x = 1; x < w; ++x)
+      differs[x] =
+          static_cast<std::uint8_t>((above[x - 1] != above[x]) | (below[x - 1] != below[x]));
+    visit_corner(0, y);
+    for_each_set(differs, 1, w, [&](int x) { visit_corner(x, y); });
+    visit_corner(w, y);
   }
+  auto junction_at = [&](int x, int y) {
+    const std::size_t c = static_cast<std::size_t>(y) * (w + 1) + x;
+    if (!is_junction_corner.test(c)) return -1;
+    return static_cast<int>(std::lower_bound(junction_corner.begin(), junction_corner.end(), c) -
+                            junction_corner.begin());
+  };
 
-  std::vector<std::uint8_t> visited(grid.edge_count(), 0);
+  Bits visited(grid.edge_count());
   auto trace = [&](int x0, int y0, int d0) {
     Boundary b;
     grid.sides(x0, y0, d0, &b.left, &b.right);
-    b.start = junction_at[static_cast<std::size_t>(y0) * (w + 1) + x0];
+    b.start = junction_at(x0, y0);
     b.points.emplace_back(x0, y0);
     int x = x0, y = y0, d = d0;
     for (;;) {
-      visited[grid.edge_index(x, y, d)] = 1;
+      visited.set(grid.edge_index(x, y, d));
       x += kDx[d];
       y += kDy[d];
-      const int j = junction_at[static_cast<std::size_t>(y) * (w + 1) + x];
+      const int j = junction_at(x, y);
       if (j >= 0) {
         b.points.emplace_back(x, y);
         b.end = j;
         break;
       }
       d = continue_direction(grid.around(x, y), d);
-      if (x == x0 && y == y0 && visited[grid.edge_index(x, y, d)]) break;  // closed loop
+      if (x == x0 && y == y0 && visited.test(grid.edge_index(x, y, d))) break;  // closed loop
       b.points.emplace_back(x, y);
     }
     const int id = static_cast<int>(graph.boundaries.size());
@@ -186,19 +208,25 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
     graph.boundaries.push_back(std::move(b));
   };
 
-  for (const Junction& junction : std::vector<Junction>(graph.junctions)) {
-    const int x = static_cast<int>(junction.position.x());
-    const int y = static_cast<int>(junction.position.y());
+  // Tracing adds boundary ids to junctions but never junctions.
+  for (std::size_t k = 0; k < graph.junctions.size(); ++k) {
+    const int x = static_cast<int>(graph.junctions[k].position.x());
+    const int y = static_cast<int>(graph.junctions[k].position.y());
     const auto q = grid.around(x, y);
     for (int d = 0; d < 4; ++d)
-      if (CrackGrid::has_edge(q, d) && !visited[grid.edge_index(x, y, d)]) trace(x, y, d);
+      if (CrackGrid::has_edge(q, d) && !visited.test(grid.edge_index(x, y, d))) trace(x, y, d);
   }
   // What is left are closed loops with no junction (a region inside another).
+  // A loop is found at its first horizontal crack edge in raster order: an
+  // edge rightwards from corner (x, y) lies between pixels (x, y-1) and (x, y).
+  std::vector<int> outside(static_cast<std::size_t>(w), kOutsideLabel);
   for (int y = 0; y <= h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      if (!CrackGrid::has_edge(grid.around(x, y), 0) || visited[grid.edge_index(x, y, 0)]) continue;
-      trace(x, y, 0);
-    }
+    const int* above = y > 0 ? labels.data() + static_cast<std::size_t>(y - 1) * w : outside.data();
+    const int* below = y < h ? labels.data() + static_cast<std::size_t>(y) * w : outside.data();
+    for (int x = 0; x < w; ++x) differs[x] = static_cast<std::uint8_t>(above[x] != below[x]);
+    for_each_set(differs, 0, w, [&](int x) {
+      if (!visited.test(grid.edge_index(x, y, 0))) trace(x, y, 0);
+    });
   }
   return graph;
 }

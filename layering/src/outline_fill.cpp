@@ -11,6 +11,7 @@
 
 #include "hair25d/core/error.h"
 #include "hair25d/layering/boundary_graph.h"
+#include "raster_scan.h"
 
 namespace hair25d::layering {
 namespace {
@@ -114,11 +115,10 @@ Growth grow(const LabelMap& labels, int limit) {
       edge[x] = mid[x] == 0 ? around : 0;
     }
     const int* row = labels.data() + static_cast<std::size_t>(box.y0 + y) * w + box.x0;
-    for (int x = 0; x < box.w; ++x) {
-      if (edge[x] == 0) continue;
+    detail::for_each_set(edge, 0, box.w, [&](int x) {
       owner[base + x] = row[x];
       ring[0].push_back(base + x);
-    }
+    });
   }
   // Neighbour offsets: right, left, down, up, then the diagonals.
   const std::array<int, 4> ortho = {1, -1, stride, -stride};
@@ -131,6 +131,8 @@ Growth grow(const LabelMap& labels, int limit) {
     owner[j] = own;
     ring[nd % ring.size()].push_back(j);
   };
+  // Each seed reaches a few pixels; reserving avoids most regrowth.
+  g.reached.reserve(4 * ring[0].size());
   std::size_t pending = ring[0].size();
   for (int d = 0; pending > 0; ++d) {
     auto& bucket = ring[d % ring.size()];

@@ -2,6 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <random>
+#include <set>
 
 #include "hair25d/core/error.h"
 #include "hair25d/layering/boundary_graph.h"
@@ -112,6 +118,155 @@ TEST(OutlineFill, FarBackgroundStaysBackground) {
   const OutlineFill f = fill_outlines(m, {.max_distance = 3.0});
   EXPECT_EQ(f.labels.at(6, 5), 1);   // within 3 pixels
   EXPECT_EQ(f.labels.at(20, 5), 0);  // far from any region
+}
+
+// Random label maps for the properties below: blobs of a few labels with
+// label-0 gaps of several widths, regions on every image border, and salt
+// noise (labels touching only diagonally, single pixels, -1 labels like the
+// outside).
+LabelMap random_map(std::mt19937& rng, int w, int h, bool noise) {
+  LabelMap m(w, h);
+  if (noise) {
+    const int kinds[] = {0, 0, 1, 2, 7, -1, -3};
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) m.at(x, y) = kinds[rng() % 7];
+    return m;
+  }
+  std::vector<std::array<int, 3>> seeds(2 + rng() % 6);  // x, y, label
+  for (auto& s : seeds) s = {int(rng() % w), int(rng() % h), 1 + int(rng() % 4)};
+  const double gap = (rng() % 50) / 10.0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double d1 = 1e9, d2 = 1e9;
+      int best = 0;
+      for (const auto& s : seeds) {
+        const double d = std::hypot(x - s[0], y - s[1]);
+        if (d < d1) {
+          d2 = d1, d1 = d, best = s[2];
+        } else if (d < d2) {
+          d2 = d;
+        }
+      }
+      m.at(x, y) = d2 - d1 < gap ? 0 : best;
+    }
+  return m;
+}
+
+TEST(BoundaryGraph, RandomMapsAreCoveredExactlyAndConsistently) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int w = 1 + static_cast<int>(rng() % 41), h = 1 + static_cast<int>(rng() % 29);
+    const LabelMap m = random_map(rng, w, h, trial % 2 == 0);
+    const BoundaryGraph g = build_boundary_graph(m);
+    auto label = [&](int x, int y) { return m.contains(x, y) ? m.at(x, y) : kOutsideLabel; };
+    // Every crack edge between different labels (the border too) is walked
+    // exactly once, with the labels on its sides.
+    std::map<std::array<int, 4>, int> walked;  // (x, y, dx, dy) of the edge, from its smaller end
+    for (const Boundary& b : g.boundaries) {
+      const std::size_t n = b.points.size();
+      ASSERT_GE(n, b.closed() ? 4u : 2u);
+      for (std::size_t k = 0; k + (b.closed() ? 0 : 1) < n; ++k) {
+        const Vec2 p = b.points[k], q = b.points[(k + 1) % n];
+        const int dx = static_cast<int>(q.x() - p.x()), dy = static_cast<int>(q.y() - p.y());
+        ASSERT_EQ(std::abs(dx) + std::abs(dy), 1);
+        const int px = static_cast<int>(p.x()), py = static_cast<int>(p.y());
+        // Screen orientation: left of travel (dx, dy) is the pixel at (dy, -dx).
+        const int lx = dx > 0 ? px : dx < 0 ? px - 1 : (dy > 0 ? px : px - 1);
+        const int ly = dy > 0 ? py : dy < 0 ? py - 1 : (dx > 0 ? py - 1 : py);
+        const int rx = dx != 0 ? lx : (dy > 0 ? px - 1 : px);
+        const int ry = dy != 0 ? ly : (dx > 0 ? py : py - 1);
+        EXPECT_EQ(label(lx, ly), b.left);
+        EXPECT_EQ(label(rx, ry), b.right);
+        EXPECT_NE(b.left, b.right);
+        const int sx = std::min(px, static_cast<int>(q.x())),
+                  sy = std::min(py, static_cast<int>(q.y()));
+        ++walked[{sx, sy, std::abs(dx), std::abs(dy)}];
+      }
+      if (!b.closed()) {
+        EXPECT_EQ(g.junctions[b.start].position, b.points.front());
+        EXPECT_EQ(g.junctions[b.end].position, b.points.back());
+      }
+    }
+    int expected = 0;
+    for (int y = 0; y <= h; ++y)
+      for (int x = 0; x <= w; ++x) {
+        if (x < w && label(x, y - 1) != label(x, y)) {
+          ++expected;
+          EXPECT_EQ((walked[{x, y, 1, 0}]), 1) << "horizontal edge at " << x << "," << y;
+        }
+        if (y < h && label(x - 1, y) != label(x, y)) {
+          ++expected;
+          EXPECT_EQ((walked[{x, y, 0, 1}]), 1) << "vertical edge at " << x << "," << y;
+        }
+      }
+    int total = 0;
+    for (const auto& [edge, count] : walked) total += count;
+    EXPECT_EQ(total, expected);
+    // Junctions are exactly the corners where three or more labels meet.
+    std::set<std::pair<int, int>> at;
+    for (const Junction& j : g.junctions) {
+      at.insert({static_cast<int>(j.position.x()), static_cast<int>(j.position.y())});
+      EXPECT_FALSE(j.boundaries.empty());
+    }
+    for (int y = 0; y <= h; ++y)
+      for (int x = 0; x <= w; ++x) {
+        const std::set<int> around = {label(x - 1, y - 1), label(x, y - 1), label(x - 1, y),
+                                      label(x, y)};
+        EXPECT_EQ(around.size() >= 3, at.contains({x, y})) << x << "," << y;
+      }
+  }
+}
+
+// The chamfer distance (fifths of a pixel) the fill grows by, between pixels.
+int chamfer(int dx, int dy) {
+  dx = std::abs(dx), dy = std::abs(dy);
+  return 5 * std::max(dx, dy) + 2 * std::min(dx, dy);
+}
+
+TEST(OutlineFill, GivesEachOutlinePixelToANearestRegionWithinTheRadius) {
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int w = 2 + static_cast<int>(rng() % 45), h = 2 + static_cast<int>(rng() % 31);
+    const LabelMap m = random_map(rng, w, h, false);
+    const double reach = trial % 3 == 0 ? 0.0 : 0.5 + (rng() % 40) / 10.0;  // 0: estimated
+    const OutlineFill f = fill_outlines(m, {.max_distance = reach});
+    if (reach > 0) EXPECT_DOUBLE_EQ(f.radius, reach);
+    const int radius = static_cast<int>(std::floor(f.radius * 5));
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        if (m.at(x, y) != 0) {
+          ASSERT_EQ(f.labels.at(x, y), m.at(x, y));  // regions are never changed
+          continue;
+        }
+        // Brute force: the nearest region pixels and their labels.
+        int best = std::numeric_limits<int>::max();
+        std::set<int> nearest;
+        for (int v = 0; v < h; ++v)
+          for (int u = 0; u < w; ++u) {
+            if (m.at(u, v) == 0) continue;
+            const int d = chamfer(u - x, v - y);
+            if (d < best) best = d, nearest.clear();
+            if (d == best) nearest.insert(m.at(u, v));
+          }
+        if (best <= radius)
+          EXPECT_TRUE(nearest.contains(f.labels.at(x, y)))
+              << "pixel " << x << "," << y << " at " << best << " got " << f.labels.at(x, y);
+        else
+          EXPECT_EQ(f.labels.at(x, y), 0) << "pixel " << x << "," << y << " at " << best;
+      }
+  }
+}
+
+TEST(OutlineFill, MapWithoutRegionsOrWithoutOutlinesIsUnchanged) {
+  const LabelMap empty(13, 7, 0);
+  const OutlineFill a = fill_outlines(empty);
+  EXPECT_EQ(a.labels, empty);
+  EXPECT_EQ(a.line_width, 0.0);
+  LabelMap full(6, 11, 3);
+  full.at(2, 4) = 5;
+  const OutlineFill b = fill_outlines(full);
+  EXPECT_EQ(b.labels, full);
+  EXPECT_EQ(b.line_width, 0.0);
 }
 
 TEST(OutlineFill, RejectsBadInput) {
