@@ -1,8 +1,12 @@
-// Coarse fill for cel art (inpaint_cel): every hole pixel continues the flat
-// region nearest to it, so the exemplar pass only has to add texture.
+// Flat fills for cel art: the coarse fill of inpaint_cel (every hole pixel
+// continues the flat region nearest to it, so the exemplar pass only has to
+// add texture) and the full-resolution geodesic fill of the background.
+#include <array>
+#include <climits>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "background_internal.h"
 #include "inpaint_internal.h"
 #include "raster.h"
 
@@ -72,6 +76,144 @@ Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& sour
         guide.at(x, y) = {v[0], v[1], v[2], v[3]};
       }
   return guide;
+}
+
+}  // namespace hair25d::completion::detail
+
+// ---------------------------------------------------------------------------
+// Full-resolution flat fill of the background (background.cpp).
+
+namespace hair25d::completion::detail {
+namespace {
+
+// Multi-source geodesic propagation (Dial's bucket queue, chamfer weights 5
+// orthogonal and 7 diagonal ≈ 5√2): each pixel reachable through `pass`
+// takes the origin of its nearest seed. Pixels never reached keep −1.
+void propagate(int w, int h, const Mask& pass, const std::vector<int>& seeds,
+               std::vector<int>& origin) {
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  std::vector<int> dist(n, INT_MAX);
+  std::array<std::vector<int>, 8> bucket;
+  for (int s : seeds) {
+    dist[static_cast<std::size_t>(s)] = 0;
+    bucket[0].push_back(s);
+  }
+  std::size_t pending = seeds.size();
+  const int dx[8] = {1, -1, 0, 0, 1, 1, -1, -1};
+  const int dy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
+  for (int d = 0; pending > 0; ++d) {
+    std::vector<int>& list = bucket[static_cast<std::size_t>(d % 8)];
+    // Relaxing adds to other buckets only (weights 5 and 7 < 8).
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const int i = list[k];
+      --pending;
+      if (dist[static_cast<std::size_t>(i)] != d) continue;
+      const int x = i % w, y = i / w;
+      for (int m = 0; m < 8; ++m) {
+        const int nx = x + dx[m], ny = y + dy[m];
+        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+        const int j = ny * w + nx;
+        if (!pass[static_cast<std::size_t>(j)]) continue;
+        // No diagonal step between two blocked pixels (through a thin line).
+        if (m >= 4 && !pass[static_cast<std::size_t>(y * w + nx)] &&
+            !pass[static_cast<std::size_t>(ny * w + x)])
+          continue;
+        const int nd = d + (m < 4 ? 5 : 7);
+        if (nd >= dist[static_cast<std::size_t>(j)]) continue;
+        dist[static_cast<std::size_t>(j)] = nd;
+        origin[static_cast<std::size_t>(j)] = origin[static_cast<std::size_t>(i)];
+        bucket[static_cast<std::size_t>(nd % 8)].push_back(j);
+        ++pending;
+      }
+    }
+    list.clear();
+  }
+}
+
+}  // namespace
+
+int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barrier, int seam_radius,
+              std::vector<int>* seed) {
+  const int w = image.width(), h = image.height();
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  cv::Mat hole_m(h, w, CV_8U, const_cast<std::uint8_t*>(hole.data()));
+  cv::Mat ink_m(h, w, CV_8U, const_cast<std::uint8_t*>(ink.data()));
+  // Known pixels within a few pixels of the hole may carry the wave to the
+  // hole pixels behind an ink rim; flat ones there are the seeds.
+  constexpr int kBand = 4;
+  cv::Mat band, near_ink;
+  cv::dilate(hole_m, band,
+             cv::getStructuringElement(cv::MORPH_RECT, {2 * kBand + 1, 2 * kBand + 1}));
+  cv::dilate(ink_m, near_ink, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
+  Mask pass(n, 0);
+  std::vector<int> origin(n, -1), seeds;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!band.data[i] || barrier[i]) continue;
+    if (hole[i]) {
+      pass[i] = 1;
+    } else if (!ink[i]) {
+      pass[i] = 1;
+      if (!near_ink.data[i]) {
+        origin[i] = static_cast<int>(i);
+        seeds.push_back(static_cast<int>(i));
+      }
+    }
+  }
+  if (seeds.empty())  // everything near the hole is ink: take any known pixel
+    for (std::size_t i = 0; i < n; ++i)
+      if (band.data[i] && !hole[i]) {
+        pass[i] = 1;
+        origin[i] = static_cast<int>(i);
+        seeds.push_back(static_cast<int>(i));
+      }
+  propagate(w, h, pass, seeds, origin);
+  // Pockets closed off by barriers or ink (and the barrier pixels
+  // themselves) take the nearest colour across them.
+  bool cut_off = false;
+  for (std::size_t i = 0; i < n && !cut_off; ++i) cut_off = hole[i] && origin[i] < 0;
+  if (cut_off) {
+    std::vector<int> reached;
+    Mask all(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      // Through ink too: a hole ringed by a line takes the colours beyond it.
+      if (hole[i] || band.data[i]) all[i] = 1;
+      if (origin[i] >= 0 && all[i]) reached.push_back(static_cast<int>(i));
+    }
+    propagate(w, h, all, reached, origin);
+  }
+  int unreached = 0;
+  Image filled = image;
+  for (std::size_t i = 0; i < n; ++i)
+    if (hole[i]) {
+      if (origin[i] >= 0)
+        filled.data()[i] = image.data()[static_cast<std::size_t>(origin[i])];
+      else
+        ++unreached;
+    }
+  // A median straightens the Voronoi seams between colours and removes the
+  // streaks of anti-aliased seed colours; not next to barriers, where the
+  // window would mix the two sides of a drawn line.
+  if (seam_radius > 0) {
+    cv::Mat smooth, keep_out;
+    cv::medianBlur(view(filled), smooth, 2 * seam_radius + 1);
+    cv::Mat barrier_m(h, w, CV_8U, const_cast<std::uint8_t*>(barrier.data()));
+    cv::dilate(
+        barrier_m, keep_out,
+        cv::getStructuringElement(cv::MORPH_RECT, {2 * seam_radius + 1, 2 * seam_radius + 1}));
+    for (std::size_t i = 0; i < n; ++i)
+      if (hole[i] && origin[i] >= 0 && !keep_out.data[i]) {
+        const cv::Vec4b& v = smooth.at<cv::Vec4b>(static_cast<int>(i / w), static_cast<int>(i % w));
+        filled.data()[i] = {v[0], v[1], v[2], v[3]};
+      }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (hole[i]) image.data()[i] = filled.data()[i];
+  if (seed != nullptr) {
+    seed->assign(n, -1);
+    for (std::size_t i = 0; i < n; ++i)
+      if (hole[i]) (*seed)[i] = origin[i];
+  }
+  return unreached;
 }
 
 }  // namespace hair25d::completion::detail

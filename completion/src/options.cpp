@@ -35,11 +35,10 @@ bool Options::is_valid(std::string* error) const {
     return fail("fit_regularization = " + num(fit_regularization) + "; must be >= 0");
   if (threads < 1 || threads > 64)
     return fail("threads = " + std::to_string(threads) + "; must be in [1, 64]");
-  if (background_max_side < 16)
-    return fail("background_max_side = " + std::to_string(background_max_side) + "; must be >= 16");
   std::string inner;
   if (!contour.is_valid(&inner)) return fail("contour: " + inner);
   if (!inpaint.is_valid(&inner)) return fail("inpaint: " + inner);
+  if (!background.is_valid(&inner)) return fail("background: " + inner);
   return true;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hair25d/completion/active_contour.h"
+#include "hair25d/completion/background.h"
 #include "hair25d/completion/inpaint.h"
 #include "hair25d/core/geometry.h"
 #include "hair25d/core/hair_model.h"
@@ -46,7 +47,7 @@ struct Options {
   bool inpaint_strands = true;
   bool inpaint_background = true;
   InpaintOptions inpaint;
-  int background_max_side = 320;  // the background is filled at most this size, then upscaled
+  BackgroundOptions background;  // the background behind the hair, filled at full resolution
   int threads = 2;  // strands and background filled by up to this many threads (1 = serial)
 
   // False, with a message naming the option, its value and the rule, if unusable.

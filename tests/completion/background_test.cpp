@@ -1,0 +1,226 @@
+#include "hair25d/completion/background.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "hair25d/core/error.h"
+
+namespace hair25d::completion {
+namespace {
+
+constexpr Rgba kPaper{240, 240, 232, 255};
+constexpr Rgba kSkin{250, 205, 170, 255};
+constexpr Rgba kShadow{215, 150, 120, 255};
+constexpr Rgba kInk{35, 25, 25, 255};
+constexpr Rgba kHair{90, 140, 190, 255};
+
+int luma(const Rgba& c) { return (299 * c.r + 587 * c.g + 114 * c.b) / 1000; }
+
+int colour_distance(const Rgba& a, const Rgba& b) {
+  return std::max(
+      {std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
+}
+
+Rgba mix(const Rgba& a, const Rgba& b, double t) {
+  auto m = [t](int x, int y) { return static_cast<std::uint8_t>(std::lround(x + t * (y - x))); };
+  return {m(a.r, b.r), m(a.g, b.g), m(a.b, b.b), m(a.a, b.a)};
+}
+
+// A face: a flat disc with an anti-aliased ink outline 3 px wide, on a
+// non-square sheet, and a band of hair over its top (the hole: the band
+// plus 2 px). The hidden cap of the outline turns by about 83°.
+struct Face {
+  static constexpr int kW = 260, kH = 180;
+  static constexpr double kCx = 131.0, kCy = 97.0, kR = 60.0;
+  static constexpr int kBandTop = 12, kBandBottom = 50;  // rows of the hair band
+  Image drawing{kW, kH};
+  LabelMap hole{kW, kH};
+
+  explicit Face(const Rgba& paper = kPaper) {
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        const double d = std::hypot(x + 0.5 - kCx, y + 0.5 - kCy) - kR;
+        Rgba c = d < 0 ? kSkin : paper;
+        const double line = std::clamp(2.0 - std::abs(d), 0.0, 1.0);  // 3 px + AA rim
+        if (line > 0) c = mix(c, kInk, line);
+        const bool hair = y >= kBandTop && y < kBandBottom && x >= 30 && x < 232;
+        if (hair) c = kHair;
+        drawing.at(x, y) = c;
+        hole.at(x, y) = y >= kBandTop - 2 && y < kBandBottom + 2 && x >= 28 && x < 234;
+      }
+  }
+  double circle_distance(int x, int y) const {
+    return std::hypot(x + 0.5 - kCx, y + 0.5 - kCy) - kR;
+  }
+};
+
+void expect_known_untouched(const Image& before, const Image& after, const LabelMap& hole) {
+  for (int y = 0; y < before.height(); ++y)
+    for (int x = 0; x < before.width(); ++x)
+      if (!hole.at(x, y)) {
+        ASSERT_EQ(after.at(x, y), before.at(x, y)) << "at " << x << "," << y;
+      }
+}
+
+TEST(Background, FaceUnderHairIsCompletedWithItsOutline) {
+  const Face f;
+  const BackgroundResult r = fill_background(f.drawing, f.hole);
+  expect_known_untouched(f.drawing, r.image, f.hole);
+  EXPECT_EQ(r.unreached, 0);
+  EXPECT_EQ(r.joined_lines, 1);  // the two ends of the outline under the band
+  int skin_wrong = 0, skin = 0, paper_wrong = 0, paper = 0;
+  for (int y = 0; y < Face::kH; ++y)
+    for (int x = 0; x < Face::kW; ++x) {
+      if (!f.hole.at(x, y)) continue;
+      const double d = f.circle_distance(x, y);
+      if (d < -5) ++skin, skin_wrong += colour_distance(r.image.at(x, y), kSkin) > 10;
+      if (d > 5) ++paper, paper_wrong += colour_distance(r.image.at(x, y), kPaper) > 10;
+    }
+  ASSERT_GT(skin, 300);
+  EXPECT_EQ(skin_wrong, 0) << "of " << skin << " hidden disc pixels";
+  EXPECT_EQ(paper_wrong, 0) << "of " << paper << " hidden paper pixels";
+  // The continued outline is dark on the true circle all along the hidden cap.
+  int samples = 0, dark = 0;
+  for (double a = 0; a < 2 * M_PI; a += 0.01) {
+    const double px = Face::kCx + Face::kR * std::cos(a), py = Face::kCy + Face::kR * std::sin(a);
+    const int x = static_cast<int>(px), y = static_cast<int>(py);
+    if (y < Face::kBandTop || y >= Face::kBandBottom - 2) continue;  // well inside the hole
+    ++samples;
+    int darkest = 255;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        darkest = std::min(darkest, luma(r.image.at(x + dx, y + dy)));
+    dark += darkest < 100;
+  }
+  ASSERT_GT(samples, 50);
+  EXPECT_EQ(dark, samples);
+  // And it is a line, not a smear: 5 px off the circle it is light.
+  for (double a = 0; a < 2 * M_PI; a += 0.05) {
+    const double px = Face::kCx + (Face::kR - 6) * std::cos(a),
+                 py = Face::kCy + (Face::kR - 6) * std::sin(a);
+    const int x = static_cast<int>(px), y = static_cast<int>(py);
+    if (f.hole.at(x, y)) {
+      EXPECT_GT(luma(r.image.at(x, y)), 150) << x << "," << y;
+    }
+  }
+}
+
+TEST(Background, TransparentSheetStaysTransparent) {
+  const Face f(Rgba{0, 0, 0, 0});
+  const BackgroundResult r = fill_background(f.drawing, f.hole);
+  expect_known_untouched(f.drawing, r.image, f.hole);
+  int paper = 0;
+  for (int y = 0; y < Face::kH; ++y)
+    for (int x = 0; x < Face::kW; ++x) {
+      if (!f.hole.at(x, y)) continue;
+      const double d = f.circle_distance(x, y);
+      if (d > 5) {
+        ++paper;
+        EXPECT_EQ(r.image.at(x, y).a, 0) << x << "," << y;
+      }
+      if (d < -5) {
+        EXPECT_EQ(r.image.at(x, y), kSkin) << x << "," << y;
+      }
+    }
+  EXPECT_GT(paper, 1000);
+}
+
+// Skin left of x = 100, paper right of it, an ink line 3 px wide between;
+// a hole over the lower part swallows the line's end.
+struct Border {
+  static constexpr int kW = 210, kH = 150, kLine = 100, kHoleTop = 50;
+  Image drawing{kW, kH};
+  LabelMap hole{kW, kH};
+  explicit Border(bool inked, const Rgba& right = kPaper) {
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        Rgba c = x < kLine ? kSkin : right;
+        if (inked && std::abs(x - kLine) <= 1) c = kInk;
+        if (y >= kHoleTop && x >= 30 && x < 180) c = kHair, hole.at(x, y) = 1;
+        drawing.at(x, y) = c;
+      }
+  }
+};
+
+int darkest_near_line(const Image& image, int y) {
+  int darkest = 255;
+  for (int x = Border::kLine - 3; x <= Border::kLine + 3; ++x)
+    darkest = std::min(darkest, luma(image.at(x, y)));
+  return darkest;
+}
+
+TEST(Background, SeamBetweenColoursTheDrawingSeparatesByInkIsInked) {
+  const Border b(true);
+  BackgroundOptions o;
+  o.continue_lines = false;  // the seam alone
+  const BackgroundResult r = fill_background(b.drawing, b.hole, o);
+  expect_known_untouched(b.drawing, r.image, b.hole);
+  EXPECT_GT(r.seam_pixels, 50);
+  for (int y = Border::kHoleTop + 4; y < Border::kH - 4; ++y) {
+    EXPECT_LT(darkest_near_line(r.image, y), 120) << "row " << y;
+    EXPECT_LE(colour_distance(r.image.at(Border::kLine - 12, y), kSkin), 10) << "row " << y;
+    EXPECT_LE(colour_distance(r.image.at(Border::kLine + 12, y), kPaper), 10) << "row " << y;
+  }
+}
+
+TEST(Background, UnpairedLineBetweenTwoColoursIsContinued) {
+  const Border b(true);
+  BackgroundOptions o;
+  o.ink_seams = false;  // the continued line alone
+  const BackgroundResult r = fill_background(b.drawing, b.hole, o);
+  expect_known_untouched(b.drawing, r.image, b.hole);
+  EXPECT_EQ(r.extended_lines, 1);
+  for (int y = Border::kHoleTop; y < Border::kHoleTop + 60; ++y)
+    EXPECT_LT(darkest_near_line(r.image, y), 110) << "row " << y;
+}
+
+TEST(Background, ShadingBorderWithoutInkGetsNoLine) {
+  const Border b(false, kShadow);  // cel shading: the colours touch
+  const BackgroundResult r = fill_background(b.drawing, b.hole);
+  expect_known_untouched(b.drawing, r.image, b.hole);
+  EXPECT_EQ(r.seam_pixels, 0);
+  for (int y = Border::kHoleTop; y < Border::kH; ++y)
+    for (int x = 30; x < 180; ++x) {
+      const int l = luma(r.image.at(x, y));
+      ASSERT_GE(l, luma(kShadow) - 6) << x << "," << y;
+    }
+  EXPECT_LE(colour_distance(r.image.at(60, 120), kSkin), 6);
+  EXPECT_LE(colour_distance(r.image.at(150, 120), kShadow), 6);
+}
+
+TEST(Background, EmptyHoleLeavesTheImage) {
+  const Face f;
+  const BackgroundResult r = fill_background(f.drawing, LabelMap(Face::kW, Face::kH));
+  EXPECT_EQ(r.filled, 0);
+  EXPECT_EQ(r.image.width(), Face::kW);
+  expect_known_untouched(f.drawing, r.image, LabelMap(Face::kW, Face::kH));
+}
+
+TEST(Background, WholeImageHoleReportsUnreached) {
+  const Face f;
+  const BackgroundResult r = fill_background(f.drawing, LabelMap(Face::kW, Face::kH, 1));
+  EXPECT_EQ(r.unreached, Face::kW * Face::kH);
+  EXPECT_EQ(r.filled, 0);
+}
+
+TEST(Background, BadInputThrows) {
+  const Face f;
+  EXPECT_THROW(fill_background(f.drawing, LabelMap(Face::kW + 1, Face::kH)), Error);
+  BackgroundOptions o;
+  o.max_join_angle_deg = 0;
+  EXPECT_THROW(fill_background(f.drawing, f.hole, o), Error);
+  o = {};
+  o.seam_radius = -1;
+  EXPECT_THROW(fill_background(f.drawing, f.hole, o), Error);
+  o = {};
+  o.inpaint.patch_radius = 0;
+  std::string why;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("patch_radius"), std::string::npos) << why;
+  EXPECT_THROW(fill_background(f.drawing, f.hole, o), Error);
+}
+
+}  // namespace
+}  // namespace hair25d::completion
