@@ -24,7 +24,7 @@ namespace layering = hair25d::layering;
 namespace generator = hair25d::generator;
 
 struct Sample {
-  layering::BoundaryFeatures x;
+  std::vector<double> x;
   double y = 0;  // +1 left above, -1 right above
   double weight = 1;
 };
@@ -56,7 +56,7 @@ generator::Options style(int i, std::uint64_t seed) {
 
 // Minimises Σ log(1 + exp(−y w·x)) + ridge/2 ‖w‖² by Newton steps.
 Eigen::VectorXd fit(const std::vector<Sample>& samples, double ridge) {
-  const int d = layering::kBoundaryFeatureCount;
+  const int d = samples.empty() ? 0 : static_cast<int>(samples.front().x.size());
   Eigen::VectorXd w = Eigen::VectorXd::Zero(d);
   for (int it = 0; it < 50; ++it) {
     Eigen::VectorXd grad = ridge * w;
@@ -83,13 +83,16 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 20000;
   double ridge = 1.0;
   bool length_weighted = false;
+  double same_ridge = 1.0;
   app.add_option("--cases", cases, "generated drawings")->check(CLI::PositiveNumber);
   app.add_option("--seed", seed, "seed of the first drawing");
   app.add_option("--ridge", ridge, "L2 penalty")->check(CLI::NonNegativeNumber);
+  app.add_option("--same-ridge", same_ridge, "L2 penalty of the same-depth model")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("--length-weighted", length_weighted, "weight boundaries by sqrt(length)");
   CLI11_PARSE(app, argc, argv);
 
-  std::vector<Sample> samples;
+  std::vector<Sample> samples, same_samples;
   layering::Options options;
   options.metric = layering::Metric::kPaper;
   for (int i = 0; i < cases; ++i) {
@@ -110,10 +113,17 @@ int main(int argc, char** argv) {
     for (const layering::BoundaryReport& b : r.boundaries) {
       if (!b.occluding || b.left <= 0 || b.right <= 0) continue;
       auto t = truth.find({b.left, b.right});
-      if (t == truth.end() || t->second == Relation::kEqual) continue;
+      if (t == truth.end()) continue;
+      // Same depth or ordered: every occluding boundary of a judged pair,
+      // weighted by length as the pair's decision is.
+      same_samples.push_back({{b.equal_features.begin(), b.equal_features.end()},
+                              t->second == Relation::kEqual ? 1.0 : -1.0,
+                              std::sqrt(b.length / r.line_width)});
+      if (t->second == Relation::kEqual) continue;
       // A pair is decided by its boundaries' votes weighted by length; the
       // square root keeps short boundaries (most junction errors) in play.
-      samples.push_back({b.features, t->second == Relation::kAbove ? 1.0 : -1.0,
+      samples.push_back({{b.features.begin(), b.features.end()},
+                         t->second == Relation::kAbove ? 1.0 : -1.0,
                          length_weighted ? std::sqrt(b.length / r.line_width) : 1.0});
     }
   }
@@ -130,6 +140,23 @@ int main(int argc, char** argv) {
               100.0 * right_paper / samples.size(), 100.0 * right_learned / samples.size());
   std::printf("  static constexpr BoundaryFeatures kWeights = {");
   for (int k = 0; k < w.size(); ++k) std::printf("%s%.6g", k ? ", " : "", w[k]);
+  std::printf("};\n");
+
+  // The same-depth model. Its features use the order model's output, so the
+  // order weights above are committed first, then this is run again.
+  const Eigen::VectorXd v = fit(same_samples, same_ridge);
+  int positives = 0, right_same = 0, right_none = 0;
+  for (const Sample& s : same_samples) {
+    const Eigen::Map<const Eigen::VectorXd> x(s.x.data(), v.size());
+    positives += s.y > 0;
+    right_same += s.y * v.dot(x) > 0;
+    right_none += s.y < 0;
+  }
+  std::printf("%zu boundaries (%d same depth); right: always ordered %.1f%%, model %.1f%%\n",
+              same_samples.size(), positives, 100.0 * right_none / same_samples.size(),
+              100.0 * right_same / same_samples.size());
+  std::printf("  static constexpr EqualFeatures kWeights = {");
+  for (int k = 0; k < v.size(); ++k) std::printf("%s%.6g", k ? ", " : "", v[k]);
   std::printf("};\n");
   return 0;
 }

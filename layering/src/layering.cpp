@@ -14,6 +14,7 @@
 #include "hair25d/layering/optimizer.h"
 #include "line_response.h"
 #include "neighbours.h"
+#include "parallel.h"
 
 namespace hair25d::layering {
 namespace {
@@ -144,6 +145,15 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   std::set<std::pair<int, int>> fixed_equal;
   for (const RegionRelation& r : options.fixed)
     if (r.relation == Relation::kEqual) fixed_equal.insert(key(r.a, r.b));
+  // Lines along the boundaries are measured on all cores (parallel.h).
+  std::vector<detail::BoundaryLine> measured(nb);
+  detail::parallel_for(nb, [&](int i) {
+    const Boundary& b = bs[i];
+    if (b.left == kOutsideLabel || b.right == kOutsideLabel) return;
+    Polyline curve = b.points;
+    if (b.closed()) curve.push_back(curve.front());
+    measured[i] = lines.measure(curve, 1.5 * out.line_width, out.labels, b.left, b.right);
+  });
   std::vector<std::pair<double, double>> weighted;  // (contrast, length)
   for (int i = 0; i < nb; ++i) {
     const Boundary& b = bs[i];
@@ -152,10 +162,10 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     rep.right = b.right;
     rep.length = b.length();
     if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
-    Polyline curve = b.points;
-    if (b.closed()) curve.push_back(curve.front());
-    rep.line_contrast =
-        lines.boundary_contrast(curve, 1.5 * out.line_width, out.labels, b.left, b.right);
+    const detail::BoundaryLine& line = measured[i];
+    rep.line_contrast = line.contrast;
+    rep.line_contrast_low = line.contrast_low;
+    rep.colour_difference = line.colour_difference;
     weighted.emplace_back(rep.line_contrast, rep.length);
   }
   if (options.line_threshold > 0) {
@@ -292,6 +302,34 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     rep.features = boundary_features(rep.cues);
     rep.learned = learned_metric(rep.features);
   }
+  // The same-depth model, with the drawing's typical colour step across its
+  // hair boundaries as the yardstick of "same paint".
+  std::vector<double> steps;
+  for (int i = 0; i < nb; ++i)
+    if (bs[i].left > 0 && bs[i].right > 0 && out.boundaries[i].occluding)
+      steps.push_back(out.boundaries[i].colour_difference);
+  double typical_step = 0.0;
+  if (!steps.empty()) {
+    auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+    std::nth_element(steps.begin(), mid, steps.end());
+    typical_step = *mid;
+  }
+  for (int i = 0; i < nb; ++i) {
+    BoundaryReport& rep = out.boundaries[i];
+    EqualCues& e = rep.equal_cues;
+    e.length_widths = rep.length / out.line_width;
+    e.contrast_ratio = rep.line_contrast / out.line_threshold;
+    e.contrast_low_ratio = rep.line_contrast_low / out.line_threshold;
+    e.colour_difference = rep.colour_difference;
+    e.typical_colour_difference = typical_step;
+    e.order_log_odds = rep.learned;
+    e.area_left = rep.cues.area_left;
+    e.area_right = rep.cues.area_right;
+    e.start = rep.cues.start;
+    e.end = rep.cues.end;
+    rep.equal_features = equal_features(e);
+    rep.equal = equal_metric(rep.equal_features);
+  }
 
   // --- Eq. (2): boundary states by one minimum cut (§4.5). ---
   report(progress, "layering", 0.6, "optimisation");
@@ -380,7 +418,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   // --- Relations per pair of hair regions. ---
   report(progress, "layering", 0.8, "relations");
   struct PairAccumulator {
-    double total = 0, occluding = 0, score = 0;
+    double total = 0, occluding = 0, score = 0, same = 0;
     int longest = -1;
   };
   std::map<std::pair<int, int>, PairAccumulator> pairs;
@@ -393,6 +431,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     if (acc.longest < 0 || rep.length > bs[acc.longest].length()) acc.longest = i;
     if (state_of[i] < 0) continue;
     acc.occluding += rep.length;
+    acc.same += rep.equal * rep.length;
     // Oriented to the smaller id: x = +1 means the left region is above.
     const int toward_a = (b.left < b.right ? 1 : -1) * solution.x[state_of[i]];
     acc.score += toward_a * (std::max(support[state_of[i]], 0.0) + 1e-3) * rep.length;
@@ -412,7 +451,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     RegionRelation r;
     r.a = k.first;
     r.b = k.second;
-    if (acc.occluding < options.equal_fraction * acc.total || acc.occluding == 0) {
+    const bool same_depth = options.learned_equal && options.metric == Metric::kLearned &&
+                            acc.occluding > 0 && acc.same > 0;
+    if (acc.occluding < options.equal_fraction * acc.total || acc.occluding == 0 || same_depth) {
       r.relation = Relation::kEqual;
       r.score = 0.0;
     } else {

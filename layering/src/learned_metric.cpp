@@ -57,6 +57,36 @@ BoundaryFeatures boundary_features(const BoundaryCues& c) {
   return f;
 }
 
+EqualFeatures equal_features(const EqualCues& c) {
+  EqualFeatures f{};
+  f[0] = 1.0;  // intercept: same-depth boundaries are rare
+  f[1] = std::min(c.colour_difference / 32.0, 4.0);
+  // Relative to the drawing's own spread of colours: in a grey manga page
+  // every strand has about the same tone, so "same paint" says less.
+  f[2] = std::min(c.colour_difference / (c.typical_colour_difference + 2.0), 4.0);
+  f[3] = std::min(std::abs(c.order_log_odds), 4.0);
+  f[4] = safe_log(c.length_widths);
+  f[5] = std::min(std::abs(safe_log(c.area_left) - safe_log(c.area_right)), 4.0);
+  f[6] = std::clamp(c.contrast_ratio, 0.0, 3.0);
+  f[7] = std::clamp(c.contrast_low_ratio, 0.0, 3.0);
+  int used = 0;
+  for (const EndAngles& e : {c.start, c.end}) {
+    if (!e.used) continue;
+    ++used;
+    f[8] += std::min(e.left, e.right) / kPi;
+    f[9] += tip(e.left) * tip(e.right);  // both regions end in a point: a forked tip
+  }
+  if (used > 0) f[8] /= used;
+  return f;
+}
+
+double equal_metric(const EqualFeatures& features) {
+  const EqualFeatures& w = equal_weights();
+  double s = 0.0;
+  for (int i = 0; i < kEqualFeatureCount; ++i) s += w[i] * features[i];
+  return s;
+}
+
 double learned_metric(const BoundaryFeatures& features) {
   const BoundaryFeatures& w = learned_weights();
   double s = 0.0;

@@ -15,4 +15,12 @@ const BoundaryFeatures& learned_weights() {
   return kWeights;
 }
 
+// Same bench program, same drawings: occluding boundaries between hair
+// regions, same depth against ordered. Order as in equal_features.
+const EqualFeatures& equal_weights() {
+  static constexpr EqualFeatures kWeights = {-0.740681, -0.191578, -4.76613,  -0.798823, 0.599937,
+                                             -0.430811, 2.39866,   -0.939171, -7.49131,  1.57257};
+  return kWeights;
+}
+
 }  // namespace hair25d::layering

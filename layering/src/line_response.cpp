@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <future>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -20,8 +22,12 @@ cv::Mat grey_of(const Image& image, int x0, int y0, int w, int h) {
     for (int x = 0; x < w; ++x) {
       const Rgba& p = image.at(x0 + x, y0 + y);
       // Transparent pixels read as white paper.
-      const double a = p.a / 255.0;
       const double lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
+      if (p.a == 255) {  // the common case, where the blend below is exactly lum
+        row[x] = static_cast<float>(lum);
+        continue;
+      }
+      const double a = p.a / 255.0;
       row[x] = static_cast<float>(a * lum + (1.0 - a) * 255.0);
     }
   }
@@ -44,6 +50,34 @@ LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0
   w_ = std::clamp(x1, x0_ + 1, image.width()) - x0_;
   h_ = std::clamp(y1, y0_ + 1, image.height()) - y0_;
   try {
+    // The colours need nothing from the grey levels: they are made on a
+    // second core meanwhile (each path writes only its own members).
+    auto colours = std::async(std::launch::async | std::launch::deferred, [&] {
+      // Colours for the paint on each side: smoothed at half a line width so
+      // screentone dots and JPEG blocks average to their tone.
+      cv::Mat rgb(h_, w_, CV_32FC3);
+      for (int y = 0; y < h_; ++y) {
+        auto* row = rgb.ptr<cv::Vec3f>(y);
+        for (int x = 0; x < w_; ++x) {
+          const Rgba& p = image.at(x0_ + x, y0_ + y);
+          if (p.a == 255) {  // the common case, where the blend below is exact
+            row[x] = cv::Vec3f(p.r, p.g, p.b);
+            continue;
+          }
+          const float a = p.a / 255.0f;
+          row[x] = cv::Vec3f(a * p.r + (1 - a) * 255.0f, a * p.g + (1 - a) * 255.0f,
+                             a * p.b + (1 - a) * 255.0f);
+        }
+      }
+      const double colour_sigma = std::max(1.0, 0.5 * line_width_);
+      cv::GaussianBlur(rgb, rgb, cv::Size(0, 0), colour_sigma, colour_sigma, cv::BORDER_REPLICATE);
+      colour_.resize(static_cast<std::size_t>(w_) * h_);
+      for (int y = 0; y < h_; ++y) {
+        const auto* row = rgb.ptr<cv::Vec3f>(y);
+        static_assert(sizeof(Rgb3f) == sizeof(cv::Vec3f));
+        std::memcpy(&colour_[static_cast<std::size_t>(y) * w_], row, sizeof(Rgb3f) * w_);
+      }
+    });
     cv::Mat grey = grey_of(image, x0_, y0_, w_, h_);
     // Noise: MAD of a 3x3 Laplacian on the raw grey image, over pixels where
     // it is small (flat areas), scaled for a Gaussian.
@@ -60,13 +94,15 @@ LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0
     const double sigma = std::max(0.6, 0.25 * line_width_);
     cv::Mat smooth;
     cv::GaussianBlur(grey, smooth, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
-    grey_.assign(smooth.begin<float>(), smooth.end<float>());
+    grey_.assign(smooth.ptr<float>(), smooth.ptr<float>() + smooth.total());  // continuous
+    colours.get();
   } catch (const cv::Exception& e) {
     throw Error(std::string("layering: OpenCV failed while measuring lines: ") + e.what());
   }
 }
 
-double LineResponse::sample(double x, double y) const {
+// Inlined: called a few dozen times per point measured.
+[[gnu::always_inline]] inline double LineResponse::sample(double x, double y) const {
   x = std::clamp(x - 0.5 - x0_, 0.0, w_ - 1.0);  // pixel centres are at +0.5
   y = std::clamp(y - 0.5 - y0_, 0.0, h_ - 1.0);
   const int x0 = std::min(static_cast<int>(x), w_ - 2 < 0 ? 0 : w_ - 2);
@@ -79,9 +115,18 @@ double LineResponse::sample(double x, double y) const {
          fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
 }
 
-double LineResponse::boundary_contrast(const Polyline& curve, double skip, const LabelMap& labels,
-                                       int left, int right) const {
-  if (curve.size() < 2) return 0.0;
+std::array<double, 3> LineResponse::sample_colour(double x, double y) const {
+  // Nearest pixel: colours are already smoothed.
+  const int xi = std::clamp(static_cast<int>(std::floor(x)) - x0_, 0, w_ - 1);
+  const int yi = std::clamp(static_cast<int>(std::floor(y)) - y0_, 0, h_ - 1);
+  const Rgb3f& c = colour_[static_cast<std::size_t>(yi) * w_ + xi];
+  return {c[0], c[1], c[2]};
+}
+
+BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const LabelMap& labels,
+                                   int left, int right) const {
+  BoundaryLine out;
+  if (curve.size() < 2) return out;
   const Polyline pts = resample_polyline(curve, 1.0);
   const int n = static_cast<int>(pts.size());
   const double total = polyline_length(curve);
@@ -94,8 +139,12 @@ double LineResponse::boundary_contrast(const Polyline& curve, double skip, const
     const int x = static_cast<int>(std::floor(q.x())), y = static_cast<int>(std::floor(q.y()));
     return labels.contains(x, y) ? labels.at(x, y) : kOutside;
   };
-  std::vector<double> values;
+  std::vector<double> values, colours;
   values.reserve(n);
+  // Paint is sampled past the line and its anti-aliased rim, before the
+  // next line of a thin strand.
+  const double paint_near = 0.5 * line_width_ + 1.5;
+  const double paint_far = 2.0 * line_width_ + 2.0;
   double along = 0.0;
   // Every other point is plenty for a median, except on short boundaries.
   const int stride = n > 40 ? 2 : 1;
@@ -120,8 +169,36 @@ double LineResponse::boundary_contrast(const Polyline& curve, double skip, const
     }
     if (paper_left < 0 || paper_right < 0) continue;
     values.push_back(std::min(paper_left, paper_right) - centre);
+    std::array<double, 3> paint_left{}, paint_right{};
+    bool found_left = false, found_right = false;
+    for (double s = paint_near; s <= paint_far + 1e-9 && !(found_left && found_right); s += 1.0) {
+      const Vec2 ql = pts[i] + s * to_left;
+      const Vec2 qr = pts[i] - s * to_left;
+      if (!found_left && label_at(ql) == left) {
+        paint_left = sample_colour(ql.x(), ql.y());
+        found_left = true;
+      }
+      if (!found_right && label_at(qr) == right) {
+        paint_right = sample_colour(qr.x(), qr.y());
+        found_right = true;
+      }
+    }
+    if (found_left && found_right) {
+      double d2 = 0.0;
+      for (int c = 0; c < 3; ++c)
+        d2 += (paint_left[c] - paint_right[c]) * (paint_left[c] - paint_right[c]);
+      colours.push_back(std::sqrt(d2 / 3.0));
+    }
   }
-  return median_of(values);
+  if (!values.empty()) {
+    std::vector<double> low = values;
+    auto q = low.begin() + static_cast<std::ptrdiff_t>(low.size() / 4);
+    std::nth_element(low.begin(), q, low.end());
+    out.contrast_low = *q;
+  }
+  out.contrast = median_of(values);
+  out.colour_difference = median_of(colours);
+  return out;
 }
 
 double LineResponse::estimate_line_width(const Image& image) {

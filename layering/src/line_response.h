@@ -4,12 +4,25 @@
 // tones, where a Laplacian answers too.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "hair25d/core/geometry.h"
 #include "hair25d/core/image.h"
 
 namespace hair25d::layering::detail {
+
+using Rgb3f = std::array<float, 3>;
+
+// What is measured along one boundary.
+struct BoundaryLine {
+  double contrast = 0.0;      // median over samples of the line's contrast (grey levels)
+  double contrast_low = 0.0;  // its lower quartile: low where a line fades out along the boundary
+  // Median over samples of the colour distance (RGB, 0..255 per channel,
+  // Euclidean / √3) between the two sides just beyond the line: two halves of
+  // one strand share their paint, an occluder often does not.
+  double colour_difference = 0.0;
+};
 
 class LineResponse {
  public:
@@ -25,7 +38,14 @@ class LineResponse {
   // side's region of `labels` (`left`/`right`): crowded lines beside the
   // boundary (hair tips) do not hide its own line.
   double boundary_contrast(const Polyline& curve, double skip, const LabelMap& labels, int left,
-                           int right) const;
+                           int right) const {
+    return measure(curve, skip, labels, left, right).contrast;
+  }
+  // The same contrast with its lower quartile and the colour difference
+  // across the boundary (sampled 1–2 line widths beyond its centre, in each
+  // side's own region, on colours smoothed at half a line width).
+  BoundaryLine measure(const Polyline& curve, double skip, const LabelMap& labels, int left,
+                       int right) const;
 
   // Estimated standard deviation of pixel noise (grey levels) from the
   // median absolute deviation of a Laplacian, for a floor of the threshold.
@@ -37,10 +57,12 @@ class LineResponse {
 
  private:
   double sample(double x, double y) const;
+  std::array<double, 3> sample_colour(double x, double y) const;
   int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
   double line_width_ = 1.0;
   double noise_sigma_ = 0.0;
   std::vector<float> grey_;
+  std::vector<Rgb3f> colour_;  // smoothed RGB of the window
 };
 
 }  // namespace hair25d::layering::detail

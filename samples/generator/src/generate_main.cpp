@@ -45,8 +45,12 @@ int main(int argc, char** argv) {
   app.add_option("--noise", opt.noise_sigma, "Gaussian noise sigma, 0..255 scale");
   app.add_option("--jpeg", opt.jpeg_quality, "JPEG round trip at this quality (0 = none)");
   app.add_flag("--coloured-lines", coloured, "Outlines in a dark hair colour, not black");
+  bool fading = false;
+  app.add_flag("--fading-forks", fading,
+               "Fork lines stop inside the strand; the annotation still splits it");
   CLI11_PARSE(app, argc, argv);
   opt.coloured_lines = coloured;
+  opt.fading_forks = fading;
 
   try {
     std::filesystem::create_directories(out);

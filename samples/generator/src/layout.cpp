@@ -299,6 +299,21 @@ Shape make_strand(StrandKind kind, const Head& head, const Palette& pal, const O
   // Forks only where both halves stay wide enough to be regions of their own.
   if (spec.max_width >= 7.0 * options.line_width && rng.chance(0.2)) {
     s.inner_lines.push_back(fork_line(g, rng.chance(0.5) ? 1 : -1, rng.uniform(0.4, 0.65)));
+    if (options.fading_forks) {
+      // The drawn part runs from the tip over 45–85% of the line; the rest,
+      // where it would bend out to the side, is only in the annotation.
+      Polyline& drawn = s.inner_lines.back();
+      const double keep = rng.uniform(0.45, 0.85) * polyline_length(drawn);
+      double along = 0.0;
+      std::size_t cut = 1;
+      while (cut + 1 < drawn.size() && along + (drawn[cut] - drawn[cut - 1]).norm() < keep) {
+        along += (drawn[cut] - drawn[cut - 1]).norm();
+        ++cut;
+      }
+      s.hidden_lines.emplace_back(drawn.begin() + static_cast<std::ptrdiff_t>(cut - 1),
+                                  drawn.end());
+      drawn.resize(cut);
+    }
   }
   s.geometry = std::move(g);
   return s;

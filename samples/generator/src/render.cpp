@@ -247,10 +247,15 @@ cv::Mat render_owner(const Scene& sc) {
     cv::fillPoly(mask, std::vector{outline}, cv::Scalar(255), cv::LINE_8, kShift);
     cv::Mat target = owner(roi);
     target.setTo(cv::Scalar(static_cast<int>(k) + 1), mask);
-    if (!s.inner_lines.empty()) {
+    if (!s.inner_lines.empty() || !s.hidden_lines.empty()) {
       cv::Mat lines(roi.size(), CV_8U, cv::Scalar(0));
       for (const Polyline& l : s.inner_lines) {
         cv::polylines(lines, std::vector{to_fixed(l, 1, origin)}, false, cv::Scalar(255), line,
+                      cv::LINE_8, kShift);
+      }
+      // An 8-connected one-pixel line is enough to keep 4-connected pieces apart.
+      for (const Polyline& l : s.hidden_lines) {
+        cv::polylines(lines, std::vector{to_fixed(l, 1, origin)}, false, cv::Scalar(255), 1,
                       cv::LINE_8, kShift);
       }
       target.setTo(cv::Scalar(kLineOwner), lines & mask);

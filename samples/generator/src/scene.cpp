@@ -37,6 +37,7 @@ void rotate_scene(Scene& scene, double angle) {
     turn_all(shape.outline);
     turn_all(shape.band);
     for (Polyline& l : shape.inner_lines) turn_all(l);
+    for (Polyline& l : shape.hidden_lines) turn_all(l);
     for (FilledEllipse& e : shape.decorations) {
       turn(e.centre);
       e.angle += angle;

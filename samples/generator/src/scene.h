@@ -38,6 +38,8 @@ struct Shape {
   std::string name;
   Polyline outline;                   // closed polygon (not repeated at the end)
   std::vector<Polyline> inner_lines;  // drawn inside the shape only (forks)
+  // In the annotation only (one pixel wide): the rest of a fading fork line.
+  std::vector<Polyline> hidden_lines;
   Colour colour{0.5, 0.5, 0.5};
   double tone = 0.0;                       // screentone: dot area share in [0, 0.6]
   bool reverse_param = false;              // gradient runs tip to root instead

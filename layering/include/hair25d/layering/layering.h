@@ -54,6 +54,10 @@ struct Options {
   // A pair of regions is "equal" when less than this share of their common
   // boundary length is occluding.
   double equal_fraction = 0.5;
+  // With the learned metric, a pair is also "equal" when the learned
+  // same-depth model (equal_metric) says so for its occluding boundaries,
+  // length-weighted: a drawn line between two halves of one strand.
+  bool learned_equal = true;
   // Give label-0 outline pixels to the regions they separate first (FORMATS.md).
   bool fill_outlines = true;
   // Boundaries between hair and background take part in Eq. (2) (they carry
@@ -70,9 +74,11 @@ struct Options {
 
 // What was measured on one boundary (diagnostics and overlays).
 struct BoundaryReport {
-  int left = 0, right = 0;     // labels, left/right walking start → end
-  double length = 0.0;         // pixels
-  double line_contrast = 0.0;  // median grey-level contrast of a dark line on it
+  int left = 0, right = 0;         // labels, left/right walking start → end
+  double length = 0.0;             // pixels
+  double line_contrast = 0.0;      // median grey-level contrast of a dark line on it
+  double line_contrast_low = 0.0;  // its lower quartile
+  double colour_difference = 0.0;  // paint across it (LineResponse), 0..255
   bool occluding = false;
   double phi_j = 0.0;        // Φ̂_J, left region above right when positive
   double phi_j_start = 0.0;  // its term at the start junction (0 at a cusp)
@@ -82,7 +88,10 @@ struct BoundaryReport {
   BoundaryCues cues;         // what the learned metric is computed from
   BoundaryFeatures features{};
   double learned = 0.0;  // learned_metric(features), log-odds of left above
-  int state = 0;         // +1 left above, −1 right above, 0 no state
+  EqualCues equal_cues;  // what the same-depth model is computed from
+  EqualFeatures equal_features{};
+  double equal = 0.0;  // equal_metric(equal_features), log-odds of same depth
+  int state = 0;       // +1 left above, −1 right above, 0 no state
 };
 
 // Where the relation of a pair is drawn: a point on their longest common

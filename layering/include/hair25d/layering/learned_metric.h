@@ -45,4 +45,29 @@ double learned_metric(const BoundaryFeatures& features);
 // The weights in use (layering/src/learned_weights.cpp says how they were made).
 const BoundaryFeatures& learned_weights();
 
+// Same depth or ordered? A second learned model, for occluding boundaries:
+// two halves of a forked strand, or two pieces of one strand meeting where
+// lines converge, are divided by a drawn line just like an occluder and its
+// occludee. Its features do not change when left and right swap.
+struct EqualCues {
+  double length_widths = 0.0;              // boundary length / line width
+  double contrast_ratio = 0.0;             // median line contrast / the occluding threshold
+  double contrast_low_ratio = 0.0;         // lower-quartile contrast / the threshold
+  double colour_difference = 0.0;          // across the boundary, 0..255 (LineResponse)
+  double typical_colour_difference = 0.0;  // median of it over the image's hair boundaries
+  double order_log_odds = 0.0;  // learned_metric of the boundary (its sign does not matter)
+  double area_left = 0.0, area_right = 0.0;  // pixels
+  EndAngles start, end;
+};
+
+inline constexpr int kEqualFeatureCount = 10;
+using EqualFeatures = std::array<double, kEqualFeatureCount>;
+
+EqualFeatures equal_features(const EqualCues& cues);
+
+// Log-odds that the boundary separates regions at the same depth.
+double equal_metric(const EqualFeatures& features);
+
+const EqualFeatures& equal_weights();
+
 }  // namespace hair25d::layering

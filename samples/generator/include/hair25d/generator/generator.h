@@ -27,7 +27,11 @@ struct Options {
   double noise_sigma = 0.0;     // Gaussian pixel noise, 0..255 scale
   int jpeg_quality = 0;         // > 0: pass the drawing through JPEG at this quality
   bool coloured_lines = false;  // lines in a dark hair colour instead of black
-  bool strand_masks = true;     // fill strand_masks (a full-size map a strand; off saves time)
+  // Fork lines stop inside the strand (as many artists draw them) while the
+  // annotation still splits the strand along the whole fork: the two halves
+  // meet without a drawn line where it fades. Off: fork lines run to the side.
+  bool fading_forks = false;
+  bool strand_masks = true;  // fill strand_masks (a full-size map a strand; off saves time)
   std::uint64_t seed = 1;
 
   // False, naming the option, its value and the rule, if unusable.
