@@ -153,7 +153,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   };
   // A strand cannot lie above itself: two regions one of which is above the
   // other through a chain of relations are never joined.
-  const auto& above = ctx.above;
   const auto try_join = [&](int a, int b) {
     const int ga = strands.find(a), gb = strands.find(b);
     if (ga == gb) return false;
@@ -178,7 +177,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     reports[ra].joined_region = b.region;
     const int rb = new_report(b, EdgeCase::kJoined);
     reports[rb].joined_region = a.region;
-    pieces.areas.push_back({a.region, j.patch, false, ra});
+    if (j.patch.size() >= 3) pieces.areas.push_back({a.region, j.patch, false, ra});
+    for (const Polyline& band : j.bands) pieces.areas.push_back({a.region, band, false, ra});
     ++result.joins;
   }
   int done = 0;

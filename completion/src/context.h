@@ -34,6 +34,10 @@ struct Edge {
   std::set<int> occluders;
   Eigen::Vector3d colour{0, 0, 0};  // the region's colour next to the edge
   double width = 0.0;               // |p − q|
+  // Neither end has visible outline beside it though the region has some
+  // elsewhere (the side of a wide piece running between two occluders): its
+  // tangents are only the normal of the chord p q.
+  bool guessed = false;
 };
 
 struct Context {
@@ -74,6 +78,9 @@ struct Join {
   int edge_a = 0, edge_b = 0;
   double cost = 0.0;
   Polyline patch;  // closed polygon of the completed area
+  // A join across the banks of an occluder (a wide piece cut by a strand
+  // lying over it): bands under the occluder instead of one patch.
+  std::vector<Polyline> bands;
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
 // records) or refuses joining the strands of regions a and b.

@@ -1,7 +1,10 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
+#include <set>
 
+#include "bank_crossings.h"
 #include "context.h"
 #include "hair25d/completion/bezier.h"
 #include "raster.h"
@@ -83,6 +86,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                               const std::function<bool(int, int)>& try_join) {
   const Options& o = *ctx.options;
   const double max_angle = o.max_join_angle_deg * M_PI / 180.0;
+  std::vector<BankCrossings> crossings(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (edges[i].atoms.size() == 1) crossings[i] = cross_occluders(ctx, edges[i]);
   std::vector<Join> candidates;
   for (std::size_t i = 0; i < edges.size(); ++i)
     for (std::size_t j = i + 1; j < edges.size(); ++j) {
@@ -90,49 +96,68 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       const Edge& b = edges[j];
       if (a.region == b.region) continue;
       if (ctx.occludes(a.region, b.region) || ctx.occludes(b.region, a.region)) continue;
-      // The pieces may border different occluders (the gap can lie under two
-      // overlapping strands): the coverage test below is what decides.
-      const double wide = std::max(a.width, b.width), narrow = std::min(a.width, b.width);
-      if (wide <= 0 || narrow / wide < o.min_width_ratio) continue;
       const double colour = (a.colour - b.colour).norm();
       if (colour > o.max_colour_distance) continue;
+      BankJoin bank;
+      if (a.atoms.size() == 1 && b.atoms.size() == 1)
+        bank = bank_join(crossings[i], crossings[j], a, b);
       // p_a ↔ q_b and p_b ↔ q_a: the outlines traverse both pieces the same way.
       const Vec2 c1 = b.q - a.p, c2 = a.q - b.p;
-      if (segments_cross(a.p, b.q, b.p, a.q)) continue;
       const double angles[4] = {angle(a.tangent_p, c1), angle(-b.tangent_q, c1),
                                 angle(b.tangent_p, c2), angle(-a.tangent_q, c2)};
-      if (*std::max_element(angles, angles + 4) > max_angle) continue;
-      // The hidden part keeps a strand's width: half-way along the joins its
-      // width lies near the widths at the two cuts (criterion 3 of §5.1 seen
-      // from the whole join, not only its ends).
-      const CubicBezier first = join_bezier(a.p, a.tangent_p, b.q, -b.tangent_q);
-      const CubicBezier second = join_bezier(b.p, b.tangent_p, a.q, -a.tangent_q);
-      const double middle = (first.point(0.5) - second.point(0.5)).norm();
-      const double ends = 0.5 * (a.width + b.width);
-      const double bulge = std::abs(std::log(std::max(middle, 1.0) / std::max(ends, 1.0)));
-      const double gap = 0.5 * (c1.norm() + c2.norm());
-      // Tangent continuity is the most reliable cue (§5.1 criterion 3); colour
-      // varies with shading and widths with the angle of the cut.
-      const double mean_angle = (angles[0] + angles[1] + angles[2] + angles[3]) / 4;
-      double cost = 2.0 * mean_angle / max_angle +
-                    *std::max_element(angles, angles + 4) / max_angle +
-                    0.4 * colour / o.max_colour_distance + 0.5 * (1.0 - narrow / wide) +
-                    0.5 * std::min(gap / wide, 3.0) + kBulgeWeight * bulge;
-      // §5.1 matches edges "around a common occluder"; a gap under two
-      // overlapping occluders is allowed but costs more.
-      bool common = false;
-      for (int occ : a.occluders) common = common || b.occluders.count(occ) > 0;
-      if (!common) cost += 0.4;
-      if (cost > o.max_join_cost) continue;  // before the costly coverage raster
+      const double worst = *std::max_element(angles, angles + 4);
+      const double wide = std::max(a.width, b.width), narrow = std::min(a.width, b.width);
+      // A wide piece's side under a strand (tangents only guessed) is no cut
+      // across a strand: on the annotated cases such edges joined the cap to
+      // the bangs in front of it.
+      const bool strand_like = !a.guessed && !b.guessed && wide > 0 &&
+                               narrow / wide >= o.min_width_ratio && worst <= max_angle &&
+                               !segments_cross(a.p, b.q, b.p, a.q);
+      if (!strand_like && bank.share < kMinBankShare) continue;
       Join join;
       join.edge_a = static_cast<int>(i);
       join.edge_b = static_cast<int>(j);
-      join.patch = join_patch(a, b);
-      int hidden = 0;
-      const double cover = coverage(ctx, join.patch, a.region, b.region, &hidden);
-      if (cover < o.min_join_coverage) continue;
-      join.cost = cost + 3.0 * (1.0 - cover);
-      if (join.cost > o.max_join_cost) continue;
+      double cost = std::numeric_limits<double>::infinity();
+      if (strand_like) {
+        // The hidden part keeps a strand's width: half-way along the joins its
+        // width lies near the widths at the two cuts (criterion 3 of §5.1 seen
+        // from the whole join, not only its ends).
+        const CubicBezier first = join_bezier(a.p, a.tangent_p, b.q, -b.tangent_q);
+        const CubicBezier second = join_bezier(b.p, b.tangent_p, a.q, -a.tangent_q);
+        const double middle = (first.point(0.5) - second.point(0.5)).norm();
+        const double ends = 0.5 * (a.width + b.width);
+        const double bulge = std::abs(std::log(std::max(middle, 1.0) / std::max(ends, 1.0)));
+        const double gap = 0.5 * (c1.norm() + c2.norm());
+        // Tangent continuity is the most reliable cue (§5.1 criterion 3);
+        // colour varies with shading and widths with the angle of the cut.
+        const double mean_angle = (angles[0] + angles[1] + angles[2] + angles[3]) / 4;
+        cost = 2.0 * mean_angle / max_angle + worst / max_angle +
+               0.4 * colour / o.max_colour_distance + 0.5 * (1.0 - narrow / wide) +
+               0.5 * std::min(gap / wide, 3.0) + kBulgeWeight * bulge;
+        // §5.1 matches edges "around a common occluder"; a gap under two
+        // overlapping occluders is allowed but costs more.
+        bool common = false;
+        for (int occ : a.occluders) common = common || b.occluders.count(occ) > 0;
+        if (!common) cost += 0.4;
+        if (cost <= o.max_join_cost) {  // before the costly coverage raster
+          join.patch = join_patch(a, b);
+          int hidden = 0;
+          const double cover = coverage(ctx, join.patch, a.region, b.region, &hidden);
+          cost = cover < o.min_join_coverage ? std::numeric_limits<double>::infinity()
+                                             : cost + 3.0 * (1.0 - cover);
+        }
+      }
+      // Across the banks of one occluder the rays themselves are the hidden
+      // part; the more of them land on the other piece, the surer the join.
+      const double bank_cost = kBankBaseCost + kBankShareWeight * (1.0 - bank.share) +
+                               0.4 * colour / o.max_colour_distance;
+      if (bank.share >= kMinBankShare && bank_cost < cost) {
+        cost = bank_cost;
+        join.patch.clear();
+        join.bands = std::move(bank.bands);
+      }
+      if (cost > o.max_join_cost) continue;
+      join.cost = cost;
       candidates.push_back(std::move(join));
     }
   // Greedy one-to-one: cheapest first, every edge joined at most once.

@@ -105,6 +105,11 @@ Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<i
   const bool has_q = fit_direction(end, -1, free_after, &e.tangent_q);
   // Without visible outline beside an end, the band is taken to continue
   // parallel to its other side, or straight out across the chord.
+  // A sliver wholly under occluders has nothing better; a piece with visible
+  // outline elsewhere whose edge runs between two other occluders is a wide
+  // piece's side under a strand, not a cut across a strand.
+  const bool enclosed = std::find(labels.begin(), labels.end(), 0) == labels.end();
+  e.guessed = !has_p && !has_q && !enclosed;
   if (!has_p) e.tangent_p = has_q ? e.tangent_q : out;
   if (!has_q) e.tangent_q = has_p ? e.tangent_p : out;
   // Both sides of a band run into the hidden part the same way; opposite

@@ -1,0 +1,49 @@
+// Joins across the banks of one occluder (private, case 1 of §5.1 for wide
+// pieces): a strand lying over the back hair or the cap cuts it into pieces
+// whose cut edges face each other across the strand.
+#pragma once
+
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "context.h"
+
+namespace hair25d::completion::detail {
+
+// A join is considered across the banks of an occluder when at least this
+// share of the rays from each edge lands next to the other edge.
+inline constexpr double kMinBankShare = 0.5;
+// Its cost: base + weight × (1 − share) (+ the colour term of strand joins),
+// so that a clear bank join (share ≈ 1) ranks with good strand joins.
+inline constexpr double kBankBaseCost = 0.5;
+inline constexpr double kBankShareWeight = 2.0;
+
+// A ray from an edge pixel across the occluders: its index along the edge,
+// start (on the edge) and end (on the far bank).
+using BankRay = std::tuple<int, Vec2, Vec2>;
+
+struct BankCrossings {
+  int rays = 0;
+  std::map<int, std::vector<BankRay>> hits;  // landed region -> rays that reached it
+  double depth = 0.0;  // mean distance the piece reaches behind the edge, inwards
+};
+
+// Rays from every other pixel of `edge` along the outline's outward normal,
+// through regions above the edge's region only, up to 0.6 edge lengths: a
+// ray that then reaches a region which all crossed regions lie above as well
+// lands on the far bank.
+BankCrossings cross_occluders(const Context& ctx, const Edge& edge);
+
+struct BankJoin {
+  double share = 0.0;  // min over both edges of the share of rays landing next to the other
+  std::vector<Polyline> bands;  // the hidden part: runs of consecutive rays from a
+};
+
+// The bank join of edges a and b (their crossings ca, cb). Zero share when
+// either piece is thinner behind its edge than 1.5 × the width crossed: a
+// strand piece lying on the back hair faces the back hair across an
+// occluder too, but it is no wide piece cut in two.
+BankJoin bank_join(const BankCrossings& ca, const BankCrossings& cb, const Edge& a, const Edge& b);
+
+}  // namespace hair25d::completion::detail
