@@ -24,7 +24,6 @@ struct LineEnd {
   // and right; `sides` is false when either side holds no flat pixel.
   Rgba left{}, right{};
   bool sides = false;
-  bool has_left = false, has_right = false;
 };
 
 // A line to draw into the hole: a centre line with a width at each point.

@@ -1,8 +1,10 @@
 // Flat fills for cel art: the coarse fill of inpaint_cel (every hole pixel
 // continues the flat region nearest to it, so the exemplar pass only has to
 // add texture) and the full-resolution geodesic fill of the background.
+#include <algorithm>
 #include <array>
 #include <climits>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
@@ -88,22 +90,31 @@ namespace {
 
 // Multi-source geodesic propagation (Dial's bucket queue, chamfer weights 5
 // orthogonal and 7 diagonal ≈ 5√2): each pixel reachable through `pass`
-// takes the origin of its nearest seed. Pixels never reached keep −1.
+// takes the origin of its nearest seed. A seed starts at its `start`
+// distance (same units; empty = all 0). Pixels never reached keep −1.
 void propagate(int w, int h, const Mask& pass, const std::vector<int>& seeds,
-               std::vector<int>& origin) {
+               const std::vector<int>& start, std::vector<int>& origin) {
   const std::size_t n = static_cast<std::size_t>(w) * h;
   std::vector<int> dist(n, INT_MAX);
-  std::array<std::vector<int>, 8> bucket;
-  for (int s : seeds) {
-    dist[static_cast<std::size_t>(s)] = 0;
-    bucket[0].push_back(s);
+  int max_start = 0;
+  for (std::size_t k = 0; k < start.size(); ++k) max_start = std::max(max_start, start[k]);
+  // Every pending distance lies within [d, d + max_start + 7]: a ring of
+  // that many buckets never wraps onto the one being emptied.
+  const std::size_t ring = static_cast<std::size_t>(max_start) + 8;
+  std::vector<std::vector<int>> bucket(ring);
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    const int s = seeds[k], d0 = start.empty() ? 0 : start[k];
+    if (d0 >= dist[static_cast<std::size_t>(s)]) continue;
+    dist[static_cast<std::size_t>(s)] = d0;
+    bucket[static_cast<std::size_t>(d0) % ring].push_back(s);
   }
-  std::size_t pending = seeds.size();
+  std::size_t pending = 0;
+  for (const auto& b : bucket) pending += b.size();
   const int dx[8] = {1, -1, 0, 0, 1, 1, -1, -1};
   const int dy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
   for (int d = 0; pending > 0; ++d) {
-    std::vector<int>& list = bucket[static_cast<std::size_t>(d % 8)];
-    // Relaxing adds to other buckets only (weights 5 and 7 < 8).
+    std::vector<int>& list = bucket[static_cast<std::size_t>(d) % ring];
+    // Relaxing adds to other buckets only (weights 5 and 7 < ring).
     for (std::size_t k = 0; k < list.size(); ++k) {
       const int i = list[k];
       --pending;
@@ -122,12 +133,38 @@ void propagate(int w, int h, const Mask& pass, const std::vector<int>& seeds,
         if (nd >= dist[static_cast<std::size_t>(j)]) continue;
         dist[static_cast<std::size_t>(j)] = nd;
         origin[static_cast<std::size_t>(j)] = origin[static_cast<std::size_t>(i)];
-        bucket[static_cast<std::size_t>(nd % 8)].push_back(j);
+        bucket[static_cast<std::size_t>(nd) % ring].push_back(j);
         ++pending;
       }
     }
     list.clear();
   }
+}
+
+// How far each known pixel is from the nearest ink or colour border of the
+// drawing (not counting the hole's rim), in pixels.
+cv::Mat region_depth(const Image& image, const Mask& hole, const Mask& ink) {
+  const int w = image.width(), h = image.height();
+  cv::Mat free(h, w, CV_8U, cv::Scalar(255));
+  auto differ = [](const Rgba& a, const Rgba& b) {
+    if ((a.a < 128) != (b.a < 128)) return true;
+    if (a.a < 128) return false;
+    return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)}) > 24;
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      if (hole[i]) continue;
+      bool border = ink[i] != 0;
+      if (!border && x + 1 < w && !hole[i + 1])
+        border = differ(image.data()[i], image.data()[i + 1]);
+      if (!border && y + 1 < h && !hole[i + w])
+        border = differ(image.data()[i], image.data()[i + w]);
+      if (border) free.at<std::uint8_t>(y, x) = 0;
+    }
+  cv::Mat depth;
+  cv::distanceTransform(free, depth, cv::DIST_L2, cv::DIST_MASK_3);
+  return depth;
 }
 
 }  // namespace
@@ -141,6 +178,8 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
   // Known pixels within a few pixels of the hole may carry the wave to the
   // hole pixels behind an ink rim; flat ones there are the seeds.
   constexpr int kBand = 4;
+  constexpr float kThinDepth = 10.0f;    // px: regions thinner than twice this are "thin"
+  constexpr float kThinPenalty = 10.0f;  // chamfer units (5 = 1 px) a px short of kThinDepth
   cv::Mat band, near_ink;
   cv::dilate(hole_m, band,
              cv::getStructuringElement(cv::MORPH_RECT, {2 * kBand + 1, 2 * kBand + 1}));
@@ -153,7 +192,10 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
       pass[i] = 1;
     } else if (!ink[i]) {
       pass[i] = 1;
-      if (!near_ink.data[i]) {
+      // Half-transparent pixels are the anti-aliased rim of a drawing on a
+      // transparent sheet, not a colour of it.
+      const std::uint8_t a = image.data()[i].a;
+      if (!near_ink.data[i] && (a >= 240 || a <= 15)) {
         origin[i] = static_cast<int>(i);
         seeds.push_back(static_cast<int>(i));
       }
@@ -166,7 +208,15 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
         origin[i] = static_cast<int>(i);
         seeds.push_back(static_cast<int>(i));
       }
-  propagate(w, h, pass, seeds, origin);
+  // Thin bands along the hole (a shadow the hair casts, a highlight on a
+  // clip's rim) start behind: they continue a little way, thick regions win.
+  std::vector<int> start(seeds.size(), 0);
+  const cv::Mat depth = region_depth(image, hole, ink);
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    const float t = depth.at<float>(seeds[k] / w, seeds[k] % w);
+    start[k] = static_cast<int>(std::lround(kThinPenalty * std::max(0.0f, kThinDepth - t)));
+  }
+  propagate(w, h, pass, seeds, start, origin);
   // Pockets closed off by barriers or ink (and the barrier pixels
   // themselves) take the nearest colour across them.
   bool cut_off = false;
@@ -179,7 +229,7 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
       if (hole[i] || band.data[i]) all[i] = 1;
       if (origin[i] >= 0 && all[i]) reached.push_back(static_cast<int>(i));
     }
-    propagate(w, h, all, reached, origin);
+    propagate(w, h, all, reached, {}, origin);
   }
   int unreached = 0;
   Image filled = image;

@@ -172,7 +172,6 @@ std::vector<LineEnd> find_line_ends(const Image& image, const Mask& hole, const 
               flat_colour(image, hole, ink, r, base + (0.5 * e.width + 1) * right, right, &e.right);
       }
       e.sides = found_left && found_right;
-      e.has_left = found_left, e.has_right = found_right;
       ends.push_back(e);
     }
     for (int i : visited) depth[static_cast<std::size_t>(i)] = -1;
@@ -259,14 +258,14 @@ std::vector<Stroke> continue_lines(const std::vector<LineEnd>& ends, const Mask&
   }
 
   // Unpaired ends between two different flat colours: continue them, so the
-  // two colours stay apart along a drawn line. They stop at ink, at a line
-  // already drawn or at the rim; ends that stop in the open taper off.
+  // two colours stay apart along a drawn line, when they reach ink or a line
+  // already drawn.
   Mask drawn = stroke_barrier(strokes, width, height);
   for (std::size_t a = 0; a < ends.size(); ++a) {
     const LineEnd& e = ends[a];
-    // A line with the same colour on both sides separates nothing.
-    if (used[a] || (e.sides && colour_distance(e.left, e.right) < 40.0)) continue;
-    if (!e.has_left && !e.has_right) continue;
+    // Only a line seen between two different flat colours: one with the
+    // hole on a side may be the hair's own outline or a strand of dark hair.
+    if (used[a] || !e.sides || colour_distance(e.left, e.right) < 40.0) continue;
     const double kappa = std::clamp(e.curvature, -1.0 / 40.0, 1.0 / 40.0);
     Stroke s;
     s.colour = e.colour;
@@ -294,14 +293,10 @@ std::vector<Stroke> continue_lines(const std::vector<LineEnd>& ends, const Mask&
         break;
       }
     }
-    if (!entered || s.points.size() < 4) continue;
-    const std::size_t m = s.points.size();
-    for (std::size_t i = 0; i < m; ++i) {
-      // Open ends taper over their last 40 %.
-      const double t = static_cast<double>(i) / (m - 1);
-      const double taper = met_line ? 1.0 : std::clamp((1.0 - t) / 0.4, 0.25, 1.0);
-      s.widths.push_back(e.width * taper);
-    }
+    // A continuation that meets nothing is a guess that shows as a stray
+    // line; the ink on the fill's seams separates the colours instead.
+    if (!entered || !met_line || s.points.size() < 4) continue;
+    s.widths.assign(s.points.size(), e.width);
     const Mask mine = stroke_barrier({s}, width, height);
     for (std::size_t i = 0; i < drawn.size(); ++i) drawn[i] |= mine[i];
     strokes.push_back(std::move(s));

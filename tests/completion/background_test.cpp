@@ -128,17 +128,20 @@ TEST(Background, TransparentSheetStaysTransparent) {
 }
 
 // Skin left of x = 100, paper right of it, an ink line 3 px wide between;
-// a hole over the lower part swallows the line's end.
+// a hole over the lower part swallows the line's end. With `floor`, a
+// horizontal ink line runs along the hole's lower rim (a collar).
 struct Border {
-  static constexpr int kW = 210, kH = 150, kLine = 100, kHoleTop = 50;
+  static constexpr int kW = 210, kH = 150, kLine = 100, kHoleTop = 50, kHoleBottom = 100;
   Image drawing{kW, kH};
   LabelMap hole{kW, kH};
-  explicit Border(bool inked, const Rgba& right = kPaper) {
+  explicit Border(bool inked, const Rgba& right = kPaper, bool floor = false) {
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) {
         Rgba c = x < kLine ? kSkin : right;
         if (inked && std::abs(x - kLine) <= 1) c = kInk;
-        if (y >= kHoleTop && x >= 30 && x < 180) c = kHair, hole.at(x, y) = 1;
+        if (floor && y >= kHoleBottom && y < kHoleBottom + 3) c = kInk;
+        const bool in_hole = y >= kHoleTop && (!floor || y < kHoleBottom) && x >= 30 && x < 180;
+        if (in_hole) c = kHair, hole.at(x, y) = 1;
         drawing.at(x, y) = c;
       }
   }
@@ -165,15 +168,24 @@ TEST(Background, SeamBetweenColoursTheDrawingSeparatesByInkIsInked) {
   }
 }
 
-TEST(Background, UnpairedLineBetweenTwoColoursIsContinued) {
-  const Border b(true);
+TEST(Background, UnpairedLineBetweenTwoColoursIsContinuedToTheNextLine) {
+  const Border b(true, kPaper, true);
   BackgroundOptions o;
   o.ink_seams = false;  // the continued line alone
   const BackgroundResult r = fill_background(b.drawing, b.hole, o);
   expect_known_untouched(b.drawing, r.image, b.hole);
   EXPECT_EQ(r.extended_lines, 1);
-  for (int y = Border::kHoleTop; y < Border::kHoleTop + 60; ++y)
+  for (int y = Border::kHoleTop; y < Border::kHoleBottom; ++y)
     EXPECT_LT(darkest_near_line(r.image, y), 110) << "row " << y;
+}
+
+TEST(Background, UnpairedLineMeetingNothingIsNotContinued) {
+  const Border b(true);  // the hole runs off the sheet
+  BackgroundOptions o;
+  o.ink_seams = false;
+  const BackgroundResult r = fill_background(b.drawing, b.hole, o);
+  EXPECT_EQ(r.line_ends, 1);
+  EXPECT_EQ(r.extended_lines, 0);
 }
 
 TEST(Background, ShadingBorderWithoutInkGetsNoLine) {

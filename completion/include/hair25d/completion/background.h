@@ -21,9 +21,9 @@ struct BackgroundOptions {
   double min_inside_share = 0.9;    // share of the join that must lie in the hole
   double tangent_arm = 14.0;        // pixels of visible line used for an end's tangent
   // An unpaired end whose line separates two different flat colours (a face
-  // outline against the paper) is continued with its own curvature until it
-  // meets ink, a continued line or the hole's rim, at most this many pixels.
-  double max_extension = 160.0;
+  // outline against the paper) is continued with its own curvature when it
+  // meets ink or a continued line within this many pixels.
+  double max_extension = 60.0;
   bool continue_lines = true;
   bool ink_seams = true;  // draw ink along seams between colours the drawing separates by ink
   int seam_radius = 3;    // median radius that straightens seams between fill colours
