@@ -94,6 +94,72 @@ TEST(Completion, IntersectingPiecesAreJoinedUnderTheOccluder) {
   EXPECT_GT(hair_coloured, 0.9 * s->completed_pixels);
 }
 
+// A wide piece (a cap, the back hair) cut by a strand lying over it, where
+// the cut runs between two other occluders: no side outline reaches the cut,
+// so only the banks of the strand facing each other tell that the two
+// pieces are one.
+Drawing wide_piece_under_strand() {
+  Drawing d = blank(320, 190);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 150 && y > 40 && y < 150; }, kHair, 1);
+  paint(
+      d, [](double x, double y) { return x >= 150 && x < 290 && y > 0.1 * x + 25 && y < 150; },
+      kHair, 2);
+  // Bars over the top and bottom borders where the strand crosses them.
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 200 && y > 28 && y < 58; }, kFront, 4);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 200 && y > 132 && y < 162; }, kFront, 5);
+  paint(
+      d, [](double x, double y) { return x > 138 && x < 162 && y > 5 && y < 185; }, kFront, 3);
+  d.relations = {below(1, 3), below(2, 3), below(1, 4), below(2, 4),
+                 below(1, 5), below(2, 5), below(4, 3), below(5, 3)};
+  return d;
+}
+
+TEST(Completion, WidePieceCutByAStrandIsJoinedAcrossItsBanks) {
+  const Drawing d = wide_piece_under_strand();
+  // Strand joins (tangents along the chords, equal cut widths) ruled out:
+  // the banks alone join.
+  Options banks_only;
+  banks_only.max_join_angle_deg = 0.5;
+  banks_only.min_width_ratio = 0.99;
+  const Result r = run(d, Vec2(160, 400), banks_only);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1, 2}));
+  expect_under(r, *s, {3, 4, 5});
+  // The strand's pixels between the banks (x 142..158, y 62..128) are completed.
+  int inside = 0, completed = 0;
+  for (int y = 62; y <= 128; ++y)
+    for (int x = 142; x <= 158; ++x) {
+      ++inside;
+      const int mx = x - s->origin.x(), my = y - s->origin.y();
+      completed += s->mask.contains(mx, my) && s->mask.at(mx, my) == 2;
+    }
+  EXPECT_GT(completed, 0.8 * inside);
+  // A narrow strand end facing the wide piece across the same strand is no
+  // piece of it: the strand end is thinner behind its cut than the gap.
+  Drawing narrow = blank(320, 190);
+  paint(
+      narrow, [](double x, double y) { return x > 20 && x < 150 && y > 40 && y < 150; }, kHair, 1);
+  paint(
+      narrow, [](double x, double y) { return x >= 150 && x < 166 && y > 80 && y < 110; }, kHair,
+      2);
+  paint(
+      narrow, [](double x, double y) { return x > 100 && x < 200 && y > 28 && y < 58; }, kFront, 4);
+  paint(
+      narrow, [](double x, double y) { return x > 100 && x < 200 && y > 132 && y < 162; }, kFront,
+      5);
+  paint(
+      narrow, [](double x, double y) { return x > 138 && x < 162 && y > 5 && y < 185; }, kFront, 3);
+  narrow.relations = d.relations;
+  const Result rn = run(narrow, Vec2(160, 400), banks_only);
+  const CompletedStrand* sn = strand_with(rn, 1);
+  ASSERT_NE(sn, nullptr);
+  EXPECT_EQ(sn->regions, (std::vector<int>{1}));
+}
+
 // A strand tapering to a tip at x = 280; the part beyond x = 190 is hidden.
 Drawing hidden_tip() {
   Drawing d = blank(320, 150);
