@@ -47,6 +47,7 @@ generator::Options style(int i, std::uint64_t seed) {
   o.jpeg_quality = kJpeg[i % 5];
   o.noise_sigma = kNoise[i % 4];
   o.coloured_lines = i % 6 == 5;
+  o.fading_forks = i % 3 == 1;
   o.strand_count = kStrands[i % 6];
   o.width = kSizes[i % 4][0];
   o.height = kSizes[i % 4][1];

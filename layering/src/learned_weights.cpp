@@ -8,18 +8,14 @@ namespace hair25d::layering {
 // 6984 occluding boundaries between hair regions of known order; sign right
 // on them: paper Φ 78.8%, these 82.6%. Order as in boundary_features.
 const BoundaryFeatures& learned_weights() {
-  static constexpr BoundaryFeatures kWeights = {
-      1.42871,    3.1979,    -0.654759, 0.107401, 2.30708,   -4.35105,
-      9.09997,    -0.466469, -3.27234,  0.420521, -0.150482, 0.073731,
-      -0.0634916, -0.427399, -0.52139,  -1.88515, 1.65789,   0.338336};
+  static constexpr BoundaryFeatures kWeights = {1.4864, 3.06588, -0.624876, 0.0431756, 2.39199, -4.31021, 9.00344, -0.461842, -3.30205, 0.54134, -0.235162, 0.197652, -0.0189332, -0.172832, -0.507865, -1.89478, 1.66801, 0.182479};
   return kWeights;
 }
 
 // Same bench program, same drawings: occluding boundaries between hair
 // regions, same depth against ordered. Order as in equal_features.
 const EqualFeatures& equal_weights() {
-  static constexpr EqualFeatures kWeights = {-0.740681, -0.191578, -4.76613,  -0.798823, 0.599937,
-                                             -0.430811, 2.39866,   -0.939171, -7.49131,  1.57257};
+  static constexpr EqualFeatures kWeights = {0.026446, -0.335015, -4.58186, -0.789281, 0.582041, -0.479522, 2.55376, -1.48123, -7.09291, 1.88877};
   return kWeights;
 }
 
