@@ -50,25 +50,31 @@ struct Growth {
   std::vector<int> reached;
 };
 
-// Rows and columns holding non-zero labels; false if there are none.
+// Rows and columns holding non-zero labels; false if there are none. Rows
+// are scanned only outside the box found so far: from the top and the bottom
+// for its rows, then within those from each side up to its columns.
 bool label_box(const LabelMap& labels, int* x0, int* y0, int* x1, int* y1) {
   const int w = labels.width();
-  *x0 = w, *y0 = labels.height(), *x1 = -1, *y1 = -1;
-  for (int y = 0; y < labels.height(); ++y) {
-    const int* row = labels.data() + static_cast<std::size_t>(y) * w;
-    int any = 0;  // a branch-free OR first: most rows of a drawing are all paper or all hair
-    for (int x = 0; x < w; ++x) any |= row[x];
-    if (any == 0) continue;
-    int first = 0;
-    while (row[first] == 0) ++first;
-    int last = w - 1;
-    while (row[last] == 0) --last;
-    *x0 = std::min(*x0, first);
-    *x1 = std::max(*x1, last);
-    *y0 = std::min(*y0, y);
-    *y1 = y;
+  auto row = [&](int y) { return labels.data() + static_cast<std::size_t>(y) * w; };
+  auto any = [&](int y) {
+    int bits = 0;  // a branch-free OR: most rows of a drawing are all paper or all hair
+    for (int x = 0; x < w; ++x) bits |= row(y)[x];
+    return bits != 0;
+  };
+  *y0 = 0;
+  while (*y0 < labels.height() && !any(*y0)) ++*y0;
+  if (*y0 == labels.height()) return false;
+  *y1 = labels.height() - 1;
+  while (!any(*y1)) --*y1;
+  *x0 = w, *x1 = -1;
+  for (int y = *y0; y <= *y1; ++y) {
+    const int* r = row(y);
+    for (int x = 0; x < *x0; ++x)
+      if (r[x] != 0) *x0 = x;  // the loop ends at once
+    for (int x = w - 1; x > *x1; --x)
+      if (r[x] != 0) *x1 = x;
   }
-  return *x1 >= 0;
+  return true;
 }
 
 // Dial's algorithm: a multi-source shortest path on the 8-neighbour grid with a
