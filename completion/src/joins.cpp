@@ -15,6 +15,12 @@ namespace {
 // Weight of the width change half-way along a join (|log(middle / ends)|)
 // in the cost; chosen on the annotated cases with the other weights.
 constexpr double kBulgeWeight = 4.0;
+// Cost of a strand join whose pieces share no occluder (the gap lies under
+// two overlapping strands). 0.4 before; 0.2 keeps the preference for a
+// common occluder while long strands, which pass under several, still join
+// (generated 1000 × 800 drawings: precision 0.702 → 0.754, recall 0.333 →
+// 0.358; annotated cases unchanged).
+constexpr double kNoCommonOccluderCost = 0.2;
 
 double angle(const Vec2& a, const Vec2& b) {
   const double la = a.norm(), lb = b.norm();
@@ -135,10 +141,10 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                0.4 * colour / o.max_colour_distance + 0.5 * (1.0 - narrow / wide) +
                0.5 * std::min(gap / wide, 3.0) + kBulgeWeight * bulge;
         // §5.1 matches edges "around a common occluder"; a gap under two
-        // overlapping occluders is allowed but costs more.
+        // overlapping occluders is allowed but costs a little more.
         bool common = false;
         for (int occ : a.occluders) common = common || b.occluders.count(occ) > 0;
-        if (!common) cost += 0.4;
+        if (!common) cost += kNoCommonOccluderCost;
         if (cost <= o.max_join_cost) {  // before the costly coverage raster
           join.patch = join_patch(a, b);
           int hidden = 0;
