@@ -52,7 +52,7 @@ namespace {
 
 using detail::Mask;
 
-// Mean |luma − its 5×5 median| over the known ink-free pixels of a 9×9
+// Mean |luma − its 3×3 median| over the known ink-free pixels of a 9×9
 // window: 0 on flat cel regions and along straight borders between them,
 // large on hatching, noise or painted texture.
 cv::Mat texture_measure(const Image& crop, const Mask& hole, const Mask& ink) {
@@ -60,7 +60,7 @@ cv::Mat texture_measure(const Image& crop, const Mask& hole, const Mask& ink) {
   cv::Mat grey(h, w, CV_8U), med, resid(h, w, CV_32F), valid(h, w, CV_32F);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) grey.at<std::uint8_t>(y, x) = detail::luma(crop.at(x, y));
-  cv::medianBlur(grey, med, 5);
+  cv::medianBlur(grey, med, 3);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <unordered_map>
+#include <vector>
 
 #include "background_internal.h"
 
@@ -80,54 +81,79 @@ std::unordered_map<std::uint32_t, PairCount> count_pairs(const Image& image, con
 int ink_seams(Image& filled, const Image& original, const Mask& hole, const Mask& ink,
               const Mask& barrier, const Rgba& colour, double width) {
   const int w = filled.width(), h = filled.height();
-  const std::size_t n = static_cast<std::size_t>(w) * h;
-  cv::Mat ink_m(h, w, CV_8U, const_cast<std::uint8_t*>(ink.data())), near_m;
-  cv::dilate(ink_m, near_m, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
-  const Mask near_ink(near_m.datastart, near_m.dataend);
-  const auto pairs = count_pairs(original, hole, near_ink);
-  auto inked = [&](int a, int b) {
-    if (a == b || key_distance(a, b) < kMinContrast) return false;
-    auto it = pairs.find(pair_key(a, b));
-    return it != pairs.end() && it->second.inked >= 10 && it->second.inked > 2 * it->second.direct;
+  // Candidates first (most neighbours in a flat fill are equal): hole pixels
+  // whose right or lower neighbour has a clearly different colour.
+  struct Candidate {
+    int x, y;
+    int a, b;  // colour keys
   };
-  // Seam pixels: 0 in `away` (distance transform input), hole pixels whose
-  // right or lower neighbour has a colour the drawing separates by ink.
-  cv::Mat away(h, w, CV_8U, cv::Scalar(255));
-  int seams = 0;
+  std::vector<Candidate> candidates;
+  auto same = [](const Rgba& p, const Rgba& q) {
+    return p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a;
+  };
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
       if (!hole[i] || barrier[i]) continue;
-      const int a = colour_key(filled.data()[i]);
       for (const std::size_t j : {x + 1 < w ? i + 1 : i, y + 1 < h ? i + w : i}) {
-        if (j == i || !hole[j] || barrier[j]) continue;
-        if (inked(a, colour_key(filled.data()[j]))) {
-          away.at<std::uint8_t>(y, x) = 0;
-          ++seams;
-          break;
-        }
+        if (j == i || !hole[j] || barrier[j] || same(filled.data()[i], filled.data()[j])) continue;
+        const int a = colour_key(filled.data()[i]), b = colour_key(filled.data()[j]);
+        if (a != b && key_distance(a, b) >= kMinContrast) candidates.push_back({x, y, a, b});
       }
     }
-  if (seams == 0) return 0;
-  cv::Mat dist;
-  cv::distanceTransform(away, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  if (candidates.empty()) return 0;
+  cv::Mat ink_m(h, w, CV_8U, const_cast<std::uint8_t*>(ink.data())), near_m;
+  cv::dilate(ink_m, near_m, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
+  const Mask near_ink(near_m.datastart, near_m.dataend);
+  const auto pairs = count_pairs(original, hole, near_ink);
+  // Seam pixels: 0 in `away` (distance transform input), on the box of the seams.
+  int x0 = w, y0 = h, x1 = -1, y1 = -1, seams = 0;
+  std::vector<cv::Point> marks;
+  for (const Candidate& c : candidates) {
+    auto it = pairs.find(pair_key(c.a, c.b));
+    if (it == pairs.end() || it->second.inked < 10 || it->second.inked <= 2 * it->second.direct)
+      continue;
+    marks.emplace_back(c.x, c.y);
+    x0 = std::min(x0, c.x), y0 = std::min(y0, c.y), x1 = std::max(x1, c.x), y1 = std::max(y1, c.y);
+  }
+  if (marks.empty()) return 0;
+  // Distance to the nearest seam pixel, only as far as the line reaches
+  // (a distance transform of the seams' whole box costs more).
+  const int reach = static_cast<int>(std::ceil(0.5 * width)) + 2;
+  const cv::Rect box =
+      cv::Rect(cv::Point(x0 - reach, y0 - reach), cv::Point(x1 + reach + 1, y1 + reach + 1)) &
+      cv::Rect(0, 0, w, h);
+  cv::Mat dist(box.size(), CV_32F, cv::Scalar(1e9f));
+  for (const cv::Point& m : marks) {
+    float& here = dist.at<float>(m.y - box.y, m.x - box.x);
+    seams += here != 0.0f;
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const int x = m.x - box.x + dx, y = m.y - box.y + dy;
+        if (x < 0 || y < 0 || x >= box.width || y >= box.height) continue;
+        float& d = dist.at<float>(y, x);
+        d = std::min(d, std::sqrt(static_cast<float>(dx * dx + dy * dy)));
+      }
+  }
   // The seam pixels lie on one side of the true border: centre the line half
   // a pixel over and give it an anti-aliased edge.
   const double half = 0.5 * width;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!hole[i]) continue;
-    const double d = dist.at<float>(static_cast<int>(i / w), static_cast<int>(i % w));
-    const double cover = std::clamp(half + 0.5 - std::abs(d - 0.5), 0.0, 1.0) * colour.a / 255.0;
-    if (cover <= 0) continue;
-    Rgba& p = filled.data()[i];
-    const double da = p.a / 255.0, oa = cover + da * (1 - cover);
-    auto mix = [&](double line, double under) {
-      return static_cast<std::uint8_t>(std::clamp(
-          std::lround((line * cover + under * da * (1 - cover)) / std::max(oa, 1e-9)), 0L, 255L));
-    };
-    p = {mix(colour.r, p.r), mix(colour.g, p.g), mix(colour.b, p.b),
-         static_cast<std::uint8_t>(std::lround(oa * 255))};
-  }
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y + box.y) * w + (x + box.x);
+      if (!hole[i]) continue;
+      const double d = dist.at<float>(y, x);
+      const double cover = std::clamp(half + 0.5 - std::abs(d - 0.5), 0.0, 1.0) * colour.a / 255.0;
+      if (cover <= 0) continue;
+      Rgba& p = filled.data()[i];
+      const double da = p.a / 255.0, oa = cover + da * (1 - cover);
+      auto mix = [&](double line, double under) {
+        return static_cast<std::uint8_t>(std::clamp(
+            std::lround((line * cover + under * da * (1 - cover)) / std::max(oa, 1e-9)), 0L, 255L));
+      };
+      p = {mix(colour.r, p.r), mix(colour.g, p.g), mix(colour.b, p.b),
+           static_cast<std::uint8_t>(std::lround(oa * 255))};
+    }
   return seams;
 }
 

@@ -26,7 +26,7 @@ struct BackgroundOptions {
   double max_extension = 60.0;
   bool continue_lines = true;
   bool ink_seams = true;  // draw ink along seams between colours the drawing separates by ink
-  int seam_radius = 3;    // median radius that straightens seams between fill colours
+  int seam_radius = 2;    // median radius that straightens seams between fill colours
   // Where the known pixels around the hole vary more than this (luma standard
   // deviation of ink-free pixels, 0..255), the exemplar pass adds texture;
   // flat cel regions take the flat fill alone.
