@@ -78,6 +78,8 @@ bool Options::is_valid(std::string* error) const {
     return fail("smooth_angle = " + num(smooth_angle) + "; must be in [0, π]");
   if (!positive_finite(fit_reach_widths))
     return fail("fit_reach_widths = " + num(fit_reach_widths) + "; must be finite and > 0");
+  if (!positive_finite(fit_reach_min))
+    return fail("fit_reach_min = " + num(fit_reach_min) + "; must be finite and > 0");
   if (!(equal_fraction >= 0 && equal_fraction <= 1))
     return fail("equal_fraction = " + num(equal_fraction) + "; must be in [0, 1]");
   for (const RegionRelation& r : fixed)
@@ -195,7 +197,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
 
   // --- Junction angles, Φ_J, Φ_R, Φ (§4.2–4.4). ---
   report(progress, "layering", 0.4, "metrics");
-  const double reach = std::max(3.0, options.fit_reach_widths * out.line_width);
+  const double reach = std::max(options.fit_reach_min, options.fit_reach_widths * out.line_width);
   const int nj = static_cast<int>(graph.junctions.size());
   std::vector<std::vector<Ray>> rays(nj);
   std::vector<char> cusp(nj, 0);

@@ -141,10 +141,11 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
   };
   std::vector<double> values, colours;
   values.reserve(n);
-  // Paint is sampled past the line and its anti-aliased rim, before the
-  // next line of a thin strand.
-  const double paint_near = 0.5 * line_width_ + 1.5;
-  const double paint_far = 2.0 * line_width_ + 2.0;
+  // Paint is sampled past the line, its anti-aliased rim and the colour
+  // smoothing (the boundary may sit half a pixel off the line's centre), and
+  // before the next line of a thin strand.
+  const double paint_near = line_width_ + 2.0;
+  const double paint_far = 2.5 * line_width_ + 3.0;
   double along = 0.0;
   // Every other point is plenty for a median, except on short boundaries.
   const int stride = n > 40 ? 2 : 1;

@@ -49,8 +49,11 @@ struct Options {
   double line_threshold = 0.0;
   double line_threshold_fraction = 0.4;  // of the typical boundary contrast, when automatic
   // Junction angles are measured on a line fitted to the boundary within this
-  // arc length of the junction, in line widths (never under 3 pixels).
+  // arc length of the junction, in line widths ...
   double fit_reach_widths = 6.0;
+  // ... and never under this many pixels: the raster's steps are a pixel
+  // whatever the line width, so thin lines need a longer fit than 6 widths.
+  double fit_reach_min = 12.0;
   // A pair of regions is "equal" when less than this share of their common
   // boundary length is occluding.
   double equal_fraction = 0.5;
