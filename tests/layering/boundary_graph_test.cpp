@@ -230,7 +230,9 @@ TEST(OutlineFill, GivesEachOutlinePixelToANearestRegionWithinTheRadius) {
     const LabelMap m = random_map(rng, w, h, false);
     const double reach = trial % 3 == 0 ? 0.0 : 0.5 + (rng() % 40) / 10.0;  // 0: estimated
     const OutlineFill f = fill_outlines(m, {.max_distance = reach});
-    if (reach > 0) EXPECT_DOUBLE_EQ(f.radius, reach);
+    if (reach > 0) {
+      EXPECT_DOUBLE_EQ(f.radius, reach);
+    }
     const int radius = static_cast<int>(std::floor(f.radius * 5));
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
@@ -248,11 +250,12 @@ TEST(OutlineFill, GivesEachOutlinePixelToANearestRegionWithinTheRadius) {
             if (d < best) best = d, nearest.clear();
             if (d == best) nearest.insert(m.at(u, v));
           }
-        if (best <= radius)
+        if (best <= radius) {
           EXPECT_TRUE(nearest.contains(f.labels.at(x, y)))
               << "pixel " << x << "," << y << " at " << best << " got " << f.labels.at(x, y);
-        else
+        } else {
           EXPECT_EQ(f.labels.at(x, y), 0) << "pixel " << x << "," << y << " at " << best;
+        }
       }
   }
 }
