@@ -22,12 +22,8 @@ cv::Mat grey_of(const Image& image, int x0, int y0, int w, int h) {
     for (int x = 0; x < w; ++x) {
       const Rgba& p = image.at(x0 + x, y0 + y);
       // Transparent pixels read as white paper.
-      const double lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
-      if (p.a == 255) {  // the common case, where the blend below is exactly lum
-        row[x] = static_cast<float>(lum);
-        continue;
-      }
       const double a = p.a / 255.0;
+      const double lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
       row[x] = static_cast<float>(a * lum + (1.0 - a) * 255.0);
     }
   }
