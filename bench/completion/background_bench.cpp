@@ -4,6 +4,7 @@
 // figure that does not depend on the machine's load.
 #include <benchmark/benchmark.h>
 
+#include "common/completion_input.h"
 #include "common/generated_cases.h"
 #include "hair25d/completion/background.h"
 #include "hair25d/completion/completion.h"
@@ -56,7 +57,24 @@ void BM_BackgroundFlatFillOnly(benchmark::State& state) {
   run(state, o);
 }
 
+// The whole completion stage on one thread with only the background filled:
+// minus BM_CompletionWithoutInpainting, the background's share of the stage.
+void BM_CompletionBackgroundOnly(benchmark::State& state) {
+  const AnnotatedCase& c = bench::generated_case(static_cast<int>(state.range(0)));
+  const completion::Input in = bench::completion_input(c);
+  completion::Options o;
+  o.inpaint_strands = false;
+  o.threads = 1;
+  completion::Result r;
+  for (auto _ : state) {
+    r = completion::complete_strands(in, o);
+    benchmark::DoNotOptimize(r.background.data());
+  }
+  state.counters["background_px"] = r.background_inpaint.filled;
+}
+
 BENCHMARK(BM_BackgroundFill)->Apply(bench::strand_counts);
+BENCHMARK(BM_CompletionBackgroundOnly)->Apply(bench::strand_counts);
 BENCHMARK(BM_BackgroundFlatFillOnly)->Apply(bench::strand_counts);
 
 }  // namespace
