@@ -4,7 +4,7 @@
 // Newton's method with a small ridge. Deterministic: the same seed gives the
 // same weights, printed as the C++ initializer of learned_weights.cpp.
 //
-//   train_layering --cases 240 --seed 20000
+//   train_layering --cases 200 --seed 20000
 #include <CLI/CLI.hpp>
 #include <Eigen/Dense>
 #include <cmath>
@@ -80,7 +80,7 @@ Eigen::VectorXd fit(const std::vector<Sample>& samples, double ridge) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Train the learned layering metric on generated drawings"};
-  int cases = 240;
+  int cases = 200;
   std::uint64_t seed = 20000;
   double ridge = 1.0;
   bool length_weighted = false;
@@ -123,7 +123,8 @@ int main(int argc, char** argv) {
       if (t->second == Relation::kEqual) continue;
       // A pair is decided by its boundaries' votes weighted by length; the
       // square root keeps short boundaries (most junction errors) in play.
-      samples.push_back({{b.features.begin(), b.features.end()},
+      const layering::LearnedTerms terms = layering::learned_terms(b.features);
+      samples.push_back({{terms.begin(), terms.end()},
                          t->second == Relation::kAbove ? 1.0 : -1.0,
                          length_weighted ? std::sqrt(b.length / r.line_width) : 1.0});
     }
@@ -139,8 +140,9 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(seed), ridge);
   std::printf("boundary sign right: paper Φ %.1f%%, learned %.1f%%\n",
               100.0 * right_paper / samples.size(), 100.0 * right_learned / samples.size());
-  std::printf("  static constexpr BoundaryFeatures kWeights = {");
-  for (int k = 0; k < w.size(); ++k) std::printf("%s%.6g", k ? ", " : "", w[k]);
+  std::printf("  static constexpr LearnedTerms kWeights = {");
+  for (int k = 0; k < w.size(); ++k)
+    std::printf("%s%s%.6g", k ? "," : "", k % 6 ? " " : "\n      ", w[k]);
   std::printf("};\n");
 
   // The same-depth model. Its features use the order model's output, so the

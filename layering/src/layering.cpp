@@ -218,92 +218,105 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     if (!on_border && !out.boundaries[i].occluding) cusp[b.start] = cusp[b.end] = 1;
   }
   bool hair_junction = false;
-  for (int j = 0; j < nj; ++j) {
-    std::vector<Vec2> dirs;
-    for (const Ray& r : rays[j]) dirs.push_back(r.direction);
-    const RaySectors around = sectors_around(dirs);
-    const int n = static_cast<int>(dirs.size());
-    for (int k = 0; k < n; ++k) {
-      const Ray& r = rays[j][around.order[k]];
-      const Boundary& b = bs[r.boundary];
-      if (b.left > 0 && b.right > 0) hair_junction = true;
-      const double after = around.sectors[k];
-      const double before = around.sectors[(k + n - 1) % n];
-      // Walking away from the start, `left` fills the sector before the ray;
-      // walking away from the end the sides swap.
-      const double alpha = r.at_start ? before : after;
-      const double beta = r.at_start ? after : before;
+  // Φ_J and the sectors at every junction that is not a cusp (run again
+  // below when the same-depth model turns more junctions into cusps).
+  auto junction_cues = [&] {
+    for (int i = 0; i < nb; ++i) {
+      BoundaryReport& rep = out.boundaries[i];
+      rep.cues.start = rep.cues.end = EndAngles{};
+      rep.phi_j = rep.phi_j_start = rep.phi_j_end = 0.0;
+    }
+    for (int j = 0; j < nj; ++j) {
+      std::vector<Vec2> dirs;
+      for (const Ray& r : rays[j]) dirs.push_back(r.direction);
+      const RaySectors around = sectors_around(dirs);
+      const int n = static_cast<int>(dirs.size());
+      for (int k = 0; k < n; ++k) {
+        const Ray& r = rays[j][around.order[k]];
+        const Boundary& b = bs[r.boundary];
+        if (b.left > 0 && b.right > 0) hair_junction = true;
+        const double after = around.sectors[k];
+        const double before = around.sectors[(k + n - 1) % n];
+        // Walking away from the start, `left` fills the sector before the ray;
+        // walking away from the end the sides swap.
+        const double alpha = r.at_start ? before : after;
+        const double beta = r.at_start ? after : before;
+        if (cusp[j]) continue;
+        const double term = junction_metric(alpha, beta);
+        BoundaryReport& rep = out.boundaries[r.boundary];
+        (r.at_start ? rep.cues.start : rep.cues.end) = {true, alpha, beta, n};
+        rep.phi_j += term;
+        (r.at_start ? rep.phi_j_start : rep.phi_j_end) = term;
+      }
+    }
+    // The same sectors seen from farther away (3 × the fit length): a tip
+    // stays narrow, a wedge cut by rasterised lines opens up.
+    for (int j = 0; j < nj; ++j) {
       if (cusp[j]) continue;
-      const double term = junction_metric(alpha, beta);
-      BoundaryReport& rep = out.boundaries[r.boundary];
-      (r.at_start ? rep.cues.start : rep.cues.end) = {true, alpha, beta, n};
-      rep.phi_j += term;
-      (r.at_start ? rep.phi_j_start : rep.phi_j_end) = term;
+      std::vector<Vec2> dirs;
+      for (const Ray& r : rays[j]) {
+        const Polyline& p = bs[r.boundary].points;
+        dirs.push_back(r.at_start ? leaving_direction(p, 3 * reach)
+                                  : leaving_direction(Polyline(p.rbegin(), p.rend()), 3 * reach));
+      }
+      const RaySectors around = sectors_around(dirs);
+      const int n = static_cast<int>(dirs.size());
+      for (int k = 0; k < n; ++k) {
+        const Ray& r = rays[j][around.order[k]];
+        const double after = around.sectors[k];
+        const double before = around.sectors[(k + n - 1) % n];
+        EndAngles& e = r.at_start ? out.boundaries[r.boundary].cues.start
+                                  : out.boundaries[r.boundary].cues.end;
+        e.wide_left = r.at_start ? before : after;
+        e.wide_right = r.at_start ? after : before;
+      }
     }
-  }
-  // The same sectors seen from farther away (3 × the fit length): a tip
-  // stays narrow, a wedge cut by rasterised lines opens up.
-  for (int j = 0; j < nj; ++j) {
-    if (cusp[j]) continue;
-    std::vector<Vec2> dirs;
-    for (const Ray& r : rays[j]) {
-      const Polyline& p = bs[r.boundary].points;
-      dirs.push_back(r.at_start ? leaving_direction(p, 3 * reach)
-                                : leaving_direction(Polyline(p.rbegin(), p.rend()), 3 * reach));
-    }
-    const RaySectors around = sectors_around(dirs);
-    const int n = static_cast<int>(dirs.size());
-    for (int k = 0; k < n; ++k) {
-      const Ray& r = rays[j][around.order[k]];
-      const double after = around.sectors[k];
-      const double before = around.sectors[(k + n - 1) % n];
-      EndAngles& e =
-          r.at_start ? out.boundaries[r.boundary].cues.start : out.boundaries[r.boundary].cues.end;
-      e.wide_left = r.at_start ? before : after;
-      e.wide_right = r.at_start ? after : before;
-    }
-  }
+  };
+  junction_cues();
   if (!hair_junction)
     throw Error("layering: no two hair regions meet at a junction (" + std::to_string(ids.size()) +
                 " regions, " + std::to_string(nj) +
                 " junctions); layering needs regions that meet where three or more do");
-  for (int i = 0; i < nb; ++i) {
-    const Boundary& b = bs[i];
-    BoundaryReport& rep = out.boundaries[i];
-    Polyline curve = b.points;
-    if (b.closed()) curve.push_back(curve.front());
-    const double chord2 = (curve.back() - curve.front()).squaredNorm();
-    // A boundary that nearly returns to where it started has no usable chord:
-    // its own size, length/π, stands in (a circle then scores π/4).
-    const double scale2 = std::max({chord2, std::pow(rep.length / std::numbers::pi, 2), 1.0});
-    rep.phi_r = overlap_metric(curve) / scale2;
-    rep.phi = options.junction_weight * rep.phi_j + rep.phi_r;
-  }
-  // Region areas (Green's theorem over each region's boundaries, walked with
-  // the region on their left) and perimeters, for the learned metric.
-  std::map<int, double> area, perimeter;
-  for (int i = 0; i < nb; ++i) {
-    const Polyline& p = bs[i].points;
-    double twice = 0.0;
-    for (std::size_t k = 0; k + 1 < p.size(); ++k)
-      twice += p[k].x() * p[k + 1].y() - p[k + 1].x() * p[k].y();
-    if (bs[i].closed() && p.size() > 1)
-      twice += p.back().x() * p.front().y() - p.front().x() * p.back().y();
-    area[bs[i].left] += 0.5 * twice;
-    area[bs[i].right] -= 0.5 * twice;
-    perimeter[bs[i].left] += out.boundaries[i].length;
-    perimeter[bs[i].right] += out.boundaries[i].length;
-  }
-  for (int i = 0; i < nb; ++i) {
-    BoundaryReport& rep = out.boundaries[i];
-    rep.cues.phi_r = rep.phi_r;
-    rep.cues.area_left = std::abs(area[bs[i].left]);
-    rep.cues.area_right = std::abs(area[bs[i].right]);
-    rep.cues.perimeter_left = perimeter[bs[i].left];
-    rep.cues.perimeter_right = perimeter[bs[i].right];
-    rep.features = boundary_features(rep.cues);
-    rep.learned = learned_metric(rep.features);
-  }
+  auto unary_cues = [&] {
+    for (int i = 0; i < nb; ++i) {
+      const Boundary& b = bs[i];
+      BoundaryReport& rep = out.boundaries[i];
+      Polyline curve = b.points;
+      if (b.closed()) curve.push_back(curve.front());
+      const double chord2 = (curve.back() - curve.front()).squaredNorm();
+      // A boundary that nearly returns to where it started has no usable chord:
+      // its own size, length/π, stands in (a circle then scores π/4).
+      const double scale2 = std::max({chord2, std::pow(rep.length / std::numbers::pi, 2), 1.0});
+      rep.phi_r = overlap_metric(curve) / scale2;
+      rep.phi = options.junction_weight * rep.phi_j + rep.phi_r;
+    }
+    // Region areas (Green's theorem over each region's boundaries, walked with
+    // the region on their left) and perimeters, for the learned metric.
+    std::map<int, double> area, perimeter;
+    for (int i = 0; i < nb; ++i) {
+      const Polyline& p = bs[i].points;
+      double twice = 0.0;
+      for (std::size_t k = 0; k + 1 < p.size(); ++k)
+        twice += p[k].x() * p[k + 1].y() - p[k + 1].x() * p[k].y();
+      if (bs[i].closed() && p.size() > 1)
+        twice += p.back().x() * p.front().y() - p.front().x() * p.back().y();
+      area[bs[i].left] += 0.5 * twice;
+      area[bs[i].right] -= 0.5 * twice;
+      perimeter[bs[i].left] += out.boundaries[i].length;
+      perimeter[bs[i].right] += out.boundaries[i].length;
+    }
+    for (int i = 0; i < nb; ++i) {
+      BoundaryReport& rep = out.boundaries[i];
+      rep.cues.phi_r = rep.phi_r;
+      rep.cues.area_left = std::abs(area[bs[i].left]);
+      rep.cues.area_right = std::abs(area[bs[i].right]);
+      rep.cues.perimeter_left = perimeter[bs[i].left];
+      rep.cues.perimeter_right = perimeter[bs[i].right];
+      rep.features = boundary_features(rep.cues);
+      rep.learned = learned_metric(rep.features);
+    }
+  };
+  unary_cues();
   // The same-depth model, with the drawing's typical colour step across its
   // hair boundaries as the yardstick of "same paint".
   std::vector<double> steps;
@@ -331,6 +344,24 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     e.end = rep.cues.end;
     rep.equal_features = equal_features(e);
     rep.equal = equal_metric(rep.equal_features);
+  }
+  // A drawn line between two halves of one strand ends on the strand's
+  // outline in what looks like a T-junction, but nothing is occluded there:
+  // like the ends of a non-occluding boundary (§4.1), the junctions of a
+  // same-depth boundary are cusps, and the cues are measured again.
+  if (options.learned_equal && options.metric == Metric::kLearned) {
+    bool more = false;
+    for (int i = 0; i < nb; ++i) {
+      const Boundary& b = bs[i];
+      if (b.closed() || b.left <= 0 || b.right <= 0) continue;
+      if (!out.boundaries[i].occluding || out.boundaries[i].equal <= 0) continue;
+      for (int j : {b.start, b.end})
+        if (!cusp[j]) cusp[j] = 1, more = true;
+    }
+    if (more) {
+      junction_cues();
+      unary_cues();
+    }
   }
 
   // --- Eq. (2): boundary states by one minimum cut (§4.5). ---

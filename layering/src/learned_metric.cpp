@@ -87,10 +87,21 @@ double equal_metric(const EqualFeatures& features) {
   return s;
 }
 
+LearnedTerms learned_terms(const BoundaryFeatures& f) {
+  LearnedTerms t{};
+  int k = 0;
+  for (double v : f) t[k++] = v;
+  for (int i = 0; i < kBoundaryFeatureCount; ++i)
+    for (int j = 0; j < kBoundaryFeatureCount; ++j)
+      if (i != j) t[k++] = f[i] * std::abs(f[j]);
+  return t;
+}
+
 double learned_metric(const BoundaryFeatures& features) {
-  const BoundaryFeatures& w = learned_weights();
+  const LearnedTerms& w = learned_weights();
+  const LearnedTerms t = learned_terms(features);
   double s = 0.0;
-  for (int i = 0; i < kBoundaryFeatureCount; ++i) s += w[i] * features[i];
+  for (int i = 0; i < kLearnedTermCount; ++i) s += w[i] * t[i];
   return s;
 }
 

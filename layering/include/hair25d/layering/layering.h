@@ -34,7 +34,7 @@ struct Options {
   Metric metric = Metric::kLearned;
   // The learned log-odds are multiplied by this before Eq. (2), which puts
   // them on the scale of Φ and of the coupling weights φ_ij.
-  double learned_scale = 0.25;
+  double learned_scale = 0.5;
   double junction_weight = 0.25;  // w in Eq. (1)
   // Cap of φ_ij = tan(|(θ mod π) − π/2|) in Eq. (2); θ near 0 or π would be infinite.
   double coupling_cap = 0.5;

@@ -39,11 +39,19 @@ using BoundaryFeatures = std::array<double, kBoundaryFeatureCount>;
 
 BoundaryFeatures boundary_features(const BoundaryCues& cues);
 
+// The model's terms: the features, then their products f_i · |f_j| (i ≠ j,
+// row by row), which let one cue's meaning depend on another's strength (a
+// tip counts where the other sector is not straight, Φ_R where the junctions
+// are silent) and still change sign with the features.
+inline constexpr int kLearnedTermCount = kBoundaryFeatureCount * kBoundaryFeatureCount;
+using LearnedTerms = std::array<double, kLearnedTermCount>;
+LearnedTerms learned_terms(const BoundaryFeatures& features);
+
 // The model's log-odds that the left region lies above the right one.
 double learned_metric(const BoundaryFeatures& features);
 
 // The weights in use (layering/src/learned_weights.cpp says how they were made).
-const BoundaryFeatures& learned_weights();
+const LearnedTerms& learned_weights();
 
 // Same depth or ordered? A second learned model, for occluding boundaries:
 // two halves of a forked strand, or two pieces of one strand meeting where
