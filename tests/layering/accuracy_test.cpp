@@ -52,11 +52,11 @@ Totals six_cases(const Options& options) {
 }
 
 // The learned metric was trained on generated drawings only: these six cases
-// are a validation it never saw. Measured 275/305 = 90.2%.
+// are a validation it never saw. Measured 277/305 = 90.8%.
 TEST(Accuracy, SixAnnotatedCases) {
   const Totals t = six_cases({});
   RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
-  EXPECT_GE(t.accuracy(), 0.89);
+  EXPECT_GE(t.accuracy(), 0.90);
 }
 
 // The paper's own Φ (Eq. 1) as the unary term. Measured 271/305 = 88.9%.
@@ -90,8 +90,40 @@ TEST(Accuracy, GeneratedCasesInSeveralStyles) {
   std::printf("  total %d/%d = %.1f%% (target %.0f%%)\n", t.correct, t.pairs, 100 * t.accuracy(),
               100 * kTarget);
   RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
-  // Measured 166/197 = 84.3% (the paper's Φ: 161/197 = 81.7%).
-  EXPECT_GE(t.accuracy(), 0.83);
+  // Measured 176/197 = 89.3% (the paper's Φ: 161/197 = 81.7%).
+  EXPECT_GE(t.accuracy(), 0.88);
+}
+
+// Forks whose dividing line fades out inside the strand (generator option
+// fading_forks): the halves are "equal" although most of their boundary is
+// on a drawn line. Measured 162/183 = 88.5%, 3 of the 8 equal pairs right.
+TEST(Accuracy, GeneratedFadingForks) {
+  Totals t;
+  int equal = 0, equal_right = 0;
+  for (int i = 0; i < 6; ++i) {
+    generator::Options o;
+    o.width = 640;
+    o.height = 480;
+    o.seed = 700 + i;
+    o.strand_count = 16;
+    o.shading = i % 2 ? generator::Shading::kTwoTone : generator::Shading::kScreentone;
+    o.line_width = i % 3 == 0 ? 1.5 : 2.5;
+    o.fading_forks = true;
+    o.strand_masks = false;
+    AnnotatedCase c = generator::generate_case(o);
+    c.name = "fork" + std::to_string(i);
+    const CaseScore s = evaluate_case(c);
+    add(t, s);
+    for (const PairOutcome& p : s.outcomes) {
+      equal += p.truth == Relation::kEqual;
+      equal_right += p.truth == Relation::kEqual && p.correct;
+    }
+  }
+  std::printf("  total %d/%d = %.1f%%; equal pairs right %d/%d\n", t.correct, t.pairs,
+              100 * t.accuracy(), equal_right, equal);
+  RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
+  EXPECT_GE(t.accuracy(), 0.87);
+  EXPECT_GE(equal_right, 3);
 }
 
 TEST(Accuracy, GeneratedOrderDoesNotDependOnRegionNumbers) {
