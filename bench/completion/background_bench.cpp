@@ -73,7 +73,23 @@ void BM_CompletionBackgroundOnly(benchmark::State& state) {
   state.counters["background_px"] = r.background_inpaint.filled;
 }
 
+// Strands inpainted, no background: BM_CompletionWithInpainting minus this
+// is what the background adds to the stage's wall time (it runs on a
+// second thread beside the strands).
+void BM_CompletionStrandsOnly(benchmark::State& state) {
+  const AnnotatedCase& c = bench::generated_case(static_cast<int>(state.range(0)));
+  const completion::Input in = bench::completion_input(c);
+  completion::Options o;
+  o.inpaint_background = false;
+  completion::Result r;
+  for (auto _ : state) {
+    r = completion::complete_strands(in, o);
+    benchmark::DoNotOptimize(r.strands.data());
+  }
+}
+
 BENCHMARK(BM_BackgroundFill)->Apply(bench::strand_counts);
+BENCHMARK(BM_CompletionStrandsOnly)->Apply(bench::strand_counts)->UseRealTime();
 BENCHMARK(BM_CompletionBackgroundOnly)->Apply(bench::strand_counts);
 BENCHMARK(BM_BackgroundFlatFillOnly)->Apply(bench::strand_counts);
 
