@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 #include "hair25d/core/error.h"
@@ -212,6 +213,13 @@ TEST(LayerRegions, RejectsBadOptions) {
   std::string why;
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_NE(why.find("equal_fraction"), std::string::npos);
+  for (double bad : {0.0, -3.0, std::numeric_limits<double>::infinity()}) {
+    o = {};
+    o.fit_reach_min = bad;
+    EXPECT_FALSE(o.is_valid(&why));
+    EXPECT_NE(why.find("fit_reach_min"), std::string::npos);
+    EXPECT_THROW(layer_regions(s.image, s.regions, o), Error);
+  }
   o = {};
   RegionRelation fix;
   fix.a = 2;
