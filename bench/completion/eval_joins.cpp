@@ -23,7 +23,8 @@ struct Total {
   int strands = 0;
 };
 
-void score(const AnnotatedCase& c, bool predicted, const std::string& name, Total* total) {
+void score(const AnnotatedCase& c, bool predicted, const completion::Options& options,
+           const std::string& name, Total* total) {
   completion::Input in;
   in.image = &c.image;
   in.regions = &c.regions;
@@ -37,10 +38,7 @@ void score(const AnnotatedCase& c, bool predicted, const std::string& name, Tota
   } else {
     in.relations = completion::test::relations_from_pairs(c);
   }
-  completion::Options o;
-  o.inpaint_strands = false;
-  o.inpaint_background = false;
-  const completion::Result r = completion::complete_strands(in, o);
+  const completion::Result r = completion::complete_strands(in, options);
   const completion::test::PairScore s = completion::test::score_pairs(c, r);
   const std::vector<double> ious = completion::test::strand_ious(c, r);
   double sum = 0.0;
@@ -74,6 +72,15 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000));
   app.add_option("--shading", shading, "flat, two-tone, gradient, screentone or mixed (cycles)")
       ->check(CLI::IsMember({"flat", "two-tone", "gradient", "screentone", "mixed"}));
+  completion::Options options;
+  options.inpaint_strands = false;  // colours are not scored
+  options.inpaint_background = false;
+  app.add_option("--max-join-cost", options.max_join_cost, "completion::Options::max_join_cost");
+  app.add_option("--max-join-angle", options.max_join_angle_deg,
+                 "completion::Options::max_join_angle_deg");
+  app.add_option("--tangent-arm", options.tangent_arm, "completion::Options::tangent_arm");
+  app.add_option("--min-join-coverage", options.min_join_coverage,
+                 "completion::Options::min_join_coverage");
   CLI11_PARSE(app, argc, argv);
   const bool predicted = relations == "predicted";
   Total total;
@@ -81,7 +88,7 @@ int main(int argc, char** argv) {
     if (!annotated.empty()) {
       for (const auto& folder : find_annotated_cases(annotated)) {
         const AnnotatedCase c = read_annotated_case(folder);
-        score(c, predicted, c.name, &total);
+        score(c, predicted, options, c.name, &total);
       }
     } else {
       const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
@@ -98,7 +105,8 @@ int main(int argc, char** argv) {
                     : shading == "gradient"   ? kinds[2]
                     : shading == "screentone" ? kinds[3]
                                               : kinds[0];
-        score(generator::generate_case(g), predicted, "seed " + std::to_string(seed + k), &total);
+        score(generator::generate_case(g), predicted, options, "seed " + std::to_string(seed + k),
+              &total);
       }
     }
   } catch (const std::exception& e) {
