@@ -79,6 +79,7 @@ int main(int argc, char** argv) {
   app.add_option("--max-join-angle", options.max_join_angle_deg,
                  "completion::Options::max_join_angle_deg");
   app.add_option("--tangent-arm", options.tangent_arm, "completion::Options::tangent_arm");
+  app.add_flag("!--no-face-joins", options.face_joins, "no joins across the face");
   app.add_option("--min-join-coverage", options.min_join_coverage,
                  "completion::Options::min_join_coverage");
   CLI11_PARSE(app, argc, argv);

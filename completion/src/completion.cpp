@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "context.h"
+#include "face_joins.h"
 #include "hair25d/core/error.h"
 #include "raster.h"
 #include "strand_assembly.h"
@@ -179,6 +180,26 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     reports[rb].joined_region = a.region;
     if (j.patch.size() >= 3) pieces.areas.push_back({a.region, j.patch, false, ra});
     for (const Polyline& band : j.bands) pieces.areas.push_back({a.region, band, false, ra});
+    ++result.joins;
+  }
+  // The face hides the back hair as a strand does, but it is no region:
+  // back-hair pieces on opposite sides of it are joined across it.
+  const detail::Face face = options.face_joins ? detail::find_face(ctx) : detail::Face{};
+  std::set<int> front;
+  for (const auto& [id, ups] : ctx.above)
+    for (int up : ups) front.insert(strands.find(up));
+  for (const auto& [id, info] : ctx.regions)
+    if (front.count(strands.find(id))) front.insert(id);
+  for (const detail::FaceJoin& j : detail::face_join_candidates(ctx, face, front)) {
+    if (!try_join(j.region_a, j.region_b)) continue;
+    EdgeReport ra, rb;
+    ra.region = j.region_a, ra.p = j.pa, ra.q = j.qa, ra.joined_region = j.region_b;
+    rb.region = j.region_b, rb.p = j.pb, rb.q = j.qb, rb.joined_region = j.region_a;
+    ra.completion = rb.completion = EdgeCase::kJoined;
+    reports.push_back(ra);
+    reports.push_back(rb);
+    pieces.areas.push_back(
+        {j.region_a, j.patch, false, static_cast<int>(reports.size()) - 2, &face.mask});
     ++result.joins;
   }
   int done = 0;

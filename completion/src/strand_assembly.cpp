@@ -63,7 +63,10 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
     for (int y = 0; y < box.height; ++y)
       for (int x = 0; x < box.width; ++x) {
         if (!area.at<std::uint8_t>(y, x) || mask.at<std::uint8_t>(y, x) == 1) continue;
-        if (!occluded_by_any(ctx, ctx.labels.at(x + box.x, y + box.y), members)) continue;
+        const bool behind_face =
+            a->face != nullptr && a->face->at<std::uint8_t>(y + box.y, x + box.x) != 0;
+        if (!behind_face && !occluded_by_any(ctx, ctx.labels.at(x + box.x, y + box.y), members))
+          continue;
         if (mask.at<std::uint8_t>(y, x) == 0) ++added;
         mask.at<std::uint8_t>(y, x) = 2;
         if (a->root) root_sum += Vec2(x + box.x + 0.5, y + box.y + 0.5), ++root_count;

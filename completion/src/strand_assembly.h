@@ -13,6 +13,8 @@ struct PieceArea {
   Polyline polygon;   // closed, image pixels
   bool root = false;  // a completed root (case 2)
   int edge = -1;      // index into the edge reports
+  // Behind the face (face_joins.h): the area also counts over these pixels.
+  const cv::Mat* face = nullptr;
 };
 
 struct StrandPieces {

@@ -36,6 +36,9 @@ struct Options {
   double min_join_coverage = 0.85;    // share of the join patch under occluders
   double min_width_ratio = 0.2;       // narrower / wider occluding edge
   double max_join_cost = 2.4;
+  // Back-hair pieces on opposite sides of the face joined across it (the
+  // face hides them as a strand would; it is no region).
+  bool face_joins = true;
 
   // Cases 2 and 3 (§5.2–5.4).
   ContourOptions contour;

@@ -1,0 +1,41 @@
+// Joins across the face (private): the face is no hair region, yet it hides
+// the back hair behind it just as a strand does. Back-hair pieces seen on
+// opposite sides of the face are joined like case-1 pieces of §5.1.
+#pragma once
+
+#include <set>
+#include <vector>
+
+#include "context.h"
+
+namespace hair25d::completion::detail {
+
+// The face: the connected non-hair, non-ink area around the head centre,
+// with its drawn outline, clipped to a disc around the head (an open line
+// lets it leak into the neck or the paper). Empty when none is found.
+struct Face {
+  cv::Mat mask;  // CV_8U, image size, 1 = face
+  int pixels = 0;
+  Vec2 centroid{0, 0};
+};
+Face find_face(const Context& ctx);
+
+// A pair of back-hair pieces joined across the face: cost (lower is surer)
+// and the completed area (the face between their bordering outlines).
+struct FaceJoin {
+  int region_a = 0, region_b = 0;
+  Vec2 pa{0, 0}, qa{0, 0}, pb{0, 0}, qb{0, 0};  // ends of the outlines along the face
+  double cost = 0.0;
+  Polyline patch;  // closed polygon; it counts only over the face and occluders
+};
+
+// Candidates, cheapest first. A piece qualifies when it is above no other
+// region (back hair, not bangs lying on the face) and its outline runs along
+// the face with the face bulging into it (the face occludes it; a bang's tip
+// lying on the face is convex instead).
+// `front` holds the regions that are no back hair: above some region, or one
+// strand with such a region (related `equal` or joined).
+std::vector<FaceJoin> face_join_candidates(const Context& ctx, const Face& face,
+                                           const std::set<int>& front);
+
+}  // namespace hair25d::completion::detail
