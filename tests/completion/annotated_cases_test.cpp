@@ -48,10 +48,11 @@ TEST(AnnotatedCases, JoinsMatchTheAnnotatedStrands) {
   }
   std::printf("all: precision %.3f recall %.3f, mean strand IoU %.3f\n", total.precision(),
               total.recall(), iou_sum / std::max(1, iou_count));
-  // Floors at the measured level (see docs/completion.md for the targets).
-  EXPECT_GE(total.precision(), 0.96);
-  EXPECT_GE(total.recall(), 0.80);
-  EXPECT_GE(iou_sum / iou_count, 0.69);
+  // Floors just under the measured level (0.982 / 0.931 / 0.737 with the
+  // joins across the face; see docs/completion.md for the targets).
+  EXPECT_GE(total.precision(), 0.975);
+  EXPECT_GE(total.recall(), 0.92);
+  EXPECT_GE(iou_sum / iou_count, 0.73);
 }
 
 }  // namespace
