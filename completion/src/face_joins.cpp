@@ -20,7 +20,7 @@ constexpr double kMinCover = 0.85;
 constexpr double kMinFaceShare = 0.02;
 
 // Least mean depth of a back-hair piece behind its run, in face radii.
-constexpr double kMinDepth = 0.25;
+constexpr double kMinDepth = 0.3;
 // RGB distance from the skin around the head centre of a piece of skin cut
 // off by strands lying on the face.
 constexpr double kMaxSkinDistance = 30.0;

@@ -80,37 +80,44 @@ TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
 // flat and cel-shaded drawings, four seeds each. Floors at the measured
 // level (docs/completion.md); the targets (precision 0.95, recall 0.85) are
 // not met on these crowded drawings.
+// With joins across the face the generated drawings lose precision (0.780
+// -> 0.696): their side and under strands lie along the face, above nothing,
+// in the back hair's colour, and are joined to it; both are checked.
 TEST(GeneratedCases, JoinsMatchTheGeneratedStrands) {
-  test::PairScore total;
-  for (generator::Shading shading : {generator::Shading::kFlat, generator::Shading::kTwoTone})
-    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-      generator::Options g;
-      g.width = 800;
-      g.height = 640;
-      g.strand_count = 20;
-      g.seed = seed;
-      g.shading = shading;
-      g.strand_masks = false;
-      const AnnotatedCase c = generator::generate_case(g);
-      Input in;
-      in.image = &c.image;
-      in.regions = &c.regions;
-      in.relations = test::relations_from_pairs(c);
-      in.head_center = c.head_center;
-      Options o;
-      o.inpaint_strands = false;
-      o.inpaint_background = false;
-      const test::PairScore s = test::score_pairs(c, complete_strands(in, o));
-      total.predicted += s.predicted;
-      total.truth += s.truth;
-      total.correct += s.correct;
-    }
-  std::printf(
-      "generated (flat and two-tone, seeds 1-4): pairs predicted %d, true %d, correct %d: "
-      "precision %.3f recall %.3f\n",
-      total.predicted, total.truth, total.correct, total.precision(), total.recall());
-  EXPECT_GE(total.precision(), 0.75);
-  EXPECT_GE(total.recall(), 0.45);
+  for (const bool face_joins : {false, true}) {
+    test::PairScore total;
+    for (generator::Shading shading : {generator::Shading::kFlat, generator::Shading::kTwoTone})
+      for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        generator::Options g;
+        g.width = 800;
+        g.height = 640;
+        g.strand_count = 20;
+        g.seed = seed;
+        g.shading = shading;
+        g.strand_masks = false;
+        const AnnotatedCase c = generator::generate_case(g);
+        Input in;
+        in.image = &c.image;
+        in.regions = &c.regions;
+        in.relations = test::relations_from_pairs(c);
+        in.head_center = c.head_center;
+        Options o;
+        o.face_joins = face_joins;
+        o.inpaint_strands = false;
+        o.inpaint_background = false;
+        const test::PairScore s = test::score_pairs(c, complete_strands(in, o));
+        total.predicted += s.predicted;
+        total.truth += s.truth;
+        total.correct += s.correct;
+      }
+    std::printf(
+        "generated (flat and two-tone, seeds 1-4, face joins %s): pairs predicted %d, true %d, "
+        "correct %d: precision %.3f recall %.3f\n",
+        face_joins ? "on" : "off", total.predicted, total.truth, total.correct, total.precision(),
+        total.recall());
+    EXPECT_GE(total.precision(), face_joins ? 0.68 : 0.75);
+    EXPECT_GE(total.recall(), 0.45);
+  }
 }
 
 }  // namespace
