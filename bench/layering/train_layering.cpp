@@ -4,7 +4,7 @@
 // Newton's method with a small ridge. Deterministic: the same seed gives the
 // same weights, printed as the C++ initializer of learned_weights.cpp.
 //
-//   train_layering --cases 200 --seed 20000
+//   train_layering --cases 400 --seed 20000
 #include <CLI/CLI.hpp>
 #include <Eigen/Dense>
 #include <cmath>
@@ -80,7 +80,7 @@ Eigen::VectorXd fit(const std::vector<Sample>& samples, double ridge) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Train the learned layering metric on generated drawings"};
-  int cases = 200;
+  int cases = 400;
   std::uint64_t seed = 20000;
   double ridge = 1.0;
   bool length_weighted = false;
