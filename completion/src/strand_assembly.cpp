@@ -91,6 +91,15 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
   s.texture = Image(box.width, box.height);
   LabelMap fill(box.width, box.height), source(box.width, box.height);
   const int line_reach = o.occluder_reach + o.outline_reach;
+  // A strand completed behind the face: the face's outline along it is an
+  // occluder's line too, not the strand's texture.
+  const cv::Mat* face = nullptr;
+  for (const PieceArea* a : areas)
+    if (a->face != nullptr) face = a->face;
+  auto on_face = [&](int x, int y) {
+    return face != nullptr && x >= 0 && y >= 0 && x < face->cols && y < face->rows &&
+           face->at<std::uint8_t>(y, x) != 0;
+  };
   for (int y = 0; y < box.height; ++y)
     for (int x = 0; x < box.width; ++x) {
       const int m = mask.at<std::uint8_t>(y, x);
@@ -107,7 +116,8 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
         if (ctx.original->at(gx, gy) == 0) {
           for (int dy = -line_reach; dy <= line_reach && !occluder_line; ++dy)
             for (int dx = -line_reach; dx <= line_reach; ++dx)
-              if (occluded_by_any(ctx, ctx.label(gx + dx, gy + dy), members)) {
+              if (occluded_by_any(ctx, ctx.label(gx + dx, gy + dy), members) ||
+                  on_face(gx + dx, gy + dy)) {
                 occluder_line = true;
                 break;
               }
