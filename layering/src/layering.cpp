@@ -130,7 +130,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   // --- Occluding boundaries: on a drawn line (§4.1). ---
   report(progress, "layering", 0.2, "line response");
   // Lines are measured only around the hair: the box of all non-background
-  // boundaries, grown by the farthest sample (paper search + smoothing).
+  // boundaries, grown by the farthest sample and the smoothing kernels, so
+  // that every measurement is the one on the whole image.
   int bx0 = image.width(), by0 = image.height(), bx1 = 0, by1 = 0;
   for (const Boundary& b : bs) {
     if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
@@ -141,7 +142,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       by1 = std::max(by1, static_cast<int>(p.y()));
     }
   }
-  const int margin = static_cast<int>(std::ceil(4.0 * out.line_width)) + 8;
+  const int margin = detail::LineResponse::window_margin(out.line_width);
   const detail::LineResponse lines(image, out.line_width, bx0 - margin, by0 - margin, bx1 + margin,
                                    by1 + margin);
   std::set<std::pair<int, int>> fixed_equal;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <future>
 #include <opencv2/core.hpp>
@@ -14,19 +15,39 @@ namespace {
 
 constexpr int kOutside = -2147483647;
 
+// Transparent pixels read as white paper.
+inline float grey_value(const Rgba& p) {
+  const double a = p.a / 255.0;
+  const double lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
+  return static_cast<float>(a * lum + (1.0 - a) * 255.0);
+}
+
+inline cv::Vec3f colour_value(const Rgba& p) {
+  if (p.a == 255) return cv::Vec3f(p.r, p.g, p.b);  // the common case, where the blend is exact
+  const float a = p.a / 255.0f;
+  return cv::Vec3f(a * p.r + (1 - a) * 255.0f, a * p.g + (1 - a) * 255.0f,
+                   a * p.b + (1 - a) * 255.0f);
+}
+
+// Fills `grey` (window-sized) in `r` from the window at (x0, y0) of `image`.
+void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& grey) {
+  for (int y = r.y; y < r.y + r.height; ++y) {
+    float* row = grey.ptr<float>(y);
+    for (int x = r.x; x < r.x + r.width; ++x) row[x] = grey_value(image.at(x0 + x, y0 + y));
+  }
+}
+
+void colour_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& rgb) {
+  for (int y = r.y; y < r.y + r.height; ++y) {
+    auto* row = rgb.ptr<cv::Vec3f>(y);
+    for (int x = r.x; x < r.x + r.width; ++x) row[x] = colour_value(image.at(x0 + x, y0 + y));
+  }
+}
+
 // Grey levels of the window [x0, x0 + w) × [y0, y0 + h) of `image`.
 cv::Mat grey_of(const Image& image, int x0, int y0, int w, int h) {
   cv::Mat grey(h, w, CV_32F);
-  for (int y = 0; y < h; ++y) {
-    float* row = grey.ptr<float>(y);
-    for (int x = 0; x < w; ++x) {
-      const Rgba& p = image.at(x0 + x, y0 + y);
-      // Transparent pixels read as white paper.
-      const double a = p.a / 255.0;
-      const double lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
-      row[x] = static_cast<float>(a * lum + (1.0 - a) * 255.0);
-    }
-  }
+  grey_into(image, x0, y0, cv::Rect(0, 0, w, h), grey);
   return grey;
 }
 
@@ -37,7 +58,32 @@ double median_of(std::vector<double>& v) {
   return *mid;
 }
 
+// How far from a boundary point measure() looks (pixels): for the line
+// centre, for paper, and for paint on each side.
+struct Reach {
+  double half, paper, paint_near, paint_far;
+};
+Reach reach_of(double line_width) {
+  return {0.5 * line_width + 1.0, 3.0 * line_width + 2.0, line_width + 2.0, 2.5 * line_width + 3.0};
+}
+
+double grey_sigma(double line_width) { return std::max(0.6, 0.25 * line_width); }
+double colour_sigma(double line_width) { return std::max(1.0, 0.5 * line_width); }
+// At least the radius of the kernel cv::GaussianBlur makes for a float image
+// (size round(8σ + 1) | 1).
+int kernel_radius(double sigma) { return static_cast<int>(std::ceil(4.0 * sigma)) + 1; }
+
 }  // namespace
+
+int LineResponse::window_margin(double line_width) {
+  const double lw = std::max(1.0, line_width);
+  const Reach reach = reach_of(lw);
+  // A sample reads pixels up to 2 beyond its point (bilinear footprint,
+  // pixel centres), and a smoothed pixel reads the kernel's radius around it.
+  const double grey = std::max(reach.half, reach.paper) + 2.0 + kernel_radius(grey_sigma(lw));
+  const double colour = reach.paint_far + 2.0 + kernel_radius(colour_sigma(lw));
+  return static_cast<int>(std::ceil(std::max(grey, colour)));
+}
 
 LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0, int x1, int y1)
     : line_width_(std::max(1.0, line_width)) {
@@ -45,53 +91,52 @@ LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0
   y0_ = std::clamp(y0, 0, std::max(0, image.height() - 1));
   w_ = std::clamp(x1, x0_ + 1, image.width()) - x0_;
   h_ = std::clamp(y1, y0_ + 1, image.height()) - y0_;
+  const std::size_t n = static_cast<std::size_t>(w_) * h_;
+  grey_ = std::make_unique_for_overwrite<float[]>(n);
+  colour_ = std::make_unique_for_overwrite<Rgb3f[]>(n);
+  static_assert(sizeof(Rgb3f) == sizeof(cv::Vec3f));
   try {
-    // The colours need nothing from the grey levels: they are made on a
-    // second core meanwhile (each path writes only its own members).
-    auto colours = std::async(std::launch::async | std::launch::deferred, [&] {
-      // Colours for the paint on each side: smoothed at half a line width so
-      // screentone dots and JPEG blocks average to their tone.
-      cv::Mat rgb(h_, w_, CV_32FC3);
-      for (int y = 0; y < h_; ++y) {
-        auto* row = rgb.ptr<cv::Vec3f>(y);
-        for (int x = 0; x < w_; ++x) {
-          const Rgba& p = image.at(x0_ + x, y0_ + y);
-          if (p.a == 255) {  // the common case, where the blend below is exact
-            row[x] = cv::Vec3f(p.r, p.g, p.b);
-            continue;
-          }
-          const float a = p.a / 255.0f;
-          row[x] = cv::Vec3f(a * p.r + (1 - a) * 255.0f, a * p.g + (1 - a) * 255.0f,
-                             a * p.b + (1 - a) * 255.0f);
-        }
-      }
-      const double colour_sigma = std::max(1.0, 0.5 * line_width_);
-      cv::GaussianBlur(rgb, rgb, cv::Size(0, 0), colour_sigma, colour_sigma, cv::BORDER_REPLICATE);
-      colour_.resize(static_cast<std::size_t>(w_) * h_);
-      for (int y = 0; y < h_; ++y) {
-        const auto* row = rgb.ptr<cv::Vec3f>(y);
-        static_assert(sizeof(Rgb3f) == sizeof(cv::Vec3f));
-        std::memcpy(&colour_[static_cast<std::size_t>(y) * w_], row, sizeof(Rgb3f) * w_);
-      }
-    });
+    cv::Mat smooth(h_, w_, CV_32F, grey_.get());
+    cv::Mat smooth_rgb(h_, w_, CV_32FC3, colour_.get());
+    // Colours for the paint on each side: smoothed at half a line width so
+    // screentone dots and JPEG blocks average to their tone. They need
+    // nothing from the grey levels: they are made on a second core meanwhile
+    // (each path writes only its own members and locals).
+    cv::Mat rgb(h_, w_, CV_32FC3);
+    auto colours = std::async(std::launch::async | std::launch::deferred,
+                              [&] { colour_into(image, x0_, y0_, cv::Rect(0, 0, w_, h_), rgb); });
     cv::Mat grey = grey_of(image, x0_, y0_, w_, h_);
     // Noise: MAD of a 3x3 Laplacian on the raw grey image, over pixels where
     // it is small (flat areas), scaled for a Gaussian.
     cv::Mat lap;
     cv::Laplacian(grey, lap, CV_32F, 1);
     std::vector<double> mags;
-    mags.reserve(static_cast<std::size_t>(w_) * h_ / 16 + 1);
+    mags.reserve(n / 16 + 1);
     for (int y = 0; y < h_; y += 4)
       for (int x = 0; x < w_; x += 4) mags.push_back(std::abs(lap.at<float>(y, x)));
     // A 4-neighbour Laplacian of i.i.d. noise has σ·√20.
     noise_sigma_ = median_of(mags) * 1.4826 / std::sqrt(20.0);
+    colours.get();
+    // The colour blur (three channels, twice the grey's sigma) costs about
+    // three grey blurs: its top rows are smoothed on a second core while
+    // this one smooths the grey levels and the colours' bottom rows. Bands
+    // of whole rows read the rows around them as one call over the window
+    // would (only the window's own edges are replicated), so the values are
+    // the same.
+    const double cs = colour_sigma(line_width_);
+    const int split = h_ * 3 / 5;
+    auto blur_rows = [&](int r0, int r1) {
+      if (r1 <= r0) return;
+      cv::Mat dst = smooth_rgb.rowRange(r0, r1);
+      cv::GaussianBlur(rgb.rowRange(r0, r1), dst, cv::Size(0, 0), cs, cs, cv::BORDER_REPLICATE);
+    };
+    auto top = std::async(std::launch::async | std::launch::deferred, [&] { blur_rows(0, split); });
     // Smooth at about a quarter line width: tones (screentone dots, JPEG
     // ringing) average out while a line keeps most of its depth.
-    const double sigma = std::max(0.6, 0.25 * line_width_);
-    cv::Mat smooth;
+    const double sigma = grey_sigma(line_width_);
     cv::GaussianBlur(grey, smooth, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
-    grey_.assign(smooth.ptr<float>(), smooth.ptr<float>() + smooth.total());  // continuous
-    colours.get();
+    blur_rows(split, h_);
+    top.get();
   } catch (const cv::Exception& e) {
     throw Error(std::string("layering: OpenCV failed while measuring lines: ") + e.what());
   }
@@ -128,8 +173,9 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
   const double total = polyline_length(curve);
   // Near short boundaries keep at least the middle third.
   skip = std::min(skip, total / 3.0);
-  const double half = 0.5 * line_width_ + 1.0;   // search for the line centre
-  const double reach = 3.0 * line_width_ + 2.0;  // search for paper
+  const Reach r = reach_of(line_width_);  // smooth_tiles() must cover it
+  const double half = r.half;             // search for the line centre
+  const double reach = r.paper;           // search for paper
   const int span = std::max(2, static_cast<int>(std::lround(line_width_)));
   auto label_at = [&](const Vec2& q) {
     const int x = static_cast<int>(std::floor(q.x())), y = static_cast<int>(std::floor(q.y()));
@@ -140,8 +186,8 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
   // Paint is sampled past the line, its anti-aliased rim and the colour
   // smoothing (the boundary may sit half a pixel off the line's centre), and
   // before the next line of a thin strand.
-  const double paint_near = line_width_ + 2.0;
-  const double paint_far = 2.5 * line_width_ + 3.0;
+  const double paint_near = r.paint_near;
+  const double paint_far = r.paint_far;
   double along = 0.0;
   // Every other point is plenty for a median, except on short boundaries.
   const int stride = n > 40 ? 2 : 1;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "hair25d/core/geometry.h"
@@ -30,6 +31,11 @@ class LineResponse {
   // the window [x0, x1) × [y0, y1) only (clipped to the image): the part that
   // holds the boundaries, with a margin. Samples outside it are clamped.
   LineResponse(const Image& image, double line_width, int x0, int y0, int x1, int y1);
+
+  // How far the window must reach beyond the boundaries measured for their
+  // measurements to be those on the whole image: the farthest sample, its
+  // pixel footprint and the smoothing kernels' radius.
+  static int window_margin(double line_width);
 
   // Median over samples along `curve` (pixel corners) of
   // min(paper left, paper right) − darkest point of the line's cross-section,
@@ -61,8 +67,9 @@ class LineResponse {
   int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
   double line_width_ = 1.0;
   double noise_sigma_ = 0.0;
-  std::vector<float> grey_;
-  std::vector<Rgb3f> colour_;  // smoothed RGB of the window
+  // w_ × h_, row-major.
+  std::unique_ptr<float[]> grey_;
+  std::unique_ptr<Rgb3f[]> colour_;  // smoothed RGB of the window
 };
 
 }  // namespace hair25d::layering::detail
