@@ -30,17 +30,40 @@ inline cv::Vec3f colour_value(const Rgba& p) {
 }
 
 // Fills `grey` (window-sized) in `r` from the window at (x0, y0) of `image`.
+// Rows are made as if opaque (a = 1 leaves lum unchanged, exactly) and only
+// redone pixel by pixel when some alpha is not 255.
 void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& grey) {
   for (int y = r.y; y < r.y + r.height; ++y) {
-    float* row = grey.ptr<float>(y);
-    for (int x = r.x; x < r.x + r.width; ++x) row[x] = grey_value(image.at(x0 + x, y0 + y));
+    float* row = grey.ptr<float>(y) + r.x;
+    const Rgba* src = image.data() + static_cast<std::size_t>(y0 + y) * image.width() + x0 + r.x;
+    unsigned alpha = 255;
+    for (int x = 0; x < r.width; ++x) {
+      const Rgba p = src[x];
+      row[x] = static_cast<float>(0.299 * p.r + 0.587 * p.g + 0.114 * p.b);
+      alpha &= p.a;
+    }
+    if (alpha != 255)
+      for (int x = 0; x < r.width; ++x)
+        if (src[x].a != 255) row[x] = grey_value(src[x]);
   }
 }
 
 void colour_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& rgb) {
   for (int y = r.y; y < r.y + r.height; ++y) {
-    auto* row = rgb.ptr<cv::Vec3f>(y);
-    for (int x = r.x; x < r.x + r.width; ++x) row[x] = colour_value(image.at(x0 + x, y0 + y));
+    auto* row = rgb.ptr<cv::Vec3f>(y) + r.x;
+    float* out = reinterpret_cast<float*>(row);
+    const Rgba* src = image.data() + static_cast<std::size_t>(y0 + y) * image.width() + x0 + r.x;
+    unsigned alpha = 255;
+    for (int x = 0; x < r.width; ++x) {
+      const Rgba p = src[x];
+      out[3 * x] = p.r;
+      out[3 * x + 1] = p.g;
+      out[3 * x + 2] = p.b;
+      alpha &= p.a;
+    }
+    if (alpha != 255)
+      for (int x = 0; x < r.width; ++x)
+        if (src[x].a != 255) row[x] = colour_value(src[x]);
   }
 }
 
