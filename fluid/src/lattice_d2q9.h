@@ -18,7 +18,7 @@
 // the baseline, and the loader picks the best the CPU runs: same binary everywhere. AVX2 has
 // twice the baseline's vector width; AVX-512 (still 256-bit vectors, GCC's default tuning)
 // brings 32 vector registers, which the 9 populations and their moments need: the in-cache
-// kernel ran 1.8x faster than the AVX2 one on this machine (docs/fluid.md). A build can
+// kernel ran about 1.7x faster than the AVX2 one on this machine (docs/fluid.md). A build can
 // define HAIR25D_FLUID_CLONES empty to compile one path only (e.g. to test the baseline).
 #if !defined(HAIR25D_FLUID_CLONES) && defined(__x86_64__) && defined(__GNUC__) && \
     !defined(__clang__)

@@ -34,7 +34,8 @@ enum class Stores {
 };
 
 // kAuto switches to streaming stores above this many bytes of populations: the 32 MiB L3 of
-// this machine's core complex (measured crossover: see docs/fluid.md).
+// the development machine. A lattice that fits keeps its lines in cache from one step to the
+// next, and streaming stores would evict them (docs/fluid.md: in cache they cost 60%).
 inline constexpr double kStreamingStoresAbove = 32.0 * 1024 * 1024;
 
 enum class SideKind {
