@@ -45,11 +45,23 @@ Relation relation_of_sign(double s) { return s >= 0 ? Relation::kAbove : Relatio
 std::vector<int> distinct_labels(const LabelMap& map) {
   std::set<int> seen;
   int last = 0;
-  for (std::size_t i = 0; i < map.size(); ++i) {
-    const int v = map.data()[i];
-    if (v == last) continue;
-    last = v;
-    if (v != 0) seen.insert(v);
+  const int* data = map.data();
+  const std::size_t n = map.size();
+  constexpr std::size_t kBlock = 16;
+  for (std::size_t i = 0; i < n;) {
+    // Runs of one label are long: skip whole blocks equal to the last label
+    // (the OR of XORs vectorises), then look at pixels one by one.
+    for (; i + kBlock <= n; i += kBlock) {
+      int differs = 0;
+      for (std::size_t k = 0; k < kBlock; ++k) differs |= data[i + k] ^ last;
+      if (differs != 0) break;
+    }
+    for (const std::size_t end = std::min(n, i + kBlock); i < end; ++i) {
+      const int v = data[i];
+      if (v == last) continue;
+      last = v;
+      if (v != 0) seen.insert(v);
+    }
   }
   return {seen.begin(), seen.end()};
 }
