@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include "hair25d/core/error.h"
 #include "raster_scan.h"
@@ -180,6 +181,7 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   };
 
   Bits visited(grid.edge_count());
+  const std::size_t edge_limit = grid.edge_count();
   auto trace = [&](int x0, int y0, int d0) {
     Boundary b;
     grid.sides(x0, y0, d0, &b.left, &b.right);
@@ -198,6 +200,13 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
       }
       d = continue_direction(grid.around(x, y), d);
       if (x == x0 && y == y0 && visited.test(grid.edge_index(x, y, d))) break;  // closed loop
+      // Each edge is walked once, so a chain is never longer than the grid
+      // has edges: a guard that turns a broken invariant into an error
+      // instead of a vector growing until memory runs out.
+      if (b.points.size() > edge_limit)
+        throw Error("layering: boundary trace from corner (" + std::to_string(x0) + ", " +
+                    std::to_string(y0) + ") exceeded " + std::to_string(edge_limit) +
+                    " edges without closing; the crack-grid walk is inconsistent");
       b.points.emplace_back(x, y);
     }
     const int id = static_cast<int>(graph.boundaries.size());
