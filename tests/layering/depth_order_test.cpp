@@ -24,9 +24,15 @@ RegionRelation rel(int a, int b, Relation r, double score) {
 void expect_consistent(const DepthOrder& o) {
   for (const RegionRelation& r : o.relations) {
     const int da = o.depth.at(r.a), db = o.depth.at(r.b);
-    if (r.relation == Relation::kAbove) EXPECT_GT(da, db) << r.a << " above " << r.b;
-    if (r.relation == Relation::kBelow) EXPECT_LT(da, db) << r.a << " below " << r.b;
-    if (r.relation == Relation::kEqual) EXPECT_EQ(da, db) << r.a << " equal " << r.b;
+    if (r.relation == Relation::kAbove) {
+      EXPECT_GT(da, db) << r.a << " above " << r.b;
+    }
+    if (r.relation == Relation::kBelow) {
+      EXPECT_LT(da, db) << r.a << " below " << r.b;
+    }
+    if (r.relation == Relation::kEqual) {
+      EXPECT_EQ(da, db) << r.a << " equal " << r.b;
+    }
   }
 }
 
