@@ -25,18 +25,14 @@ struct Total {
 
 void score(const AnnotatedCase& c, bool predicted, const completion::Options& options,
            const std::string& name, Total* total) {
-  completion::Input in;
-  in.image = &c.image;
-  in.regions = &c.regions;
-  in.head_center = c.head_center;
+  completion::Input in = completion::test::input_from_case(c);
   if (predicted) {
+    in.relations.clear();  // a failed layering leaves no relations, not the annotation's
     try {
       in.relations = layering::layer_regions(c.image, c.regions).relations;
     } catch (const std::exception& e) {
       std::printf("%s: layering failed (%s); no relations\n", name.c_str(), e.what());
     }
-  } else {
-    in.relations = completion::test::relations_from_pairs(c);
   }
   const completion::Result r = completion::complete_strands(in, options);
   const completion::test::PairScore s = completion::test::score_pairs(c, r);

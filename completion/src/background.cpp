@@ -118,10 +118,7 @@ BackgroundResult fill_background(const Image& image, const LabelMap& hole,
                                  const BackgroundOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw Error(why);
-  if (hole.width() != image.width() || hole.height() != image.height())
-    throw Error("completion::fill_background: hole mask is " + std::to_string(hole.width()) + "x" +
-                std::to_string(hole.height()) + ", the image " + std::to_string(image.width()) +
-                "x" + std::to_string(image.height()) + "; they must be the same size");
+  detail::require_image_size("completion::fill_background", "hole mask is", hole, image);
   BackgroundResult result;
   result.image = image;
   const int w = image.width(), h = image.height();

@@ -35,14 +35,8 @@ void check_input(const Input& input, const Options& options) {
     throw Error("completion::complete_strands: no image; an image is required");
   if (input.regions == nullptr || input.regions->empty())
     throw Error("completion::complete_strands: no region map; a region map is required");
-  if (input.image->width() != input.regions->width() ||
-      input.image->height() != input.regions->height()) {
-    throw Error("completion::complete_strands: regions are " +
-                std::to_string(input.regions->width()) + "x" +
-                std::to_string(input.regions->height()) + ", the image " +
-                std::to_string(input.image->width()) + "x" + std::to_string(input.image->height()) +
-                "; they must be the same size");
-  }
+  detail::require_image_size("completion::complete_strands", "regions are", *input.regions,
+                             *input.image);
   if (input.head_center &&
       (!std::isfinite(input.head_center->x()) || !std::isfinite(input.head_center->y())))
     throw Error("completion::complete_strands: head_center is not finite");

@@ -9,6 +9,7 @@
 
 #include "hair25d/core/error.h"
 #include "inpaint_internal.h"
+#include "raster.h"
 
 namespace hair25d::completion {
 
@@ -316,15 +317,10 @@ void check_inputs(const Image& image, const LabelMap& fill, const LabelMap& sour
                   const InpaintOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw Error(why);
-  if (fill.width() != image.width() || fill.height() != image.height())
-    throw Error("completion::inpaint_exemplar: fill mask is " + std::to_string(fill.width()) + "x" +
-                std::to_string(fill.height()) + ", the image " + std::to_string(image.width()) +
-                "x" + std::to_string(image.height()) + "; they must be the same size");
-  if (!source.empty() && (source.width() != image.width() || source.height() != image.height()))
-    throw Error("completion::inpaint_exemplar: source mask is " + std::to_string(source.width()) +
-                "x" + std::to_string(source.height()) + ", the image " +
-                std::to_string(image.width()) + "x" + std::to_string(image.height()) +
-                "; they must be the same size or empty");
+  detail::require_image_size("completion::inpaint_exemplar", "fill mask is", fill, image);
+  if (!source.empty())
+    detail::require_image_size("completion::inpaint_exemplar", "source mask is", source, image,
+                               " or empty");
 }
 
 }  // namespace

@@ -8,12 +8,7 @@ namespace hair25d::completion {
 
 LabelMap assign_outline_pixels(const Image& image, const LabelMap& regions, int reach,
                                int dark_luma) {
-  if (image.width() != regions.width() || image.height() != regions.height()) {
-    throw Error("completion::assign_outline_pixels: regions are " +
-                std::to_string(regions.width()) + "x" + std::to_string(regions.height()) +
-                ", the image " + std::to_string(image.width()) + "x" +
-                std::to_string(image.height()) + "; they must be the same size");
-  }
+  detail::require_image_size("completion::assign_outline_pixels", "regions are", regions, image);
   LabelMap out = regions;
   const int w = regions.width(), h = regions.height();
   std::vector<int> dist(static_cast<std::size_t>(w) * h, -1);

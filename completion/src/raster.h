@@ -2,8 +2,10 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <string>
 #include <vector>
 
+#include "hair25d/core/error.h"
 #include "hair25d/core/geometry.h"
 #include "hair25d/core/image.h"
 
@@ -15,6 +17,16 @@ inline cv::Mat view(const LabelMap& m) {
 }
 inline cv::Mat view(const Image& m) {
   return cv::Mat(m.height(), m.width(), CV_8UC4, const_cast<std::uint8_t*>(m.bytes()));
+}
+
+// Throws "<where>: <what> W×H, the image W×H; they must be the same size<or>"
+// unless `map` has the image's size.
+inline void require_image_size(const std::string& where, const std::string& what,
+                               const LabelMap& map, const Image& image, const char* or_else = "") {
+  if (map.width() == image.width() && map.height() == image.height()) return;
+  throw Error(where + ": " + what + " " + std::to_string(map.width()) + "x" +
+              std::to_string(map.height()) + ", the image " + std::to_string(image.width()) + "x" +
+              std::to_string(image.height()) + "; they must be the same size" + or_else);
 }
 
 inline int luma(const Rgba& c) { return (299 * c.r + 587 * c.g + 114 * c.b) / 1000; }

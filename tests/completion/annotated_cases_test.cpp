@@ -19,11 +19,7 @@ TEST(AnnotatedCases, JoinsMatchTheAnnotatedStrands) {
   int iou_count = 0;
   for (const auto& folder : folders) {
     const AnnotatedCase c = read_annotated_case(folder);
-    Input in;
-    in.image = &c.image;
-    in.regions = &c.regions;
-    in.relations = test::relations_from_pairs(c);
-    in.head_center = c.head_center;
+    const Input in = test::input_from_case(c);
     Options o;
     o.inpaint_strands = false;  // colours are not scored here
     o.inpaint_background = false;

@@ -24,6 +24,17 @@ inline std::vector<RegionRelation> relations_from_pairs(const AnnotatedCase& c) 
   return out;
 }
 
+// The completion input of a case with its annotated relations; `c` must
+// outlive it (it points at the image and regions).
+inline Input input_from_case(const AnnotatedCase& c) {
+  Input in;
+  in.image = &c.image;
+  in.regions = &c.regions;
+  in.relations = relations_from_pairs(c);
+  in.head_center = c.head_center;
+  return in;
+}
+
 inline PairScore score_pairs(const AnnotatedCase& c, const Result& r) {
   std::map<int, int> truth, predicted;
   for (const AnnotatedRegion& reg : c.region_list) truth[reg.id] = reg.strand;

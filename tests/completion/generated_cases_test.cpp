@@ -22,11 +22,7 @@ TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
     g.strand_masks = false;
     g.shading = seed == 2 ? generator::Shading::kTwoTone : generator::Shading::kFlat;
     const AnnotatedCase c = generator::generate_case(g);
-    Input in;
-    in.image = &c.image;
-    in.regions = &c.regions;
-    for (const AnnotatedPair& p : c.pairs) in.relations.push_back({p.a, p.b, p.relation, 1.0});
-    in.head_center = c.head_center;
+    const Input in = test::input_from_case(c);
     Options o;
     o.inpaint_background = false;
     const Result r = complete_strands(in, o);
@@ -96,11 +92,7 @@ TEST(GeneratedCases, JoinsMatchTheGeneratedStrands) {
         g.shading = shading;
         g.strand_masks = false;
         const AnnotatedCase c = generator::generate_case(g);
-        Input in;
-        in.image = &c.image;
-        in.regions = &c.regions;
-        in.relations = test::relations_from_pairs(c);
-        in.head_center = c.head_center;
+        const Input in = test::input_from_case(c);
         Options o;
         o.face_joins = face_joins;
         o.inpaint_strands = false;

@@ -9,9 +9,12 @@
 
 #include "hair25d/layering/layering.h"
 #include "hair25d/layering/learned_metric.h"
+#include "layering/relation_lookup.h"
 
 namespace hair25d::layering {
 namespace {
+
+using test::relation_of;
 
 constexpr Rgba kInk{20, 15, 15, 255};
 constexpr Rgba kPaper{235, 240, 250, 255};
@@ -65,15 +68,6 @@ const BoundaryReport* between(const Result& r, int a, int b) {
     if ((x.left == a && x.right == b) || (x.left == b && x.right == a))
       if (!best || x.length > best->length) best = &x;
   return best;
-}
-
-Relation relation_of(const Result& r, int a, int b) {
-  for (const RegionRelation& x : r.relations) {
-    if (x.a == a && x.b == b) return x.relation;
-    if (x.a == b && x.b == a) return reversed(x.relation);
-  }
-  ADD_FAILURE() << "no relation between " << a << " and " << b;
-  return Relation::kEqual;
 }
 
 TEST(EqualCue, ForkWhoseLineFadesIsEqual) {

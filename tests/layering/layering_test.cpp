@@ -9,9 +9,12 @@
 #include "hair25d/core/error.h"
 #include "hair25d/layering/layering.h"
 #include "hair25d/layering/overlay.h"
+#include "layering/relation_lookup.h"
 
 namespace hair25d::layering {
 namespace {
+
+using test::relation_of;
 
 struct Rect {
   int x0, y0, x1, y1;  // inclusive pixel bounds
@@ -51,15 +54,6 @@ Scene crossing() {
                 {70, 2, 100, 105, 2, {190, 150, 110, 255}},
                 {40, 60, 140, 80, 3, {210, 180, 130, 255}}},
                3, 70);
-}
-
-Relation relation_of(const Result& r, int a, int b) {
-  for (const RegionRelation& x : r.relations) {
-    if (x.a == a && x.b == b) return x.relation;
-    if (x.a == b && x.b == a) return reversed(x.relation);
-  }
-  ADD_FAILURE() << "no relation between " << a << " and " << b;
-  return Relation::kEqual;
 }
 
 TEST(LayerRegions, CrossingStrands) {
