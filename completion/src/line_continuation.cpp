@@ -9,6 +9,7 @@
 
 #include "background_internal.h"
 #include "hair25d/completion/bezier.h"
+#include "raster.h"
 
 namespace hair25d::completion::detail {
 namespace {
@@ -17,8 +18,6 @@ double colour_distance(const Rgba& a, const Rgba& b) {
   const double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
   return std::sqrt(dr * dr + dg * dg + db * db);
 }
-
-int luma_of(const Rgba& c) { return (299 * c.r + 587 * c.g + 114 * c.b) / 1000; }
 
 Vec2 rotate(const Vec2& v, double a) {
   const double c = std::cos(a), s = std::sin(a);
@@ -151,11 +150,11 @@ std::vector<LineEnd> find_line_ends(const Image& image, const Mask& hole, const 
       e.d = rotate(e.d, 0.5 * e.curvature * (e.p - far).norm()).normalized();
       // The line's colour: its darkest pixels (the anti-aliased rim is paler).
       int darkest = 255;
-      for (int i : visited) darkest = std::min(darkest, luma_of(image.data()[i]));
+      for (int i : visited) darkest = std::min(darkest, luma(image.data()[i]));
       long sr = 0, sg = 0, sb = 0, sa = 0, cnt = 0;
       for (int i : visited) {
         const Rgba& c = image.data()[i];
-        if (luma_of(c) > darkest + 30) continue;
+        if (luma(c) > darkest + 30) continue;
         sr += c.r, sg += c.g, sb += c.b, sa += c.a, ++cnt;
       }
       e.colour = {static_cast<std::uint8_t>(sr / cnt), static_cast<std::uint8_t>(sg / cnt),
