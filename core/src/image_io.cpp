@@ -1,18 +1,18 @@
 #include "hair25d/core/image_io.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <system_error>
 
 #include "hair25d/core/atomic_file.h"
 #include "hair25d/core/error.h"
+#include "oiio_loader.h"
+#include "png_codec.h"
 
 namespace hair25d {
 
 namespace fs = std::filesystem;
-namespace oiio = OIIO;
 
 bool ImageLimits::is_valid(std::string* error) const {
   if (max_side < 1) {
@@ -29,44 +29,19 @@ bool ImageLimits::is_valid(std::string* error) const {
 
 namespace {
 
-std::string oiio_message(const std::string& fallback) {
-  std::string msg = oiio::geterror();
-  if (msg.empty()) msg = fallback;
-  // OpenImageIO messages may span lines; our errors are one line.
-  std::replace(msg.begin(), msg.end(), '\n', ' ');
-  return msg;
-}
-
-// The reader's own error, which must be fetched: OpenImageIO keeps it per
-// reader and leaks it if nobody asks.
-std::string reader_message(oiio::ImageInput& in) {
-  std::string msg = in.geterror();
-  if (msg.empty()) msg = oiio::geterror();
-  if (msg.empty()) msg = "truncated or corrupt";
-  std::replace(msg.begin(), msg.end(), '\n', ' ');
-  return msg;
-}
-
-// Opens `path` and checks its declared size before any pixel is decoded, so a
-// forged header cannot make us allocate gigabytes.
-std::unique_ptr<oiio::ImageInput> open_checked(const fs::path& path, const ImageLimits& limits,
-                                               oiio::ImageSpec* spec) {
+// The checks every reader makes before decoding, so that a forged header
+// cannot make us allocate gigabytes.
+void check_file(const fs::path& path, const ImageLimits& limits) {
   std::string why;
   if (!limits.is_valid(&why)) throw Error(why);
   std::error_code ec;
   if (!fs::exists(path, ec)) throw Error(path.string() + ": no such file");
   if (fs::is_directory(path, ec)) throw Error(path.string() + ": is a folder, expected an image");
   if (fs::file_size(path, ec) == 0) throw Error(path.string() + ": the file is empty");
-  // Drawings store straight (unassociated) alpha; OpenImageIO would
-  // premultiply on read unless told not to, which darkens soft edges.
-  oiio::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = oiio::ImageInput::open(path.string(), &config);
-  if (!in) {
-    throw Error(path.string() + ": not a readable image (" + oiio_message("unknown format") + ")");
-  }
-  *spec = in->spec();
-  const std::int64_t w = spec->width, h = spec->height;
+}
+
+void check_header(const fs::path& path, std::int64_t w, std::int64_t h, int channels,
+                  const ImageLimits& limits) {
   if (w <= 0 || h <= 0) {
     throw Error(path.string() + ": size " + std::to_string(w) + "x" + std::to_string(h) +
                 "; an image must be at least 1x1");
@@ -79,99 +54,157 @@ std::unique_ptr<oiio::ImageInput> open_checked(const fs::path& path, const Image
     throw Error(path.string() + ": " + std::to_string(w * h) + " pixels exceed the limit of " +
                 std::to_string(limits.max_pixels));
   }
-  if (spec->nchannels < 1) throw Error(path.string() + ": the image has no channels");
-  return in;
+  if (channels < 1) throw Error(path.string() + ": the image has no channels");
+}
+
+std::uint8_t quantise(float v) {
+  if (!std::isfinite(v)) v = 0.0f;
+  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
+
+// round(v * 255 / 65535) = round(v / 257), never a tie, in integers.
+std::uint8_t sixteen_to_eight(std::uint16_t v) {
+  return static_cast<std::uint8_t>((2 * static_cast<std::uint32_t>(v) + 257) / 514);
+}
+
+// Grey is replicated, missing alpha is opaque (channels 1..4 as decoded).
+template <typename T, typename Convert>
+Image to_rgba(const T* values, int w, int h, int channels, int alpha, Convert convert) {
+  const bool grey = channels <= 2;
+  Image image(w, h);
+  Rgba* out = image.data();
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  for (std::size_t i = 0; i < n; ++i, values += channels) {
+    Rgba& o = out[i];
+    if (grey) {
+      o.r = o.g = o.b = convert(values[0]);
+    } else {
+      o.r = convert(values[0]);
+      o.g = convert(values[1]);
+      o.b = convert(values[2]);
+    }
+    o.a = alpha >= 0 ? convert(values[alpha]) : 255;
+  }
+  return image;
+}
+
+int default_alpha(int channels) { return channels == 2 || channels >= 4 ? channels - 1 : -1; }
+
+png::Pixels read_png(const fs::path& path, const ImageLimits& limits) {
+  return png::read(path, [&](const png::Header& h) {
+    check_header(path, h.width, h.height, h.channels, limits);
+  });
+}
+
+oiio_plugin::ReadResult read_other(const fs::path& path, const ImageLimits& limits, bool labels) {
+  const oiio_plugin::Api& api = oiio_plugin::api_for(path);
+  oiio_plugin::ReadRequest request;
+  request.max_side = limits.max_side;
+  request.max_pixels = limits.max_pixels;
+  request.labels = labels;
+  oiio_plugin::ReadResult r;
+  api.read(path.c_str(), request, &r);
+  using oiio_plugin::Status;
+  switch (r.status) {
+    case Status::kOk:
+      break;
+    case Status::kCannotOpen:
+      throw Error(path.string() + ": not a readable image (" + r.message + ")");
+    case Status::kRefused:
+      check_header(path, r.width, r.height, r.channels, limits);
+      throw Error(path.string() + ": refused by the size check");
+    case Status::kBadType:
+      if (r.channels != 1) {
+        throw Error(path.string() + ": " + std::to_string(r.channels) +
+                    " channels; a label map must have exactly one");
+      }
+      throw Error(path.string() + ": pixel type " + r.type +
+                  "; a label map must be 8- or 16-bit unsigned");
+    default:
+      throw Error(path.string() + ": cannot decode the pixels (" + r.message + ")");
+  }
+  return r;
+}
+
+bool is_png_name(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".png";
+}
+
+// PNG through libpng; any other extension through the OpenImageIO module.
+void write_pixels(const fs::path& target, int w, int h, int channels, bool sixteen_bit, bool alpha,
+                  const void* data) {
+  write_atomically(target, [&](const fs::path& tmp) {
+    if (is_png_name(target)) {
+      png::write(target, tmp, w, h, channels, sixteen_bit ? 16 : 8, data);
+      return;
+    }
+    oiio_plugin::WriteRequest request;
+    request.width = w;
+    request.height = h;
+    request.channels = channels;
+    request.sixteen_bit = sixteen_bit;
+    request.alpha_channel = alpha ? channels - 1 : -1;
+    request.data = data;
+    std::string message;
+    const oiio_plugin::Status status =
+        oiio_plugin::api_for(target).write(tmp.c_str(), request, &message);
+    if (status == oiio_plugin::Status::kCannotCreate)
+      throw Error(target.string() + ": cannot write this format (" + message + ")");
+    if (status != oiio_plugin::Status::kOk)
+      throw Error(target.string() + ": cannot write the image (" + message + ")");
+  });
 }
 
 }  // namespace
 
 Image load_image(const fs::path& path, const ImageLimits& limits) {
-  oiio::ImageSpec spec;
-  auto in = open_checked(path, limits, &spec);
-  const int w = spec.width, h = spec.height, nc = spec.nchannels;
-  // Float read keeps 16-bit and HDR data exact until we quantise once below.
-  std::vector<float> buffer(static_cast<std::size_t>(w) * h * nc);
-  if (!in->read_image(0, 0, 0, nc, oiio::TypeDesc::FLOAT, buffer.data())) {
-    throw Error(path.string() + ": cannot decode the pixels (" + reader_message(*in) + ")");
+  check_file(path, limits);
+  if (png::has_png_signature(path)) {
+    const png::Pixels p = read_png(path, limits);
+    const png::Header& h = p.header;
+    const int alpha = default_alpha(h.channels);
+    if (h.bit_depth == 16)
+      return to_rgba(p.words.data(), h.width, h.height, h.channels, alpha, sixteen_to_eight);
+    return to_rgba(p.bytes.data(), h.width, h.height, h.channels, alpha,
+                   [](std::uint8_t v) { return v; });
   }
-  in->close();
-  const int alpha =
-      spec.alpha_channel >= 0 ? spec.alpha_channel : (nc == 2 || nc >= 4 ? nc - 1 : -1);
-  const bool grey = nc <= 2;
-  auto q = [](float v) {
-    if (!std::isfinite(v)) v = 0.0f;
-    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-  };
-  Image image(w, h);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const float* p = &buffer[(static_cast<std::size_t>(y) * w + x) * nc];
-      Rgba& out = image.at(x, y);
-      if (grey) {
-        out.r = out.g = out.b = q(p[0]);
-      } else {
-        out.r = q(p[0]);
-        out.g = q(p[1]);
-        out.b = q(p[2]);
-      }
-      out.a = alpha >= 0 ? q(p[alpha]) : 255;
-    }
-  }
-  return image;
+  const oiio_plugin::ReadResult r = read_other(path, limits, false);
+  const int alpha = r.alpha_channel >= 0 ? r.alpha_channel : default_alpha(r.channels);
+  return to_rgba(r.pixels.data(), r.width, r.height, r.channels, alpha, quantise);
 }
 
 LabelMap load_label_map(const fs::path& path, const ImageLimits& limits) {
-  oiio::ImageSpec spec;
-  auto in = open_checked(path, limits, &spec);
-  const oiio::TypeDesc::BASETYPE base = static_cast<oiio::TypeDesc::BASETYPE>(spec.format.basetype);
-  if (base != oiio::TypeDesc::UINT8 && base != oiio::TypeDesc::UINT16) {
-    throw Error(path.string() + ": pixel type " + std::string(spec.format.c_str()) +
-                "; a label map must be 8- or 16-bit unsigned");
+  check_file(path, limits);
+  if (png::has_png_signature(path)) {
+    const png::Pixels p = read_png(path, limits);
+    const png::Header& h = p.header;
+    if (h.channels != 1) {
+      throw Error(path.string() + ": " + std::to_string(h.channels) +
+                  " channels; a label map must have exactly one");
+    }
+    LabelMap labels(h.width, h.height);
+    int* out = labels.data();
+    if (h.bit_depth == 16)
+      std::copy(p.words.begin(), p.words.end(), out);
+    else
+      std::copy(p.bytes.begin(), p.bytes.end(), out);
+    return labels;
   }
-  if (spec.nchannels != 1) {
-    throw Error(path.string() + ": " + std::to_string(spec.nchannels) +
-                " channels; a label map must have exactly one");
-  }
-  const int w = spec.width, h = spec.height;
-  std::vector<std::uint16_t> buffer(static_cast<std::size_t>(w) * h);
-  if (!in->read_image(0, 0, 0, 1, oiio::TypeDesc::UINT16, buffer.data())) {
-    throw Error(path.string() + ": cannot decode the pixels (" + reader_message(*in) + ")");
-  }
-  in->close();
+  const oiio_plugin::ReadResult r = read_other(path, limits, true);
   // An 8-bit file read as UINT16 is rescaled by OpenImageIO (v * 257): undo it
   // so that labels keep their values.
-  const bool eight = base == oiio::TypeDesc::UINT8;
-  LabelMap labels(w, h);
-  for (std::size_t i = 0; i < buffer.size(); ++i) {
-    labels.data()[i] = eight ? buffer[i] / 257 : buffer[i];
-  }
+  LabelMap labels(r.width, r.height);
+  for (std::size_t i = 0; i < r.labels.size(); ++i)
+    labels.data()[i] = r.eight_bit ? r.labels[i] / 257 : r.labels[i];
   return labels;
 }
 
-namespace {
-void write_pixels(const fs::path& target, const fs::path& tmp, oiio::ImageSpec spec,
-                  const void* data) {
-  // zlib level 6 (libpng's default) spends most of a model write on
-  // compression; level 1 writes several times faster for files ~20% larger.
-  spec.attribute("png:compressionLevel", 1);
-  auto out = oiio::ImageOutput::create(tmp.string());
-  if (!out) {
-    throw Error(target.string() + ": cannot write this format (" +
-                oiio_message("unknown extension") + ")");
-  }
-  if (!out->open(tmp.string(), spec) || !out->write_image(spec.format, data) || !out->close()) {
-    throw Error(target.string() + ": cannot write the image (" + out->geterror() + ")");
-  }
-}
-}  // namespace
-
 void save_image(const fs::path& path, const Image& image) {
   if (image.empty()) throw Error(path.string() + ": refusing to save an empty image");
-  oiio::ImageSpec spec(image.width(), image.height(), 4, oiio::TypeDesc::UINT8);
-  spec.alpha_channel = 3;
-  spec.attribute("oiio:UnassociatedAlpha", 1);  // our pixels are straight alpha
-  write_atomically(path,
-                   [&](const fs::path& tmp) { write_pixels(path, tmp, spec, image.bytes()); });
+  write_pixels(path, image.width(), image.height(), 4, false, true, image.bytes());
 }
 
 void save_label_map(const fs::path& path, const LabelMap& labels) {
@@ -185,18 +218,14 @@ void save_label_map(const fs::path& path, const LabelMap& labels) {
     }
     buffer[i] = static_cast<std::uint16_t>(v);
   }
-  oiio::ImageSpec spec(labels.width(), labels.height(), 1, oiio::TypeDesc::UINT16);
-  write_atomically(path,
-                   [&](const fs::path& tmp) { write_pixels(path, tmp, spec, buffer.data()); });
+  write_pixels(path, labels.width(), labels.height(), 1, true, false, buffer.data());
 }
 
 void save_mask(const fs::path& path, const LabelMap& mask) {
   if (mask.empty()) throw Error(path.string() + ": refusing to save an empty mask");
   std::vector<std::uint8_t> buffer(mask.size());
   for (std::size_t i = 0; i < mask.size(); ++i) buffer[i] = mask.data()[i] != 0 ? 255 : 0;
-  oiio::ImageSpec spec(mask.width(), mask.height(), 1, oiio::TypeDesc::UINT8);
-  write_atomically(path,
-                   [&](const fs::path& tmp) { write_pixels(path, tmp, spec, buffer.data()); });
+  write_pixels(path, mask.width(), mask.height(), 1, false, false, buffer.data());
 }
 
 }  // namespace hair25d

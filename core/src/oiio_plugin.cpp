@@ -1,0 +1,123 @@
+// libhair25d_core_oiio: OpenImageIO behind oiio_plugin.h, loaded by core's
+// image I/O only when a file is not PNG.
+#include "oiio_plugin.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+
+namespace hair25d::oiio_plugin {
+namespace {
+
+namespace oiio = OIIO;
+
+std::string one_line(std::string message, const char* fallback) {
+  if (message.empty()) message = fallback;
+  std::replace(message.begin(), message.end(), '\n', ' ');
+  return message;
+}
+
+// The reader's own error, which must be fetched: OpenImageIO keeps it per
+// reader and leaks it if nobody asks.
+std::string reader_message(oiio::ImageInput& in) {
+  std::string message = in.geterror();
+  if (message.empty()) message = oiio::geterror();
+  return one_line(message, "truncated or corrupt");
+}
+
+void read_impl(const char* path, const ReadRequest& request, ReadResult* result) {
+  // Drawings store straight (unassociated) alpha; OpenImageIO would
+  // premultiply on read unless told not to, which darkens soft edges.
+  oiio::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = oiio::ImageInput::open(path, &config);
+  if (!in) {
+    result->status = Status::kCannotOpen;
+    result->message = one_line(oiio::geterror(), "unknown format");
+    return;
+  }
+  const oiio::ImageSpec& spec = in->spec();
+  result->width = spec.width;
+  result->height = spec.height;
+  result->channels = spec.nchannels;
+  result->alpha_channel = spec.alpha_channel;
+  result->type = spec.format.c_str();
+  const std::int64_t w = spec.width, h = spec.height;
+  if (w <= 0 || h <= 0 || w > request.max_side || h > request.max_side ||
+      w * h > request.max_pixels || spec.nchannels < 1) {
+    // Refused before any pixel is decoded: a forged header cannot make us
+    // allocate gigabytes.
+    result->status = Status::kRefused;
+    return;
+  }
+  const std::size_t values = static_cast<std::size_t>(w * h) * spec.nchannels;
+  bool ok = false;
+  if (request.labels) {
+    const auto base = static_cast<oiio::TypeDesc::BASETYPE>(spec.format.basetype);
+    if ((base != oiio::TypeDesc::UINT8 && base != oiio::TypeDesc::UINT16) || spec.nchannels != 1) {
+      result->status = Status::kBadType;
+      return;
+    }
+    result->eight_bit = base == oiio::TypeDesc::UINT8;
+    result->labels.resize(values);
+    ok = in->read_image(0, 0, 0, 1, oiio::TypeDesc::UINT16, result->labels.data());
+  } else {
+    // Float keeps 16-bit and HDR data exact until core quantises once.
+    result->pixels.resize(values);
+    ok = in->read_image(0, 0, 0, spec.nchannels, oiio::TypeDesc::FLOAT, result->pixels.data());
+  }
+  if (!ok) {
+    result->status = Status::kCannotDecode;
+    result->message = reader_message(*in);
+    return;
+  }
+  in->close();
+  result->status = Status::kOk;
+}
+
+Status write_impl(const char* path, const WriteRequest& request, std::string* message) {
+  const oiio::TypeDesc type = request.sixteen_bit ? oiio::TypeDesc::UINT16 : oiio::TypeDesc::UINT8;
+  oiio::ImageSpec spec(request.width, request.height, request.channels, type);
+  if (request.alpha_channel >= 0) {
+    spec.alpha_channel = request.alpha_channel;
+    spec.attribute("oiio:UnassociatedAlpha", 1);  // our pixels are straight alpha
+  }
+  auto out = oiio::ImageOutput::create(path);
+  if (!out) {
+    *message = one_line(oiio::geterror(), "unknown extension");
+    return Status::kCannotCreate;
+  }
+  if (!out->open(path, spec) || !out->write_image(type, request.data) || !out->close()) {
+    *message = one_line(out->geterror(), "write error");
+    return Status::kCannotWrite;
+  }
+  return Status::kOk;
+}
+
+void read_entry(const char* path, const ReadRequest& request, ReadResult* result) {
+  try {
+    read_impl(path, request, result);
+  } catch (const std::exception& e) {
+    result->status = Status::kCannotDecode;
+    result->message = one_line(e.what(), "error");
+  }
+}
+
+Status write_entry(const char* path, const WriteRequest& request, std::string* message) {
+  try {
+    return write_impl(path, request, message);
+  } catch (const std::exception& e) {
+    *message = one_line(e.what(), "error");
+    return Status::kCannotWrite;
+  }
+}
+
+constexpr Api kApi{kAbiVersion, read_entry, write_entry};
+
+}  // namespace
+}  // namespace hair25d::oiio_plugin
+
+extern "C" __attribute__((visibility("default"))) const hair25d::oiio_plugin::Api*
+hair25d_core_oiio_api() {
+  return &hair25d::oiio_plugin::kApi;
+}
