@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <future>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "hair25d/core/error.h"
 
@@ -22,17 +25,32 @@ inline float grey_value(const Rgba& p) {
   return static_cast<float>(a * lum + (1.0 - a) * 255.0);
 }
 
-inline cv::Vec3f colour_value(const Rgba& p) {
-  if (p.a == 255) return cv::Vec3f(p.r, p.g, p.b);  // the common case, where the blend is exact
+// Four floats (r, g, b, a) in one SSE register: the colour smoothing works
+// on a pixel's three channels at once.
+using Float4 = float __attribute__((vector_size(16)));
+using Byte4 = std::uint8_t __attribute__((vector_size(4)));
+
+inline Float4 opaque_value(const Rgba& p) {
+  Byte4 b;
+  std::memcpy(&b, &p, sizeof b);
+  return __builtin_convertvector(b, Float4);
+}
+
+// Transparent pixels read as white paint, as in grey_value.
+inline Float4 colour_value(const Rgba& p) {
+  if (p.a == 255) return opaque_value(p);  // the common case, where the blend is exact
   const float a = p.a / 255.0f;
-  return cv::Vec3f(a * p.r + (1 - a) * 255.0f, a * p.g + (1 - a) * 255.0f,
-                   a * p.b + (1 - a) * 255.0f);
+  return Float4{a * p.r + (1 - a) * 255.0f, a * p.g + (1 - a) * 255.0f, a * p.b + (1 - a) * 255.0f,
+                0.0f};
 }
 
 // Fills `grey` (window-sized) in `r` from the window at (x0, y0) of `image`.
 // Rows are made as if opaque (a = 1 leaves lum unchanged, exactly) and only
 // redone pixel by pixel when some alpha is not 255.
-void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& grey) {
+// `translucent`, if given, gets a flag per row of `r`: does it hold a pixel
+// with alpha below 255?
+void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& grey,
+               std::uint8_t* translucent = nullptr) {
   for (int y = r.y; y < r.y + r.height; ++y) {
     float* row = grey.ptr<float>(y) + r.x;
     const Rgba* src = image.data() + static_cast<std::size_t>(y0 + y) * image.width() + x0 + r.x;
@@ -42,28 +60,10 @@ void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& g
       row[x] = static_cast<float>(0.299 * p.r + 0.587 * p.g + 0.114 * p.b);
       alpha &= p.a;
     }
+    if (translucent) translucent[y - r.y] = alpha != 255;
     if (alpha != 255)
       for (int x = 0; x < r.width; ++x)
         if (src[x].a != 255) row[x] = grey_value(src[x]);
-  }
-}
-
-void colour_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& rgb) {
-  for (int y = r.y; y < r.y + r.height; ++y) {
-    auto* row = rgb.ptr<cv::Vec3f>(y) + r.x;
-    float* out = reinterpret_cast<float*>(row);
-    const Rgba* src = image.data() + static_cast<std::size_t>(y0 + y) * image.width() + x0 + r.x;
-    unsigned alpha = 255;
-    for (int x = 0; x < r.width; ++x) {
-      const Rgba p = src[x];
-      out[3 * x] = p.r;
-      out[3 * x + 1] = p.g;
-      out[3 * x + 2] = p.b;
-      alpha &= p.a;
-    }
-    if (alpha != 255)
-      for (int x = 0; x < r.width; ++x)
-        if (src[x].a != 255) row[x] = colour_value(src[x]);
   }
 }
 
@@ -123,19 +123,27 @@ LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0
   h_ = std::clamp(y1, y0_ + 1, image.height()) - y0_;
   const std::size_t n = static_cast<std::size_t>(w_) * h_;
   grey_ = std::make_unique_for_overwrite<float[]>(n);
-  colour_ = std::make_unique_for_overwrite<Rgb3f[]>(n);
-  static_assert(sizeof(Rgb3f) == sizeof(cv::Vec3f));
+  image_ = &image;
+  std::vector<std::uint8_t> translucent(h_, 0);
   try {
+    // Colours for the paint on each side are smoothed at half a line width
+    // (screentone dots and JPEG blocks average to their tone) only where
+    // they are sampled, two pixels per point measured: a few percent of the
+    // window, where blurring all of it cost as much as the rest of the
+    // layering. The kernel is OpenCV's, as cv::GaussianBlur would use it.
+    const double cs = colour_sigma(line_width_);
+    const int ksize = static_cast<int>(std::lround(cs * 4 * 2 + 1)) | 1;
+    const cv::Mat k = cv::getGaussianKernel(ksize, cs, CV_32F);
+    colour_kernel_.assign(k.ptr<float>(), k.ptr<float>() + ksize);
+#if defined(__SSE2__)
+    colour_weights_.assign((ksize + 3) / 4 * 16, 0.0f);
+    for (int i = 0; i < 4 * ksize; ++i) colour_weights_[i] = colour_kernel_[i / 4];
+#endif
     cv::Mat smooth(h_, w_, CV_32F, grey_.get());
-    cv::Mat smooth_rgb(h_, w_, CV_32FC3, colour_.get());
-    // Colours for the paint on each side: smoothed at half a line width so
-    // screentone dots and JPEG blocks average to their tone. They need
-    // nothing from the grey levels: they are made on a second core meanwhile
-    // (each path writes only its own members and locals).
-    cv::Mat rgb(h_, w_, CV_32FC3);
-    auto colours = std::async(std::launch::async | std::launch::deferred,
-                              [&] { colour_into(image, x0_, y0_, cv::Rect(0, 0, w_, h_), rgb); });
-    cv::Mat grey = grey_of(image, x0_, y0_, w_, h_);
+    cv::Mat grey(h_, w_, CV_32F);
+    grey_into(image, x0_, y0_, cv::Rect(0, 0, w_, h_), grey, translucent.data());
+    translucent_rows_.assign(h_ + 1, 0);
+    for (int y = 0; y < h_; ++y) translucent_rows_[y + 1] = translucent_rows_[y] + translucent[y];
     // Noise: MAD of a 3x3 Laplacian on the raw grey image, over pixels where
     // it is small (flat areas), scaled for a Gaussian.
     cv::Mat lap;
@@ -146,30 +154,74 @@ LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0
       for (int x = 0; x < w_; x += 4) mags.push_back(std::abs(lap.at<float>(y, x)));
     // A 4-neighbour Laplacian of i.i.d. noise has σ·√20.
     noise_sigma_ = median_of(mags) * 1.4826 / std::sqrt(20.0);
-    colours.get();
-    // The colour blur (three channels, twice the grey's sigma) costs about
-    // three grey blurs: its top rows are smoothed on a second core while
-    // this one smooths the grey levels and the colours' bottom rows. Bands
-    // of whole rows read the rows around them as one call over the window
-    // would (only the window's own edges are replicated), so the values are
-    // the same.
-    const double cs = colour_sigma(line_width_);
-    const int split = h_ * 3 / 5;
-    auto blur_rows = [&](int r0, int r1) {
-      if (r1 <= r0) return;
-      cv::Mat dst = smooth_rgb.rowRange(r0, r1);
-      cv::GaussianBlur(rgb.rowRange(r0, r1), dst, cv::Size(0, 0), cs, cs, cv::BORDER_REPLICATE);
-    };
-    auto top = std::async(std::launch::async | std::launch::deferred, [&] { blur_rows(0, split); });
     // Smooth at about a quarter line width: tones (screentone dots, JPEG
     // ringing) average out while a line keeps most of its depth.
     const double sigma = grey_sigma(line_width_);
     cv::GaussianBlur(grey, smooth, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
-    blur_rows(split, h_);
-    top.get();
   } catch (const cv::Exception& e) {
     throw Error(std::string("layering: OpenCV failed while measuring lines: ") + e.what());
   }
+}
+
+Rgb3f LineResponse::smoothed_colour(int x, int y) const {
+  const int xi = std::clamp(x - x0_, 0, w_ - 1);
+  const int yi = std::clamp(y - y0_, 0, h_ - 1);
+  const int r = static_cast<int>(colour_kernel_.size()) / 2;
+  const float* k = colour_kernel_.data();
+  const int iw = image_->width();
+  const Rgba* window = image_->data() + static_cast<std::size_t>(y0_) * iw + x0_;
+#if defined(__SSE2__)
+  // Columns first, four at a time (the kernel's width rounded up; the
+  // weights past its end are 0), each pixel widened to four float lanes
+  // (r, g, b, a). The kernel is symmetric: rows y − j and y + j are added as
+  // integers (exact) before they are weighted. Only where the footprint lies
+  // in the window and all its pixels are opaque.
+  const int groups = (2 * r + 4) / 4;
+  if (xi - r >= 0 && xi - r + 4 * groups <= w_ && yi - r >= 0 && yi + r < h_ &&
+      translucent_rows_[yi + r + 1] == translucent_rows_[yi - r]) {
+    const __m128i zero = _mm_setzero_si128();
+    const Rgba* centre = window + static_cast<std::size_t>(yi) * iw + xi - r;
+    __m128 sum = _mm_setzero_ps();
+    for (int g = 0; g < groups; ++g) {
+      __m128 c0 = _mm_setzero_ps(), c1 = c0, c2 = c0, c3 = c0;
+      for (int j = 0; j <= r; ++j) {
+        const __m128i up = _mm_loadu_si128(
+            reinterpret_cast<const __m128i*>(centre - static_cast<std::ptrdiff_t>(j) * iw + 4 * g));
+        const __m128i down = _mm_loadu_si128(
+            reinterpret_cast<const __m128i*>(centre + static_cast<std::ptrdiff_t>(j) * iw + 4 * g));
+        __m128i lo = _mm_unpacklo_epi8(up, zero), hi = _mm_unpackhi_epi8(up, zero);
+        if (j > 0) {
+          lo = _mm_add_epi16(lo, _mm_unpacklo_epi8(down, zero));
+          hi = _mm_add_epi16(hi, _mm_unpackhi_epi8(down, zero));
+        }
+        const __m128 w = _mm_set1_ps(k[r + j]);
+        c0 = _mm_add_ps(c0, _mm_mul_ps(w, _mm_cvtepi32_ps(_mm_unpacklo_epi16(lo, zero))));
+        c1 = _mm_add_ps(c1, _mm_mul_ps(w, _mm_cvtepi32_ps(_mm_unpackhi_epi16(lo, zero))));
+        c2 = _mm_add_ps(c2, _mm_mul_ps(w, _mm_cvtepi32_ps(_mm_unpacklo_epi16(hi, zero))));
+        c3 = _mm_add_ps(c3, _mm_mul_ps(w, _mm_cvtepi32_ps(_mm_unpackhi_epi16(hi, zero))));
+      }
+      const float* wg = colour_weights_.data() + 16 * g;
+      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg), c0));
+      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 4), c1));
+      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 8), c2));
+      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 12), c3));
+    }
+    alignas(16) float out[4];
+    _mm_store_ps(out, sum);
+    return {out[0], out[1], out[2]};
+  }
+#endif
+  // Near the window's edges (the edge pixel repeats, BORDER_REPLICATE, as a
+  // blur of the whole window would) and around translucent pixels.
+  Float4 sum = {0, 0, 0, 0};
+  for (int j = -r; j <= r; ++j) {
+    const Rgba* row = window + static_cast<std::size_t>(std::clamp(yi + j, 0, h_ - 1)) * iw;
+    Float4 acc = {0, 0, 0, 0};
+    for (int i = -r; i <= r; ++i)
+      acc += k[i + r] * colour_value(row[std::clamp(xi + i, 0, w_ - 1)]);
+    sum += k[j + r] * acc;
+  }
+  return {sum[0], sum[1], sum[2]};
 }
 
 // Inlined: called a few dozen times per point measured.
@@ -196,10 +248,8 @@ LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0
 }
 
 std::array<double, 3> LineResponse::sample_colour(double x, double y) const {
-  // Nearest pixel: colours are already smoothed.
-  const int xi = std::clamp(floor_int(x) - x0_, 0, w_ - 1);
-  const int yi = std::clamp(floor_int(y) - y0_, 0, h_ - 1);
-  const Rgb3f& c = colour_[static_cast<std::size_t>(yi) * w_ + xi];
+  // Nearest pixel: colours are smoothed.
+  const Rgb3f c = smoothed_colour(floor_int(x), floor_int(y));
   return {c[0], c[1], c[2]};
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -30,6 +31,7 @@ class LineResponse {
   // Grey levels of `image` smoothed at a scale from the line width, kept for
   // the window [x0, x1) × [y0, y1) only (clipped to the image): the part that
   // holds the boundaries, with a margin. Samples outside it are clamped.
+  // Colours are read from `image` when sampled: it must outlive this.
   LineResponse(const Image& image, double line_width, int x0, int y0, int x1, int y1);
 
   // How far the window must reach beyond the boundaries measured for their
@@ -53,6 +55,11 @@ class LineResponse {
   BoundaryLine measure(const Polyline& curve, double skip, const LabelMap& labels, int left,
                        int right) const;
 
+  // The image's colour at pixel (x, y) smoothed at half a line width (a
+  // Gaussian, OpenCV's kernel, edges of the window repeated); pixels outside
+  // the window are clamped to it. Translucent pixels are blended over white.
+  Rgb3f smoothed_colour(int x, int y) const;
+
   // Estimated standard deviation of pixel noise (grey levels) from the
   // median absolute deviation of a Laplacian, for a floor of the threshold.
   double noise_sigma() const { return noise_sigma_; }
@@ -69,7 +76,13 @@ class LineResponse {
   double noise_sigma_ = 0.0;
   // w_ × h_, row-major.
   std::unique_ptr<float[]> grey_;
-  std::unique_ptr<Rgb3f[]> colour_;  // smoothed RGB of the window
+  const Image* image_ = nullptr;  // colours are smoothed from it where sampled
+  std::vector<float> colour_kernel_;
+  // Each weight four times (a pixel's lanes), zero-padded to a multiple of 4 weights.
+  std::vector<float> colour_weights_;
+  // translucent_rows_[y]: how many of the window's rows above y hold a pixel
+  // with alpha < 255.
+  std::vector<int> translucent_rows_;
 };
 
 }  // namespace hair25d::layering::detail

@@ -1,0 +1,130 @@
+// The fast paths of the line response (layering/src/line_response.h, paper
+// §4.1) against straightforward reference computations: the colours smoothed
+// only where they are sampled against cv::GaussianBlur over the whole window
+// (what the layering did before), on non-square images with noise, translucent
+// pixels and windows cut by the image's edges, for line widths 1–21.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "line_response.h"
+
+namespace hair25d::layering {
+namespace {
+
+using detail::LineResponse;
+
+// A drawing-like image: flat cels, dark strokes, noise, and (optionally) a
+// band of translucent pixels.
+Image test_image(int w, int h, unsigned seed, bool translucent) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> noise(-12, 12);
+  Image image(w, h, Rgba{240, 235, 225, 255});
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      Rgba& p = image.at(x, y);
+      const bool cel = (x / 23 + y / 17) % 3 == 0;
+      const bool stroke = (x + 2 * y) % 41 < 3 || (3 * x - y + 1000) % 57 < 2;
+      const int base_r = stroke ? 30 : cel ? 180 : 235;
+      const int base_g = stroke ? 25 : cel ? 110 : 230;
+      const int base_b = stroke ? 35 : cel ? 60 : 220;
+      p.r = static_cast<std::uint8_t>(std::clamp(base_r + noise(rng), 0, 255));
+      p.g = static_cast<std::uint8_t>(std::clamp(base_g + noise(rng), 0, 255));
+      p.b = static_cast<std::uint8_t>(std::clamp(base_b + noise(rng), 0, 255));
+      if (translucent && y % 7 == 3 && x % 3 != 0) p.a = static_cast<std::uint8_t>((x * 13) % 256);
+    }
+  return image;
+}
+
+// The window [x0, x1) × [y0, y1) of `image` as RGB floats, blended over white
+// as the layering reads it, blurred the way the layering did before it
+// sampled colours sparsely.
+cv::Mat reference_blur(const Image& image, int x0, int y0, int x1, int y1, double sigma) {
+  cv::Mat rgb(y1 - y0, x1 - x0, CV_32FC3);
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const Rgba& p = image.at(x, y);
+      const float a = p.a / 255.0f;
+      rgb.at<cv::Vec3f>(y - y0, x - x0) =
+          p.a == 255 ? cv::Vec3f(p.r, p.g, p.b)
+                     : cv::Vec3f(a * p.r + (1 - a) * 255.0f, a * p.g + (1 - a) * 255.0f,
+                                 a * p.b + (1 - a) * 255.0f);
+    }
+  cv::Mat out;
+  cv::GaussianBlur(rgb, out, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
+  return out;
+}
+
+// Every pixel of the window (and a ring outside it, which clamps to it).
+double max_colour_error(const Image& image, double line_width, int x0, int y0, int x1, int y1) {
+  const LineResponse lines(image, line_width, x0, y0, x1, y1);
+  // The sigma LineResponse documents: half a line width, at least 1.
+  const cv::Mat ref = reference_blur(image, x0, y0, x1, y1, std::max(1.0, 0.5 * line_width));
+  double worst = 0.0;
+  for (int y = y0 - 3; y < y1 + 3; ++y)
+    for (int x = x0 - 3; x < x1 + 3; ++x) {
+      const cv::Vec3f& want =
+          ref.at<cv::Vec3f>(std::clamp(y, y0, y1 - 1) - y0, std::clamp(x, x0, x1 - 1) - x0);
+      const auto got = lines.smoothed_colour(x, y);
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(double(got[c]) - want[c]));
+    }
+  return worst;
+}
+
+// Float sums in another order: within a thousandth of a grey level (values
+// are 0..255). A wrong kernel, a wrong tap or a lost channel is off by
+// grey levels.
+constexpr double kTolerance = 1e-3;
+
+TEST(LineSpeed, SparseColourSmoothingEqualsGaussianBlurOfTheWholeImage) {
+  const Image image = test_image(157, 93, 1, false);
+  for (const double lw : {1.0, 2.0, 3.3, 4.6, 7.0, 12.0, 21.0})
+    EXPECT_LT(max_colour_error(image, lw, 0, 0, image.width(), image.height()), kTolerance)
+        << "line width " << lw;
+}
+
+TEST(LineSpeed, SparseColourSmoothingInAWindowRepeatsTheWindowsEdges) {
+  const Image image = test_image(211, 140, 2, false);
+  for (const double lw : {1.5, 4.6, 9.0})
+    EXPECT_LT(max_colour_error(image, lw, 37, 21, 170, 101), kTolerance) << "line width " << lw;
+}
+
+TEST(LineSpeed, SparseColourSmoothingBlendsTranslucentPixelsOverWhite) {
+  const Image image = test_image(120, 175, 3, true);
+  for (const double lw : {1.0, 4.6, 13.0}) {
+    EXPECT_LT(max_colour_error(image, lw, 0, 0, image.width(), image.height()), kTolerance)
+        << "line width " << lw;
+    EXPECT_LT(max_colour_error(image, lw, 11, 30, 97, 160), kTolerance) << "line width " << lw;
+  }
+}
+
+TEST(LineSpeed, SparseColourSmoothingOnImagesSmallerThanTheKernel) {
+  for (const auto& [w, h] :
+       {std::pair{1, 1}, std::pair{3, 2}, std::pair{9, 30}, std::pair{25, 4}}) {
+    const Image image = test_image(w, h, 4, true);
+    for (const double lw : {1.0, 6.0, 21.0})
+      EXPECT_LT(max_colour_error(image, lw, 0, 0, w, h), kTolerance)
+          << w << "x" << h << ", line width " << lw;
+  }
+}
+
+// The comparison itself must be able to fail: a colour smoothed at another
+// scale is far from the reference.
+TEST(LineSpeed, TheReferenceTellsAnotherSmoothingApart) {
+  const Image image = test_image(157, 93, 1, false);
+  const LineResponse lines(image, 4.6, 0, 0, image.width(), image.height());
+  const cv::Mat other = reference_blur(image, 0, 0, image.width(), image.height(), 1.0);
+  double worst = 0.0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      worst = std::max(
+          worst, std::abs(double(lines.smoothed_colour(x, y)[0]) - other.at<cv::Vec3f>(y, x)[0]));
+  EXPECT_GT(worst, 1.0);
+}
+
+}  // namespace
+}  // namespace hair25d::layering
