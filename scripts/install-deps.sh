@@ -8,7 +8,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config git clang-format
   libeigen3-dev libopencv-dev libopencv-contrib-dev
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libceres-dev libopenimageio-dev openimageio-tools python3-imath libmaxflow-dev
+  libceres-dev libopenimageio-dev openimageio-tools python3-imath libmaxflow-dev libpng-dev
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
