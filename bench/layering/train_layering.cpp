@@ -29,6 +29,15 @@ struct Sample {
   double weight = 1;
 };
 
+// A same-depth sample keeps its cues: its features read the order model's
+// log-odds, which are those of the weights fitted in this run.
+struct SameSample {
+  layering::EqualCues cues;
+  layering::BoundaryFeatures order_features{};
+  double y = 0;  // +1 same depth
+  double weight = 1;
+};
+
 // A spread of styles so the weights do not learn one look: shading, line
 // width, noise, JPEG, coloured lines, image size and strand count all vary.
 generator::Options style(int i, std::uint64_t seed) {
@@ -90,10 +99,13 @@ int main(int argc, char** argv) {
   app.add_option("--ridge", ridge, "L2 penalty")->check(CLI::NonNegativeNumber);
   app.add_option("--same-ridge", same_ridge, "L2 penalty of the same-depth model")
       ->check(CLI::NonNegativeNumber);
+  std::string write;
+  app.add_option("--write", write, "write layering/src/learned_weights.cpp here");
   app.add_flag("--length-weighted", length_weighted, "weight boundaries by sqrt(length)");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<Sample> samples, same_samples;
+  std::vector<SameSample> same_cases;
   layering::Options options;
   options.metric = layering::Metric::kPaper;
   for (int i = 0; i < cases; ++i) {
@@ -117,9 +129,8 @@ int main(int argc, char** argv) {
       if (t == truth.end()) continue;
       // Same depth or ordered: every occluding boundary of a judged pair,
       // weighted by length as the pair's decision is.
-      same_samples.push_back({{b.equal_features.begin(), b.equal_features.end()},
-                              t->second == Relation::kEqual ? 1.0 : -1.0,
-                              std::sqrt(b.length / r.line_width)});
+      same_cases.push_back({b.equal_cues, b.features, t->second == Relation::kEqual ? 1.0 : -1.0,
+                            std::sqrt(b.length / r.line_width)});
       if (t->second == Relation::kEqual) continue;
       // A pair is decided by its boundaries' votes weighted by length; the
       // square root keeps short boundaries (most junction errors) in play.
@@ -140,13 +151,17 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(seed), ridge);
   std::printf("boundary sign right: paper Φ %.1f%%, learned %.1f%%\n",
               100.0 * right_paper / samples.size(), 100.0 * right_learned / samples.size());
-  std::printf("  static constexpr LearnedTerms kWeights = {");
-  for (int k = 0; k < w.size(); ++k)
-    std::printf("%s%s%.6g", k ? "," : "", k % 6 ? " " : "\n      ", w[k]);
-  std::printf("};\n");
 
-  // The same-depth model. Its features use the order model's output, so the
-  // order weights above are committed first, then this is run again.
+  // The same-depth model. Its features use the order model's output: that
+  // of the weights just fitted (what the layering computes once they are in
+  // learned_weights.cpp), so one run gives both.
+  for (const SameSample& c : same_cases) {
+    const layering::LearnedTerms terms = layering::learned_terms(c.order_features);
+    layering::EqualCues cues = c.cues;
+    cues.order_log_odds = w.dot(Eigen::Map<const Eigen::VectorXd>(terms.data(), w.size()));
+    const layering::EqualFeatures f = layering::equal_features(cues);
+    same_samples.push_back({{f.begin(), f.end()}, c.y, c.weight});
+  }
   const Eigen::VectorXd v = fit(same_samples, same_ridge);
   int positives = 0, right_same = 0, right_none = 0;
   for (const Sample& s : same_samples) {
@@ -158,8 +173,40 @@ int main(int argc, char** argv) {
   std::printf("%zu boundaries (%d same depth); right: always ordered %.1f%%, model %.1f%%\n",
               same_samples.size(), positives, 100.0 * right_none / same_samples.size(),
               100.0 * right_same / same_samples.size());
-  std::printf("  static constexpr EqualFeatures kWeights = {");
-  for (int k = 0; k < v.size(); ++k) std::printf("%s%.6g", k ? ", " : "", v[k]);
-  std::printf("};\n");
+  if (write.empty()) return 0;
+  // The whole of learned_weights.cpp, so that the committed constants are
+  // exactly what this program printed.
+  std::FILE* f = std::fopen(write.c_str(), "w");
+  if (f == nullptr) {
+    std::fprintf(stderr, "cannot write %s\n", write.c_str());
+    return 1;
+  }
+  std::fprintf(f,
+               "#include \"hair25d/layering/learned_metric.h\"\n\n"
+               "namespace hair25d::layering {\n\n"
+               "// Written by bench/layering/train_layering.cpp on generated drawings only\n"
+               "// (never the annotated cases), Release build:\n"
+               "//   train_layering --cases %d --seed %llu --ridge %g --same-ridge %g --write ...\n"
+               "// %zu occluding boundaries between hair regions of known order; sign right\n"
+               "// on them: paper Φ %.1f%%, these %.1f%%. Order as in learned_terms.\n"
+               "const LearnedTerms& learned_weights() {\n"
+               "  static constexpr LearnedTerms kWeights = {",
+               cases, static_cast<unsigned long long>(seed), ridge, same_ridge, samples.size(),
+               100.0 * right_paper / samples.size(), 100.0 * right_learned / samples.size());
+  for (int k = 0; k < w.size(); ++k)
+    std::fprintf(f, "%s%s%.6g", k ? "," : "", k % 6 ? " " : "\n      ", w[k]);
+  std::fprintf(f,
+               "};\n  return kWeights;\n}\n\n"
+               "// Same program, same drawings: the %zu occluding boundaries between hair\n"
+               "// regions of a judged pair, same depth (%d) against ordered, weighted by\n"
+               "// √(length / line width), the order log-odds from the weights above; right\n"
+               "// on %.1f%% of them (always \"ordered\": %.1f%%). Order as in equal_features.\n"
+               "const EqualFeatures& equal_weights() {\n"
+               "  static constexpr EqualFeatures kWeights = {",
+               same_samples.size(), positives, 100.0 * right_same / same_samples.size(),
+               100.0 * right_none / same_samples.size());
+  for (int k = 0; k < v.size(); ++k) std::fprintf(f, "%s%.6g", k ? ", " : "", v[k]);
+  std::fprintf(f, "};\n  return kWeights;\n}\n\n}  // namespace hair25d::layering\n");
+  std::fclose(f);
   return 0;
 }

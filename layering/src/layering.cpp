@@ -284,6 +284,58 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
         e.wide_right = r.at_start ? after : before;
       }
     }
+    // And from quadratics fitted near the junction (a bent outline's own
+    // direction there), leaving out the blob where the lines merge.
+    const double skip = std::max(1.5, out.line_width);
+    for (int j = 0; j < nj; ++j) {
+      if (cusp[j]) continue;
+      std::vector<Vec2> dirs;
+      for (const Ray& r : rays[j]) {
+        const Polyline& p = bs[r.boundary].points;
+        dirs.push_back(r.at_start
+                           ? curved_leaving_direction(p, skip, reach)
+                           : curved_leaving_direction(Polyline(p.rbegin(), p.rend()), skip, reach));
+      }
+      const RaySectors around = sectors_around(dirs);
+      const int n = static_cast<int>(dirs.size());
+      for (int k = 0; k < n; ++k) {
+        const Ray& r = rays[j][around.order[k]];
+        const double after = around.sectors[k];
+        const double before = around.sectors[(k + n - 1) % n];
+        EndAngles& e = r.at_start ? out.boundaries[r.boundary].cues.start
+                                  : out.boundaries[r.boundary].cues.end;
+        e.curved_left = r.at_start ? before : after;
+        e.curved_right = r.at_start ? after : before;
+      }
+    }
+    // And off the label map: each region's share of a circle about the
+    // junction.
+    const LabelMap& lab = out.labels;
+    for (int j = 0; j < nj; ++j) {
+      if (cusp[j]) continue;
+      const Vec2 centre = graph.junctions[j].position;
+      for (int wide = 0; wide < 2; ++wide) {
+        const double radius = std::max(wide ? 8.0 : 4.0, (wide ? 5.0 : 2.5) * out.line_width);
+        const int samples =
+            std::max(32, static_cast<int>(std::ceil(2 * std::numbers::pi * radius)));
+        std::map<int, int> count;
+        for (int k = 0; k < samples; ++k) {
+          const double t = 2 * std::numbers::pi * (k + 0.5) / samples;
+          const int x = static_cast<int>(std::floor(centre.x() + radius * std::cos(t)));
+          const int y = static_cast<int>(std::floor(centre.y() + radius * std::sin(t)));
+          ++count[lab.contains(x, y) ? lab.at(x, y) : kOutsideLabel];
+        }
+        for (const Ray& r : rays[j]) {
+          const Boundary& b = bs[r.boundary];
+          EndAngles& e = r.at_start ? out.boundaries[r.boundary].cues.start
+                                    : out.boundaries[r.boundary].cues.end;
+          const double l = 2 * std::numbers::pi * count[b.left] / samples;
+          const double rr = 2 * std::numbers::pi * count[b.right] / samples;
+          (wide ? e.circle_wide_left : e.circle_left) = l;
+          (wide ? e.circle_wide_right : e.circle_right) = rr;
+        }
+      }
+    }
   };
   junction_cues();
   if (!hair_junction)
@@ -306,6 +358,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     // Region areas (Green's theorem over each region's boundaries, walked with
     // the region on their left) and perimeters, for the learned metric.
     std::map<int, double> area, perimeter;
+    std::map<std::pair<int, int>, double> common;  // length shared by two regions
     for (int i = 0; i < nb; ++i) {
       const Polyline& p = bs[i].points;
       double twice = 0.0;
@@ -317,6 +370,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       area[bs[i].right] -= 0.5 * twice;
       perimeter[bs[i].left] += out.boundaries[i].length;
       perimeter[bs[i].right] += out.boundaries[i].length;
+      if (bs[i].left != bs[i].right)
+        common[key(bs[i].left, bs[i].right)] += out.boundaries[i].length;
     }
     for (int i = 0; i < nb; ++i) {
       BoundaryReport& rep = out.boundaries[i];
@@ -325,6 +380,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       rep.cues.area_right = std::abs(area[bs[i].right]);
       rep.cues.perimeter_left = perimeter[bs[i].left];
       rep.cues.perimeter_right = perimeter[bs[i].right];
+      const double shared = common[key(bs[i].left, bs[i].right)];
+      rep.cues.shared_left = perimeter[bs[i].left] > 0 ? shared / perimeter[bs[i].left] : 0.0;
+      rep.cues.shared_right = perimeter[bs[i].right] > 0 ? shared / perimeter[bs[i].right] : 0.0;
       rep.features = boundary_features(rep.cues);
       rep.learned = learned_metric(rep.features);
     }

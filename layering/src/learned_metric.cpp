@@ -44,6 +44,20 @@ BoundaryFeatures boundary_features(const BoundaryCues& c) {
     f[15] += (wa - wb) / kPi;
     f[16] += straight(wa) - straight(wb);
     f[17] += tip(wa) - tip(wb);
+    const double ca = e.curved_left, cb = e.curved_right;
+    f[18] += junction_metric(ca, cb);
+    f[19] += (ca - cb) / kPi;
+    f[20] += straight(ca) - straight(cb);
+    f[21] += straight(ca) * right_angle(cb) - straight(cb) * right_angle(ca);
+    f[22] += tip(ca) * (1.0 - straight(cb)) - tip(cb) * (1.0 - straight(ca));
+    const double oa = e.circle_left, ob = e.circle_right;
+    f[24] += (oa - ob) / kPi;
+    f[25] += straight(oa) - straight(ob);
+    f[26] += tip(oa) - tip(ob);
+    const double pa = e.circle_wide_left, pb = e.circle_wide_right;
+    f[27] += (pa - pb) / kPi;
+    f[28] += straight(pa) - straight(pb);
+    f[29] += tip(pa) - tip(pb);
   }
   f[6] = std::clamp(c.phi_r, -1.0, 1.0);
   f[7] = safe_log(c.area_left) - safe_log(c.area_right);
@@ -54,6 +68,7 @@ BoundaryFeatures boundary_features(const BoundaryCues& c) {
   };
   f[8] = compact(c.area_left, c.perimeter_left) - compact(c.area_right, c.perimeter_right);
   f[9] = c.turning / kPi;
+  f[23] = c.shared_left - c.shared_right;
   return f;
 }
 

@@ -1,5 +1,6 @@
 #include "hair25d/layering/metrics.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -57,6 +58,38 @@ Vec2 leaving_direction(const Polyline& curve, double reach) {
   Vec2 axis = eig.eigenvectors().col(1);
   if (axis.dot(mean) < 0) axis = -axis;
   return axis.normalized();
+}
+
+Vec2 curved_leaving_direction(const Polyline& curve, double skip, double reach) {
+  if (curve.size() < 2) return Vec2(1, 0);
+  const Vec2 origin = curve.front();
+  // x(u) = a u + b u², y likewise, through the junction, u the distance from
+  // it: the tangent (a_x, a_y) at u = 0 is what a bent outline had there,
+  // which a straight line through the points (leaving_direction) bends
+  // toward its chord. The first `skip` pixels, where the lines of the
+  // junction merge into one blob, are left out.
+  Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d rhs_x = Eigen::Vector2d::Zero(), rhs_y = Eigen::Vector2d::Zero();
+  double along = 0.0;
+  int used = 0;
+  for (std::size_t i = 1; i < curve.size(); ++i) {
+    along += (curve[i] - curve[i - 1]).norm();
+    if (along > reach && used >= 3) break;
+    const Vec2 d = curve[i] - origin;
+    const double u = d.norm();
+    if (u < skip) continue;
+    const Eigen::Vector2d basis(u, u * u);
+    normal += basis * basis.transpose();
+    rhs_x += basis * d.x();
+    rhs_y += basis * d.y();
+    ++used;
+  }
+  if (used < 3) return leaving_direction(curve, reach);
+  const Eigen::LDLT<Eigen::Matrix2d> solve(normal);
+  const Vec2 tangent(solve.solve(rhs_x)(0), solve.solve(rhs_y)(0));
+  if (!(tangent.squaredNorm() > 1e-12) || !tangent.allFinite())
+    return leaving_direction(curve, reach);
+  return tangent.normalized();
 }
 
 RaySectors sectors_around(const std::vector<Vec2>& rays) {

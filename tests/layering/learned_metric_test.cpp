@@ -17,7 +17,11 @@ BoundaryCues swapped(BoundaryCues c) {
   for (EndAngles* e : {&c.start, &c.end}) {
     std::swap(e->left, e->right);
     std::swap(e->wide_left, e->wide_right);
+    std::swap(e->curved_left, e->curved_right);
+    std::swap(e->circle_left, e->circle_right);
+    std::swap(e->circle_wide_left, e->circle_wide_right);
   }
+  std::swap(c.shared_left, c.shared_right);
   std::swap(c.start, c.end);  // walked the other way
   std::swap(c.area_left, c.area_right);
   std::swap(c.perimeter_left, c.perimeter_right);
@@ -33,6 +37,16 @@ TEST(LearnedMetric, ChangesSignWhenTheBoundaryIsWalkedTheOtherWay) {
     BoundaryCues c;
     c.start = {i % 3 != 0, angle(rng), angle(rng), 3 + i % 2, angle(rng), angle(rng)};
     c.end = {i % 5 != 0, angle(rng), angle(rng), 3 + i % 3, angle(rng), angle(rng)};
+    for (EndAngles* e : {&c.start, &c.end}) {
+      e->curved_left = angle(rng);
+      e->curved_right = angle(rng);
+      e->circle_left = angle(rng);
+      e->circle_right = angle(rng);
+      e->circle_wide_left = angle(rng);
+      e->circle_wide_right = angle(rng);
+    }
+    c.shared_left = 0.5 + 0.5 * unit(rng);
+    c.shared_right = 0.5 + 0.5 * unit(rng);
     c.phi_r = 2 * unit(rng);
     c.turning = kPi * unit(rng);
     c.area_left = size(rng);
@@ -47,8 +61,9 @@ TEST(LearnedMetric, ChangesSignWhenTheBoundaryIsWalkedTheOtherWay) {
 
 TEST(LearnedMetric, BarOfAnIdealTIsOnTop) {
   BoundaryCues c;
-  c.start = {true, kPi, kPi / 2, 3, kPi, kPi / 2};
-  c.end = {true, kPi, kPi / 2, 3, kPi, kPi / 2};
+  // Every way of measuring the sectors sees the same ideal T.
+  c.start = {true, kPi, kPi / 2, 3, kPi, kPi / 2, kPi, kPi / 2, kPi, kPi / 2, kPi, kPi / 2};
+  c.end = c.start;
   c.area_left = c.area_right = 1000;
   c.perimeter_left = c.perimeter_right = 200;
   EXPECT_GT(learned_metric(boundary_features(c)), 1.0);
@@ -60,7 +75,7 @@ TEST(LearnedMetric, ConvexSideIsOnTopWithoutJunctions) {
   c.phi_r = 0.3;
   c.area_left = c.area_right = 1000;
   c.perimeter_left = c.perimeter_right = 200;
-  EXPECT_GT(learned_metric(boundary_features(c)), 0.5);
+  EXPECT_GT(learned_metric(boundary_features(c)), 0.25);
 }
 
 TEST(LearnedMetric, CuspEndsSayNothing) {

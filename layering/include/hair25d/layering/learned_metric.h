@@ -17,6 +17,16 @@ struct EndAngles {
   // The same sectors from directions fitted over a 3 × longer arc.
   double wide_left = 0.0;
   double wide_right = 0.0;
+  // The same sectors from tangents of quadratics fitted near the junction
+  // (curved_leaving_direction): a rounded tip or a bent outline keeps its
+  // own direction there.
+  double curved_left = 0.0;
+  double curved_right = 0.0;
+  // The share of a circle about the junction (2.5 and 5 line widths) in the
+  // left and right regions, × 2π: their sectors read off the label map, which
+  // holds where boundaries are short or bend.
+  double circle_left = 0.0, circle_right = 0.0;
+  double circle_wide_left = 0.0, circle_wide_right = 0.0;
 };
 
 // The cues of one boundary between regions `left` and `right`. Every feature
@@ -32,9 +42,13 @@ struct BoundaryCues {
   // How far the boundary turns from its first to its last direction, radians,
   // positive toward its left: the left region is then the convex one.
   double turning = 0.0;
+  // The share of each region's perimeter that borders the other (all their
+  // common boundaries): a strand lying on a mass is bordered mostly by it.
+  double shared_left = 0.0;
+  double shared_right = 0.0;
 };
 
-inline constexpr int kBoundaryFeatureCount = 18;
+inline constexpr int kBoundaryFeatureCount = 30;
 using BoundaryFeatures = std::array<double, kBoundaryFeatureCount>;
 
 BoundaryFeatures boundary_features(const BoundaryCues& cues);

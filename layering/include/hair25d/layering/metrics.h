@@ -30,6 +30,13 @@ double coupling_weight(double theta, double cap);
 // step. Returns the chord direction when the curve is shorter than 2 points apart.
 Vec2 leaving_direction(const Polyline& curve, double reach);
 
+// The tangent at `curve.front()` of a quadratic through it fitted to the
+// points from distance `skip` to arc length `reach` (an addition to the
+// paper: a bent outline keeps its direction at the junction instead of
+// leaning toward its chord). Falls back to leaving_direction with fewer than
+// three points.
+Vec2 curved_leaving_direction(const Polyline& curve, double skip, double reach);
+
 // The sectors between consecutive rays around a junction (rays as unit
 // directions). `order` sorts the rays by increasing atan2(y, x) — clockwise on
 // the screen — and sectors[k] (radians, in (0, 2π]) is the angle swept from
