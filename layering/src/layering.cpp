@@ -123,6 +123,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   report(progress, "layering", 0.0, "boundaries");
 
   Result out;
+  // Grey levels are made on a second core meanwhile (line_response.h).
+  detail::LineResponse lines(image);
   OutlineFill fill;
   if (options.fill_outlines) {
     fill = fill_outlines(regions);
@@ -155,8 +157,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     }
   }
   const int margin = detail::LineResponse::window_margin(out.line_width);
-  const detail::LineResponse lines(image, out.line_width, bx0 - margin, by0 - margin, bx1 + margin,
-                                   by1 + margin);
+  lines.smooth(out.line_width, bx0 - margin, by0 - margin, bx1 + margin, by1 + margin);
   std::set<std::pair<int, int>> fixed_equal;
   for (const RegionRelation& r : options.fixed)
     if (r.relation == Relation::kEqual) fixed_equal.insert(key(r.a, r.b));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <future>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -115,16 +116,44 @@ int LineResponse::window_margin(double line_width) {
   return static_cast<int>(std::ceil(std::max(grey, colour)));
 }
 
+LineResponse::LineResponse(const Image& image) : image_(&image) {
+  const int w = image.width(), h = image.height();
+  raw_ = std::make_unique_for_overwrite<float[]>(static_cast<std::size_t>(w) * h);
+  image_translucent_.assign(h, 0);
+  // The grey levels need nothing but the image: a second core converts them
+  // while the caller fills outlines and traces boundaries. It writes only
+  // raw_ and image_translucent_, which nothing reads before smooth() waits.
+  auto convert = [this, w, h] {
+    cv::Mat raw(h, w, CV_32F, raw_.get());
+    grey_into(*image_, 0, 0, cv::Rect(0, 0, w, h), raw, image_translucent_.data());
+  };
+  converting_ = std::async(std::launch::async | std::launch::deferred, convert);
+}
+
 LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0, int x1, int y1)
-    : line_width_(std::max(1.0, line_width)) {
+    : LineResponse(image) {
+  smooth(line_width, x0, y0, x1, y1);
+}
+
+LineResponse::~LineResponse() {
+  // The conversion reads the image and writes this object's buffers: it must
+  // end before they go (also when smooth() was never called).
+  if (converting_.valid()) converting_.wait();
+}
+
+void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
+  converting_.get();  // rethrows what the conversion threw
+  const Image& image = *image_;
+  line_width_ = std::max(1.0, line_width);
   x0_ = std::clamp(x0, 0, std::max(0, image.width() - 1));
   y0_ = std::clamp(y0, 0, std::max(0, image.height() - 1));
   w_ = std::clamp(x1, x0_ + 1, image.width()) - x0_;
   h_ = std::clamp(y1, y0_ + 1, image.height()) - y0_;
   const std::size_t n = static_cast<std::size_t>(w_) * h_;
   grey_ = std::make_unique_for_overwrite<float[]>(n);
-  image_ = &image;
-  std::vector<std::uint8_t> translucent(h_, 0);
+  translucent_rows_.assign(h_ + 1, 0);
+  for (int y = 0; y < h_; ++y)
+    translucent_rows_[y + 1] = translucent_rows_[y] + image_translucent_[y0_ + y];
   try {
     // Colours for the paint on each side are smoothed at half a line width
     // (screentone dots and JPEG blocks average to their tone) only where
@@ -139,25 +168,38 @@ LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0
     colour_weights_.assign((ksize + 3) / 4 * 16, 0.0f);
     for (int i = 0; i < 4 * ksize; ++i) colour_weights_[i] = colour_kernel_[i / 4];
 #endif
+    const cv::Mat raw(image.height(), image.width(), CV_32F, raw_.get());
+    const cv::Mat grey = raw(cv::Rect(x0_, y0_, w_, h_));
     cv::Mat smooth(h_, w_, CV_32F, grey_.get());
-    cv::Mat grey(h_, w_, CV_32F);
-    grey_into(image, x0_, y0_, cv::Rect(0, 0, w_, h_), grey, translucent.data());
-    translucent_rows_.assign(h_ + 1, 0);
-    for (int y = 0; y < h_; ++y) translucent_rows_[y + 1] = translucent_rows_[y] + translucent[y];
-    // Noise: MAD of a 3x3 Laplacian on the raw grey image, over pixels where
-    // it is small (flat areas), scaled for a Gaussian.
+    // Smooth at about a quarter line width: tones (screentone dots, JPEG
+    // ringing) average out while a line keeps most of its depth. The top
+    // rows on a second core, the bottom ones here after the noise. A band
+    // reads the rows around it from the image (a pixel beyond the window
+    // differs from the replicated edge, but no sample reads that far:
+    // window_margin), so the values are those of one call.
+    const double sigma = grey_sigma(line_width_);
+    const int split = h_ * 11 / 20;
+    auto blur_rows = [&](int r0, int r1) {
+      if (r1 <= r0) return;
+      cv::Mat dst = smooth.rowRange(r0, r1);
+      cv::GaussianBlur(grey.rowRange(r0, r1), dst, cv::Size(0, 0), sigma, sigma,
+                       cv::BORDER_REPLICATE);
+    };
+    auto top = std::async(n > 20000 ? std::launch::async : std::launch::deferred,
+                          [&] { blur_rows(0, split); });
+    // Noise: MAD of a 3x3 Laplacian on the raw grey window (its edges
+    // reflected), over pixels where it is small (flat areas), scaled for a
+    // Gaussian.
     cv::Mat lap;
-    cv::Laplacian(grey, lap, CV_32F, 1);
+    cv::Laplacian(grey, lap, CV_32F, 1, 1.0, 0.0, cv::BORDER_DEFAULT | cv::BORDER_ISOLATED);
     std::vector<double> mags;
     mags.reserve(n / 16 + 1);
     for (int y = 0; y < h_; y += 4)
       for (int x = 0; x < w_; x += 4) mags.push_back(std::abs(lap.at<float>(y, x)));
     // A 4-neighbour Laplacian of i.i.d. noise has σ·√20.
     noise_sigma_ = median_of(mags) * 1.4826 / std::sqrt(20.0);
-    // Smooth at about a quarter line width: tones (screentone dots, JPEG
-    // ringing) average out while a line keeps most of its depth.
-    const double sigma = grey_sigma(line_width_);
-    cv::GaussianBlur(grey, smooth, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
+    blur_rows(split, h_);
+    top.get();
   } catch (const cv::Exception& e) {
     throw Error(std::string("layering: OpenCV failed while measuring lines: ") + e.what());
   }

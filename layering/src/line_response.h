@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <vector>
 
@@ -33,6 +34,17 @@ class LineResponse {
   // holds the boundaries, with a margin. Samples outside it are clamped.
   // Colours are read from `image` when sampled: it must outlive this.
   LineResponse(const Image& image, double line_width, int x0, int y0, int x1, int y1);
+
+  // The same in two steps: the constructor starts converting `image` to grey
+  // levels on a second core (the caller meanwhile prepares the boundaries),
+  // smooth() then smooths the window once the line width is known. Nothing
+  // may be measured before smooth().
+  explicit LineResponse(const Image& image);
+  void smooth(double line_width, int x0, int y0, int x1, int y1);
+
+  LineResponse(const LineResponse&) = delete;
+  LineResponse& operator=(const LineResponse&) = delete;
+  ~LineResponse();
 
   // How far the window must reach beyond the boundaries measured for their
   // measurements to be those on the whole image: the farthest sample, its
@@ -74,9 +86,14 @@ class LineResponse {
   int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
   double line_width_ = 1.0;
   double noise_sigma_ = 0.0;
+  const Image* image_ = nullptr;  // colours are smoothed from it where sampled
+  // Grey levels of the whole image, unsmoothed, and per image row whether it
+  // holds a translucent pixel; made on a second core (converting_).
+  std::unique_ptr<float[]> raw_;
+  std::vector<std::uint8_t> image_translucent_;
+  std::future<void> converting_;
   // w_ × h_, row-major.
   std::unique_ptr<float[]> grey_;
-  const Image* image_ = nullptr;  // colours are smoothed from it where sampled
   std::vector<float> colour_kernel_;
   // Each weight four times (a pixel's lanes), zero-padded to a multiple of 4 weights.
   std::vector<float> colour_weights_;
