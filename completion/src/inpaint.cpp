@@ -98,6 +98,7 @@ class Filler {
 
   InpaintResult run() {
     InpaintResult result;
+    make_offsets();
     for (int y = 0; y < h_; ++y)
       for (int x = 0; x < w_; ++x)
         if (on_front(x, y)) push(x, y);
@@ -184,11 +185,85 @@ class Filler {
     heap_.push({c * d, x, y, s});
   }
 
+  // One pixel of the target patch as the SSD sees it: its offset from the
+  // patch centre and the colour it is compared with.
+  struct TargetPixel {
+    std::ptrdiff_t offset;
+    int r, g, b, a;
+  };
+
+  // The target patch's known pixels (`known`) and, in cel mode, its unknown
+  // ones with the coarse fill's colours (`guided`), each list split in rows
+  // (`row_end`) so a candidate can stop as soon as it is worse.
+  struct Target {
+    std::vector<TargetPixel> pixels;
+    std::vector<int> row_end;    // end of each row in `pixels`
+    std::vector<bool> guided;    // per row: the row holds guided pixels after known ones
+    std::vector<int> known_end;  // per row: end of the known pixels of the row
+  };
+
+  void make_target(int x, int y, Target* t) const {
+    const int r = r_;
+    t->pixels.clear();
+    t->row_end.clear();
+    t->known_end.clear();
+    for (int dy = -r; dy <= r; ++dy) {
+      const int ty = y + dy;
+      if (ty < 0 || ty >= h_) continue;
+      for (int dx = -r; dx <= r; ++dx) {
+        const int tx = x + dx;
+        if (tx < 0 || tx >= w_ || !known_[idx(tx, ty)]) continue;
+        const Rgba& a = image_.data()[idx(tx, ty)];
+        t->pixels.push_back({static_cast<std::ptrdiff_t>(dy) * w_ + dx, a.r, a.g, a.b, a.a});
+      }
+      t->known_end.push_back(static_cast<int>(t->pixels.size()));
+      if (guide_ != nullptr)
+        for (int dx = -r; dx <= r; ++dx) {
+          const int tx = x + dx;
+          if (tx < 0 || tx >= w_ || known_[idx(tx, ty)]) continue;
+          const Rgba& a = guide_->data()[idx(tx, ty)];
+          t->pixels.push_back({static_cast<std::ptrdiff_t>(dy) * w_ + dx, a.r, a.g, a.b, a.a});
+        }
+      t->row_end.push_back(static_cast<int>(t->pixels.size()));
+    }
+  }
+
+  // SSD of the candidate centred at pixel index `c`, starting from `ssd` (the
+  // distance term); stops (returning a value >= limit) once it reaches
+  // `limit`.
+  long patch_ssd(const Target& t, std::size_t c, long ssd, long limit, long guide_w) const {
+    const Rgba* base = image_.data() + c;
+    int begin = 0;
+    for (std::size_t row = 0; row < t.row_end.size() && ssd < limit; ++row) {
+      const int known_end = t.known_end[row], end = t.row_end[row];
+      int acc = 0;
+      for (int i = begin; i < known_end; ++i) {
+        const TargetPixel& p = t.pixels[i];
+        const Rgba& b = base[p.offset];
+        const int dr = p.r - b.r, dg = p.g - b.g, db = p.b - b.b;
+        acc += dr * dr + dg * dg + db * db;
+        if (guide_ != nullptr) acc += (p.a - b.a) * (p.a - b.a);
+      }
+      ssd += acc;
+      for (int i = known_end; i < end; ++i) {
+        const TargetPixel& p = t.pixels[i];
+        const Rgba& b = base[p.offset];
+        const int dr = p.r - b.r, dg = p.g - b.g, db = p.b - b.b, da = p.a - b.a;
+        ssd += (guide_w * (dr * dr + dg * dg + db * db + da * da)) >> 8;
+      }
+      begin = end;
+    }
+    return ssd;
+  }
+
   // Best source patch centre for the target at (x, y): least SSD over the
-  // target's known pixels, searched in a window that widens until it holds one.
+  // target's known pixels plus distance_weight × squared distance, searched in
+  // a window that widens until it holds one; ties go to the first candidate
+  // in raster order. Candidates are visited nearest first, so a good match is
+  // found early: a candidate stops summing once it is worse, and the search
+  // stops once the distance term alone is worse than the best match.
   bool best_source(int x, int y, int* bx, int* by) const {
     const int r = r_;
-    long best = std::numeric_limits<long>::max();
     // Ink in the target's known part: a source may hold at most about twice
     // as much (the line continued), none when the known part has none. Only
     // original ink counts: copied ink licensing more ink would let a feature
@@ -199,39 +274,75 @@ class Filler {
         for (int dx = -r; dx <= r; ++dx)
           if (is_known(x + dx, y + dy)) target_ink += ink_[idx(x + dx, y + dy)];
     const long guide_w = std::lround(o_.guide_weight * 256);
+    Target& target = target_;
+    make_target(x, y, &target);
+    const int step = o_.search_step;
+    long best = std::numeric_limits<long>::max();
+    int best_x = 0, best_y = 0;
+    auto consider = [&](int cx, int cy, long distance_term) {
+      if (!valid_[idx(cx, cy)]) return;
+      if (!ink_.empty() && ink_sum(cx - r, cy - r, cx + r + 1, cy + r + 1) > 2 * target_ink) return;
+      // A candidate earlier in raster order than the best wins a tie.
+      const bool none = best == std::numeric_limits<long>::max();
+      const bool earlier = cy < best_y || (cy == best_y && cx < best_x);
+      const long limit = none ? best : earlier ? best + 1 : best;
+      if (distance_term >= limit) return;
+      const long ssd = patch_ssd(target, idx(cx, cy), distance_term, limit, guide_w);
+      if (ssd < limit) best = ssd, best_x = cx, best_y = cy;
+    };
     for (int radius = o_.search_radius;; radius *= 2) {
-      const int step = o_.search_step;
-      for (int cy = std::max(r, y - radius); cy <= std::min(h_ - 1 - r, y + radius); cy += step)
-        for (int cx = std::max(r, x - radius); cx <= std::min(w_ - 1 - r, x + radius); cx += step) {
-          if (!valid_[idx(cx, cy)]) continue;
-          if (!ink_.empty() && ink_sum(cx - r, cy - r, cx + r + 1, cy + r + 1) > 2 * target_ink)
-            continue;
-          long ssd =
-              static_cast<long>(o_.distance_weight * ((cx - x) * (cx - x) + (cy - y) * (cy - y)));
-          for (int dy = -r; dy <= r && ssd < best; ++dy) {
-            const int ty = y + dy;
-            if (ty < 0 || ty >= h_) continue;
-            for (int dx = -r; dx <= r; ++dx) {
-              const int tx = x + dx;
-              if (tx < 0 || tx >= w_) continue;
-              const Rgba& b = image_.data()[idx(cx + dx, cy + dy)];
-              if (known_[idx(tx, ty)]) {
-                const Rgba& a = image_.data()[idx(tx, ty)];
-                const int dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-                ssd += dr * dr + dg * dg + db * db;
-                if (guide_ != nullptr) ssd += (a.a - b.a) * (a.a - b.a);
-              } else if (guide_ != nullptr) {
-                const Rgba& a = guide_->data()[idx(tx, ty)];
-                const int dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b, da = a.a - b.a;
-                ssd += (guide_w * (dr * dr + dg * dg + db * db + da * da)) >> 8;
-              }
-            }
-          }
-          if (ssd < best) best = ssd, *bx = cx, *by = cy;
+      const int y0 = std::max(r, y - radius), y1 = std::min(h_ - 1 - r, y + radius);
+      const int x0 = std::max(r, x - radius), x1 = std::min(w_ - 1 - r, x + radius);
+      if (radius == o_.search_radius) {
+        // The window's grid (every step-th pixel from its clamped corner)
+        // visited nearest first from the precomputed order of its phase.
+        const int phase_x = ((x0 - x) % step + step) % step;
+        const int phase_y = ((y0 - y) % step + step) % step;
+        for (const Offset& off : nearest_[phase_y * step + phase_x]) {
+          if (off.distance_term > best) break;  // every later one is farther
+          const int cx = x + off.dx, cy = y + off.dy;
+          if (cx < x0 || cx > x1 || cy < y0 || cy > y1) continue;
+          consider(cx, cy, off.distance_term);
         }
-      if (best != std::numeric_limits<long>::max()) return true;
+      } else {
+        for (int cy = y0; cy <= y1; cy += step)
+          for (int cx = x0; cx <= x1; cx += step)
+            consider(cx, cy,
+                     static_cast<long>(o_.distance_weight *
+                                       ((cx - x) * (cx - x) + (cy - y) * (cy - y))));
+      }
+      if (best != std::numeric_limits<long>::max()) {
+        *bx = best_x, *by = best_y;
+        return true;
+      }
       if (radius > w_ + h_) return false;
     }
+  }
+
+  // Candidate offsets of the first search window for each phase of its grid
+  // (dx ≡ phase_x, dy ≡ phase_y modulo search_step), nearest first.
+  struct Offset {
+    int dx, dy;
+    long distance_term;
+  };
+  void make_offsets() {
+    const int step = o_.search_step, radius = o_.search_radius;
+    nearest_.assign(static_cast<std::size_t>(step) * step, {});
+    for (int py = 0; py < step; ++py)
+      for (int px = 0; px < step; ++px) {
+        std::vector<Offset>& list = nearest_[py * step + px];
+        // The grid starts at the clamped corner, at most `radius` away.
+        for (int dy = -radius; dy <= radius; ++dy) {
+          if (((dy % step) + step) % step != py) continue;
+          for (int dx = -radius; dx <= radius; ++dx) {
+            if (((dx % step) + step) % step != px) continue;
+            list.push_back({dx, dy, static_cast<long>(o_.distance_weight * (dx * dx + dy * dy))});
+          }
+        }
+        std::stable_sort(list.begin(), list.end(), [](const Offset& a, const Offset& b) {
+          return a.distance_term < b.distance_term;
+        });
+      }
   }
 
   int fill_patch(int x, int y, InpaintResult* result) {
@@ -307,6 +418,8 @@ class Filler {
   unsigned stamp_counter_ = 0;
   std::priority_queue<Item> heap_;
   long remaining_ = 0;
+  std::vector<std::vector<Offset>> nearest_;  // make_offsets()
+  mutable Target target_;                     // best_source's scratch
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "hair25d/core/error.h"
+#include "inside_test.h"
 #include "medial_graph.h"
 #include "polygon_sampling.h"
 #include "tips.h"
@@ -59,13 +60,13 @@ int nearest_node(const MedialGraph& g, const Vec2& p, const std::vector<bool>* a
 // The chordal axis zig-zags where the triangulation fans out in wide parts:
 // a few Laplacian passes straighten a branch (ends fixed); a point that would
 // leave the shape keeps its place.
-Polyline smooth_branch(const Polyline& branch, const Polyline& outline, int passes) {
+Polyline smooth_branch(const Polyline& branch, const detail::InsideTest& outline, int passes) {
   Polyline cur = branch;
   for (int k = 0; k < passes; ++k) {
     Polyline next = cur;
     for (std::size_t i = 1; i + 1 < cur.size(); ++i) {
       const Vec2 p = 0.5 * cur[i] + 0.25 * (cur[i - 1] + cur[i + 1]);
-      if (point_in_polygon(outline, p)) next[i] = p;
+      if (outline.contains(p)) next[i] = p;
     }
     cur = std::move(next);
   }
@@ -76,6 +77,7 @@ Skeleton resample_tree(const MedialGraph& g, int root, const std::vector<int>& p
                        const std::vector<int>& tip_nodes, double spacing, const Polyline& outline,
                        int smoothing) {
   const int n = static_cast<int>(g.nodes.size());
+  const detail::InsideTest inside(outline);
   std::vector<bool> used(n, false);
   for (int t : tip_nodes)
     for (int v = t; v >= 0 && !used[v]; v = parent[v]) used[v] = true;
@@ -101,7 +103,7 @@ Skeleton resample_tree(const MedialGraph& g, int root, const std::vector<int>& p
         v = children[v][0];
       }
       const Polyline resampled =
-          resample_polyline(smooth_branch(branch, outline, smoothing), spacing);
+          resample_polyline(smooth_branch(branch, inside, smoothing), spacing);
       int prev = out_index;
       for (std::size_t k = 1; k < resampled.size(); ++k) {
         s.nodes.push_back(resampled[k]);

@@ -93,6 +93,58 @@ TEST(ModelStage, AnnotatedCaseBuildsWritesAndReadsBack) {
   fs::remove_all(dir);
 }
 
+// The contact sheet's panels: the drawing as it is (top left), completed
+// areas tinted light blue (top right), depth colours (bottom left), skeletons
+// (bottom right); panels are the drawing shrunk by a whole factor.
+TEST(ModelStage, ContactSheetShowsTheCompletedAreasInLightBlue) {
+  const AnnotatedCase c = read_annotated_case(HAIR25D_TEST_DATA_DIR "/annotated/case1");
+  const ModelRun run = build_model(c.image, c.regions, relations_of(c), {}, c.head_center);
+  const int side = 200;
+  const Image sheet = render_contact_sheet(run, side);
+  const int factor = (std::max(c.image.width(), c.image.height()) + side - 1) / side;
+  const int pw = (c.image.width() + factor - 1) / factor;
+  const int ph = (c.image.height() + factor - 1) / factor;
+  ASSERT_EQ(sheet.width(), 2 * pw + 24);
+  ASSERT_EQ(sheet.height(), 2 * ph + 24);
+  // Panel pixels whose every source pixel is completed (a hidden part) are
+  // bluer in the completion panel than in the drawing panel; pixels with no
+  // strand at all are the same in both.
+  LabelMap completed(c.image.width(), c.image.height()), any(c.image.width(), c.image.height());
+  for (std::size_t i = 0; i < run.strands.size(); ++i) {
+    const LabelMap& mask = run.strands[i].mask;
+    const Eigen::Vector2i o = run.model.strands[i].texture_origin;
+    for (int y = 0; y < mask.height(); ++y)
+      for (int x = 0; x < mask.width(); ++x) {
+        if (mask.at(x, y) == 2) completed.at(x + o.x(), y + o.y()) = 1;
+        if (mask.at(x, y) != 0) any.at(x + o.x(), y + o.y()) = 1;
+      }
+  }
+  int tinted = 0, all_completed = 0, untouched = 0, empty = 0;
+  for (int py = 0; py < ph - 1; ++py)
+    for (int px = 0; px < pw - 1; ++px) {
+      int n_completed = 0, n_any = 0;
+      bool background_is_drawing = true;
+      for (int y = py * factor; y < (py + 1) * factor; ++y)
+        for (int x = px * factor; x < (px + 1) * factor; ++x) {
+          n_completed += completed.at(x, y), n_any += any.at(x, y);
+          background_is_drawing &= run.model.background.at(x, y) == c.image.at(x, y);
+        }
+      const Rgba drawn = sheet.at(8 + px, 8 + py);
+      const Rgba shown = sheet.at(16 + pw + px, 8 + py);
+      if (n_completed == factor * factor) {
+        ++all_completed;
+        tinted += shown.b > shown.r && shown.b >= 150;
+      } else if (n_any == 0 && background_is_drawing) {
+        ++empty;
+        untouched += shown == drawn;
+      }
+    }
+  ASSERT_GT(all_completed, 20);
+  EXPECT_GE(tinted, 0.95 * all_completed);
+  ASSERT_GT(empty, 100);
+  EXPECT_EQ(untouched, empty);
+}
+
 TEST(ModelStage, WriteModelRunPutsTheContactSheetInsideTheAtomicFolder) {
   const fs::path dir = scratch("atomic");
   fs::create_directories(dir);

@@ -52,6 +52,18 @@ TEST(SegmentStage, StrokesGiveLabelledRegionsAndOverlay) {
   EXPECT_GE(progress.calls, 3);
 }
 
+TEST(SegmentStage, WithoutTheOverlayTheRegionsAreTheSame) {
+  const Image img = split_drawing();
+  Strokes s;
+  s.strokes = {{3, 3.0, {{10, 30}, {20, 40}}}, {8, 3.0, {{80, 10}}}};
+  const SegmentRun with = run_segment(img, &s);
+  const SegmentRun without = run_segment(img, &s, nullptr, false);
+  EXPECT_TRUE(without.overlay.empty());
+  EXPECT_FALSE(with.overlay.empty());
+  EXPECT_EQ(without.regions, with.regions);
+  EXPECT_EQ(without.segmentation.triangle_region, with.segmentation.triangle_region);
+}
+
 TEST(SegmentStage, WithoutStrokesRegionsAreNumberedFromOne) {
   const SegmentRun run = run_segment(split_drawing(), nullptr);
   EXPECT_EQ(run.regions.labels(), (std::vector<int>{1, 2}));

@@ -26,7 +26,7 @@ LayeringCaseResult evaluate_one(const AnnotatedCase& c, const LayeringEvalOption
                 ") has no strokes.json; --from-strokes needs one per case");
   LabelMap regions = c.regions;
   try {
-    if (options.from_strokes) regions = run_segment(c.image, &*c.strokes).regions;
+    if (options.from_strokes) regions = run_segment(c.image, &*c.strokes, nullptr, false).regions;
     const auto start = std::chrono::steady_clock::now();
     layering::Result result = layering::layer_regions(c.image, regions, options.layering);
     const double seconds =

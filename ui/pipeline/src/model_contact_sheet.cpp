@@ -3,25 +3,45 @@
 // skeletons.
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <vector>
 
 #include "hair25d/pipeline/model_stage.h"
 
 namespace hair25d::pipeline {
 namespace {
 
-void blend(Image& img, int x, int y, Rgba c, double alpha) {
+// Integer alpha blending (alpha in 0..255, rounded to nearest): the panels
+// are drawn at full resolution, so this runs a few million times.
+void blend(Image& img, int x, int y, Rgba c, int alpha) {
   if (!img.contains(x, y)) return;
   Rgba& d = img.at(x, y);
+  const int keep = 255 - alpha;
   auto mix = [&](std::uint8_t a, std::uint8_t b) {
-    return static_cast<std::uint8_t>(std::lround(a * (1 - alpha) + b * alpha));
+    return static_cast<std::uint8_t>((a * keep + b * alpha + 127) / 255);
   };
   d = {mix(d.r, c.r), mix(d.g, c.g), mix(d.b, c.b), 255};
 }
 
+// Every pixel of `img` blended towards `c`.
+void wash(Image& img, Rgba c, int alpha) {
+  const int keep = 255 - alpha;
+  for (Rgba& d : std::span(img.data(), static_cast<std::size_t>(img.width()) * img.height())) {
+    d.r = static_cast<std::uint8_t>((d.r * keep + c.r * alpha + 127) / 255);
+    d.g = static_cast<std::uint8_t>((d.g * keep + c.g * alpha + 127) / 255);
+    d.b = static_cast<std::uint8_t>((d.b * keep + c.b * alpha + 127) / 255);
+    d.a = 255;
+  }
+}
+
 void disc(Image& img, const Vec2& p, double r, Rgba c) {
-  for (int y = static_cast<int>(p.y() - r); y <= static_cast<int>(p.y() + r); ++y)
-    for (int x = static_cast<int>(p.x() - r); x <= static_cast<int>(p.x() + r); ++x)
-      if ((Vec2(x + 0.5, y + 0.5) - p).norm() <= r) blend(img, x, y, c, 1.0);
+  const int x0 = std::max(0, static_cast<int>(p.x() - r));
+  const int x1 = std::min(img.width() - 1, static_cast<int>(p.x() + r));
+  const int y0 = std::max(0, static_cast<int>(p.y() - r));
+  const int y1 = std::min(img.height() - 1, static_cast<int>(p.y() + r));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+      if ((Vec2(x + 0.5, y + 0.5) - p).squaredNorm() <= r * r) img.at(x, y) = {c.r, c.g, c.b, 255};
 }
 
 void line(Image& img, const Vec2& a, const Vec2& b, double width, Rgba c) {
@@ -30,35 +50,40 @@ void line(Image& img, const Vec2& a, const Vec2& b, double width, Rgba c) {
     disc(img, a + (b - a) * (static_cast<double>(i) / steps), width / 2, c);
 }
 
-// Background, then every strand's texture back to front.
-Image composite(const ModelRun& run, bool tint_completed) {
-  const HairModel& m = run.model;
-  Image out = m.background.empty() ? m.image : m.background;
+// Strand indices back to front.
+std::vector<int> back_to_front(const HairModel& m) {
   std::vector<int> order(m.strands.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return m.strands[a].depth < m.strands[b].depth; });
+  return order;
+}
+
+// Background, then every strand's texture back to front.
+Image composite(const HairModel& m, const std::vector<int>& order) {
+  Image out = m.background.empty() ? m.image : m.background;
   for (int i : order) {
     const Strand& s = m.strands[i];
     for (int y = 0; y < s.texture.height(); ++y)
       for (int x = 0; x < s.texture.width(); ++x) {
         const Rgba t = s.texture.at(x, y);
-        if (t.a == 0) continue;
-        const int gx = x + s.texture_origin.x(), gy = y + s.texture_origin.y();
-        blend(out, gx, gy, t, t.a / 255.0);
+        if (t.a != 0) blend(out, x + s.texture_origin.x(), y + s.texture_origin.y(), t, t.a);
       }
   }
-  // Completed parts lie under other strands by construction: tint them on top
-  // so they can be seen at all.
-  if (tint_completed)
-    for (std::size_t i = 0; i < m.strands.size() && i < run.strands.size(); ++i) {
-      const LabelMap& mask = run.strands[i].mask;
-      const Eigen::Vector2i o = m.strands[i].texture_origin;
-      for (int y = 0; y < mask.height(); ++y)
-        for (int x = 0; x < mask.width(); ++x)
-          if (mask.at(x, y) == 2) blend(out, x + o.x(), y + o.y(), {150, 200, 255, 255}, 0.6);
-    }
   return out;
+}
+
+// Completed parts lie under other strands by construction: tint them on top
+// so they can be seen at all.
+void tint_completed(Image& img, const ModelRun& run) {
+  const HairModel& m = run.model;
+  for (std::size_t i = 0; i < m.strands.size() && i < run.strands.size(); ++i) {
+    const LabelMap& mask = run.strands[i].mask;
+    const Eigen::Vector2i o = m.strands[i].texture_origin;
+    for (int y = 0; y < mask.height(); ++y)
+      for (int x = 0; x < mask.width(); ++x)
+        if (mask.at(x, y) == 2) blend(img, x + o.x(), y + o.y(), {150, 200, 255, 255}, 153);
+  }
 }
 
 Rgba depth_colour(int depth, int max_depth) {
@@ -90,31 +115,27 @@ Image shrink(const Image& in, int max_side) {
 Image render_contact_sheet(const ModelRun& run, int panel_max_side) {
   const HairModel& m = run.model;
   if (m.image.empty()) return {};
-  const Image completed = composite(run, true);
+  const std::vector<int> order = back_to_front(m);
+  Image skeletons = composite(m, order);
+  Image completed = skeletons;
+  tint_completed(completed, run);
 
   Image depth = m.background.empty() ? m.image : m.background;
-  for (int y = 0; y < depth.height(); ++y)
-    for (int x = 0; x < depth.width(); ++x) blend(depth, x, y, {255, 255, 255, 255}, 0.6);
+  wash(depth, {255, 255, 255, 255}, 153);
   int max_depth = 0;
   for (const Strand& s : m.strands) max_depth = std::max(max_depth, s.depth);
-  std::vector<int> order(m.strands.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return m.strands[a].depth < m.strands[b].depth; });
   for (int i : order) {
     const Strand& s = m.strands[i];
+    const Rgba c = depth_colour(s.depth, max_depth);
     for (int y = 0; y < s.texture.height(); ++y)
       for (int x = 0; x < s.texture.width(); ++x)
         if (s.texture.at(x, y).a)
-          blend(depth, x + s.texture_origin.x(), y + s.texture_origin.y(),
-                depth_colour(s.depth, max_depth), 0.85);
+          blend(depth, x + s.texture_origin.x(), y + s.texture_origin.y(), c, 217);
     for (std::size_t k = 0; k < s.outline.size(); ++k)
       line(depth, s.outline[k], s.outline[(k + 1) % s.outline.size()], 1.5, {30, 30, 30, 255});
   }
 
-  Image skeletons = composite(run, false);
-  for (int y = 0; y < skeletons.height(); ++y)
-    for (int x = 0; x < skeletons.width(); ++x) blend(skeletons, x, y, {255, 255, 255, 255}, 0.45);
+  wash(skeletons, {255, 255, 255, 255}, 115);
   const double w = std::max(2.0, std::max(m.width, m.height) / 300.0);
   for (const Strand& s : m.strands) {
     const Skeleton& k = s.skeleton;

@@ -236,7 +236,7 @@ ModelRun run_model(const Image& image, const LabelMap& regions, std::optional<Ve
 ModelRun run_model(const Image& image, const Strokes* strokes, const ModelOptions& options,
                    Progress* progress) {
   const auto start = Clock::now();
-  const SegmentRun seg = run_segment(image, strokes, progress);
+  const SegmentRun seg = run_segment(image, strokes, progress, false);
   const double segment_seconds = since(start);
   ModelRun run =
       run_model(image, seg.regions, strokes != nullptr ? strokes->head_center : std::nullopt,

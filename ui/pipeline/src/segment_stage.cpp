@@ -15,14 +15,15 @@
 
 namespace hair25d::pipeline {
 
-SegmentRun run_segment(const Image& image, const Strokes* strokes, Progress* progress) {
+SegmentRun run_segment(const Image& image, const Strokes* strokes, Progress* progress,
+                       bool overlay) {
   segment::SegmentResult result = segment::segment_image(image, strokes, {}, progress);
   SegmentRun run;
   run.segmentation = std::move(result.segmentation);
   const Segmentation& s = run.segmentation;
   run.regions =
       segment::rasterize_triangle_values(s.mesh, s.triangle_region, image.width(), image.height());
-  run.overlay = segment::draw_overlay(image, s, run.regions);
+  if (overlay) run.overlay = segment::draw_overlay(image, s, run.regions);
   return run;
 }
 

@@ -20,8 +20,10 @@ struct SegmentRun {
 };
 
 // With strokes: one region per stroke label (graph cut). Without: automatic
-// regions, the faces enclosed by curves, numbered from 1.
-SegmentRun run_segment(const Image& image, const Strokes* strokes, Progress* progress = nullptr);
+// regions, the faces enclosed by curves, numbered from 1. `overlay` false
+// leaves run.overlay empty (the model pipeline does not show it).
+SegmentRun run_segment(const Image& image, const Strokes* strokes, Progress* progress = nullptr,
+                       bool overlay = true);
 
 // Without strokes, from a hair colour: the automatic regions whose mean colour
 // lies within `tolerance` (RGB distance, 0-255) of `rgb` become regions 1..n,
