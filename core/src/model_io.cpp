@@ -1,6 +1,9 @@
 #include "hair25d/core/model_io.h"
 
+#include <future>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "hair25d/core/atomic_file.h"
 #include "json_read.h"
@@ -116,6 +119,9 @@ void check_writable(const fs::path& folder, const HairModel& model) {
 }
 
 void write_contents(const fs::path& tmp, const HairModel& model) {
+  // PNG compression is most of a model write: the images are encoded by two
+  // threads, every other one each, the JSON written by the caller's first.
+  std::vector<std::pair<fs::path, const Image*>> images;
   {
     json doc;
     doc["format"] = kModelFormat;
@@ -123,11 +129,11 @@ void write_contents(const fs::path& tmp, const HairModel& model) {
     doc["width"] = model.width;
     doc["height"] = model.height;
     if (!model.image.empty()) {
-      save_image(tmp / "image.png", model.image);
+      images.emplace_back(tmp / "image.png", &model.image);
       doc["image"] = "image.png";
     }
     if (!model.background.empty()) {
-      save_image(tmp / "background.png", model.background);
+      images.emplace_back(tmp / "background.png", &model.background);
       doc["background"] = "background.png";
     }
     if (model.head_center) doc["head_center"] = {model.head_center->x(), model.head_center->y()};
@@ -144,7 +150,7 @@ void write_contents(const fs::path& tmp, const HairModel& model) {
         if (!made_folder) fs::create_directory(tmp / "strands");
         made_folder = true;
         const std::string rel = "strands/" + std::to_string(s.id) + ".png";
-        save_image(tmp / rel, s.texture);
+        images.emplace_back(tmp / rel, &s.texture);
         js["texture"] = rel;
         js["texture_origin"] = {s.texture_origin.x(), s.texture_origin.y()};
       }
@@ -170,7 +176,14 @@ void write_contents(const fs::path& tmp, const HairModel& model) {
                            {"overridden", r.overridden}});
     }
     doc["relations"] = relations;
+    const auto encode = [&images](std::size_t first) {
+      for (std::size_t i = first; i < images.size(); i += 2)
+        save_image(images[i].first, *images[i].second);
+    };
+    auto encoded = std::async(std::launch::async, encode, 0);
     write_text_atomically(tmp / "model.json", doc.dump(1) + "\n");
+    encode(1);
+    encoded.get();
   }
 }
 

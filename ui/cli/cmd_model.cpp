@@ -1,3 +1,4 @@
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -38,7 +39,13 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
   cmd->add_option("-o,--output", args->out, "The model folder to write (replaced if it exists)")
       ->required();
   cmd->callback([args, &common] {
+    using Clock = std::chrono::steady_clock;
+    const auto seconds_since = [](Clock::time_point t) {
+      return std::chrono::duration<double>(Clock::now() - t).count();
+    };
+    auto start = Clock::now();
     const Image image = load_image(args->image);
+    const double load_seconds = seconds_since(start);
     TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
     std::optional<Vec2> head;
     if (args->head.size() == 2) head = Vec2(args->head[0], args->head[1]);
@@ -59,7 +66,10 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
       }
       run = pipeline::run_model(image, s ? &*s : nullptr, {}, &progress);
     }
+    start = Clock::now();
     pipeline::write_model_run(args->out, run);
+    run.seconds["write"] = seconds_since(start);
+    run.seconds["load"] = load_seconds;
     if (!common.quiet) {
       std::printf("model: %s -> %s\n", run.summary.c_str(), args->out.c_str());
       std::printf("model: seconds");

@@ -248,8 +248,12 @@ ModelRun run_model(const Image& image, const Strokes* strokes, const ModelOption
 void write_model_run(const std::filesystem::path& folder, const ModelRun& run) {
   // The contact sheet goes in before the rename: the folder is whole when it appears.
   write_folder_atomically(folder, [&](const std::filesystem::path& tmp) {
+    // Encoded beside the model's own files (core encodes those on two threads).
+    auto sheet = std::async(std::launch::async, [&] {
+      if (!run.contact_sheet.empty()) save_image(tmp / "contact_sheet.png", run.contact_sheet);
+    });
     write_model_into(tmp, run.model);
-    if (!run.contact_sheet.empty()) save_image(tmp / "contact_sheet.png", run.contact_sheet);
+    sheet.get();
   });
 }
 
