@@ -104,6 +104,52 @@ double colour_sigma(double line_width) { return std::max(1.0, 0.5 * line_width);
 // (size round(8σ + 1) | 1).
 int kernel_radius(double sigma) { return static_cast<int>(std::ceil(4.0 * sigma)) + 1; }
 
+// The smoothed window and the label map as measure() reads them, copied into
+// locals: through the members, every sample reloaded them (the vectors it
+// appends to might alias them), and the bounds were converted again each time.
+struct GreyView {
+  const float* grey;
+  int w, h;
+  double x0, y0;      // the window's position
+  double xmax, ymax;  // w − 1, h − 1
+
+  double at(int xx, int yy) const { return static_cast<double>(grey[yy * w + xx]); }
+
+  // Bilinear, pixel centres at +0.5, clamped to the window. Inlined: called
+  // a few dozen times per point measured.
+  [[gnu::always_inline]] double sample(double x, double y) const {
+    x = x - 0.5 - x0;
+    y = y - 0.5 - y0;
+    // Inside the window (almost always) the clamps below change nothing.
+    if (x >= 0.0 && y >= 0.0 && x < xmax && y < ymax) {
+      const int xi = static_cast<int>(x), yi = static_cast<int>(y);
+      const double fx = x - xi, fy = y - yi;
+      const float* p = grey + yi * w + xi;
+      return (1 - fy) * ((1 - fx) * static_cast<double>(p[0]) + fx * static_cast<double>(p[1])) +
+             fy * ((1 - fx) * static_cast<double>(p[w]) + fx * static_cast<double>(p[w + 1]));
+    }
+    x = std::clamp(x, 0.0, xmax);
+    y = std::clamp(y, 0.0, ymax);
+    const int xi = std::min(static_cast<int>(x), w - 2 < 0 ? 0 : w - 2);
+    const int yi = std::min(static_cast<int>(y), h - 2 < 0 ? 0 : h - 2);
+    const int x1 = std::min(xi + 1, w - 1);
+    const int y1 = std::min(yi + 1, h - 1);
+    const double fx = x - xi, fy = y - yi;
+    return (1 - fy) * ((1 - fx) * at(xi, yi) + fx * at(x1, yi)) +
+           fy * ((1 - fx) * at(xi, y1) + fx * at(x1, y1));
+  }
+};
+
+struct LabelView {
+  const int* labels;
+  int w, h;
+  // The label of the pixel holding (x, y), kOutside beyond the map.
+  int at(double x, double y) const {
+    const int xi = floor_int(x), yi = floor_int(y);
+    return xi >= 0 && yi >= 0 && xi < w && yi < h ? labels[static_cast<std::size_t>(yi) * w + xi]
+                                                  : kOutside;
+  }
+};
 }  // namespace
 
 int LineResponse::window_margin(double line_width) {
@@ -266,29 +312,6 @@ Rgb3f LineResponse::smoothed_colour(int x, int y) const {
   return {sum[0], sum[1], sum[2]};
 }
 
-// Inlined: called a few dozen times per point measured.
-[[gnu::always_inline]] inline double LineResponse::sample(double x, double y) const {
-  x = x - 0.5 - x0_;  // pixel centres are at +0.5
-  y = y - 0.5 - y0_;
-  auto at = [&](int xx, int yy) { return static_cast<double>(grey_[yy * w_ + xx]); };
-  // Inside the window (almost always) the clamps below change nothing.
-  if (x >= 0.0 && y >= 0.0 && x < w_ - 1.0 && y < h_ - 1.0) {
-    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-    const double fx = x - x0, fy = y - y0;
-    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
-           fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
-  }
-  x = std::clamp(x, 0.0, w_ - 1.0);
-  y = std::clamp(y, 0.0, h_ - 1.0);
-  const int x0 = std::min(static_cast<int>(x), w_ - 2 < 0 ? 0 : w_ - 2);
-  const int y0 = std::min(static_cast<int>(y), h_ - 2 < 0 ? 0 : h_ - 2);
-  const int x1 = std::min(x0 + 1, w_ - 1);
-  const int y1 = std::min(y0 + 1, h_ - 1);
-  const double fx = x - x0, fy = y - y0;
-  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) +
-         fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
-}
-
 std::array<double, 3> LineResponse::sample_colour(double x, double y) const {
   // Nearest pixel: colours are smoothed.
   const Rgb3f c = smoothed_colour(floor_int(x), floor_int(y));
@@ -308,10 +331,9 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
   const double half = r.half;             // search for the line centre
   const double reach = r.paper;           // search for paper
   const int span = std::max(2, static_cast<int>(std::lround(line_width_)));
-  auto label_at = [&](const Vec2& q) {
-    const int x = floor_int(q.x()), y = floor_int(q.y());
-    return labels.contains(x, y) ? labels.at(x, y) : kOutside;
-  };
+  const GreyView grey{grey_.get(), w_,      h_, static_cast<double>(x0_), static_cast<double>(y0_),
+                      w_ - 1.0,    h_ - 1.0};
+  const LabelView label{labels.data(), labels.width(), labels.height()};
   std::vector<double> values, colours;
   values.reserve(n);
   // Paint is sampled past the line, its anti-aliased rim and the colour
@@ -329,31 +351,30 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
     if (t.squaredNorm() == 0.0) continue;
     // On the screen the left of travel t is (t.y, −t.x).
     const Vec2 to_left = Vec2(t.y(), -t.x()).normalized();
+    const double px = pts[i].x(), py = pts[i].y(), nx = to_left.x(), ny = to_left.y();
     double centre = 1e9;
-    for (double s = -half; s <= half + 1e-9; s += 0.5) {
-      const Vec2 q = pts[i] + s * to_left;
-      centre = std::min(centre, sample(q.x(), q.y()));
-    }
+    for (double s = -half; s <= half + 1e-9; s += 0.5)
+      centre = std::min(centre, grey.sample(px + s * nx, py + s * ny));
     double paper_left = -1.0, paper_right = -1.0;
     for (double s = 1.0; s <= reach; s += 1.0) {
-      const Vec2 ql = pts[i] + s * to_left;
-      const Vec2 qr = pts[i] - s * to_left;
-      if (label_at(ql) == left) paper_left = std::max(paper_left, sample(ql.x(), ql.y()));
-      if (label_at(qr) == right) paper_right = std::max(paper_right, sample(qr.x(), qr.y()));
+      const double lx = px + s * nx, ly = py + s * ny;
+      const double rx = px - s * nx, ry = py - s * ny;
+      if (label.at(lx, ly) == left) paper_left = std::max(paper_left, grey.sample(lx, ly));
+      if (label.at(rx, ry) == right) paper_right = std::max(paper_right, grey.sample(rx, ry));
     }
     if (paper_left < 0 || paper_right < 0) continue;
     values.push_back(std::min(paper_left, paper_right) - centre);
     std::array<double, 3> paint_left{}, paint_right{};
     bool found_left = false, found_right = false;
     for (double s = paint_near; s <= paint_far + 1e-9 && !(found_left && found_right); s += 1.0) {
-      const Vec2 ql = pts[i] + s * to_left;
-      const Vec2 qr = pts[i] - s * to_left;
-      if (!found_left && label_at(ql) == left) {
-        paint_left = sample_colour(ql.x(), ql.y());
+      const double lx = px + s * nx, ly = py + s * ny;
+      const double rx = px - s * nx, ry = py - s * ny;
+      if (!found_left && label.at(lx, ly) == left) {
+        paint_left = sample_colour(lx, ly);
         found_left = true;
       }
-      if (!found_right && label_at(qr) == right) {
-        paint_right = sample_colour(qr.x(), qr.y());
+      if (!found_right && label.at(rx, ry) == right) {
+        paint_right = sample_colour(rx, ry);
         found_right = true;
       }
     }

@@ -81,7 +81,6 @@ class LineResponse {
   static double estimate_line_width(const Image& image);
 
  private:
-  double sample(double x, double y) const;
   std::array<double, 3> sample_colour(double x, double y) const;
   int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
   double line_width_ = 1.0;
