@@ -9,6 +9,7 @@
 #include <string>
 
 #include "../../tests/completion/annotated_eval.h"
+#include "eval_joins_overlay.h"
 #include "hair25d/core/annotation.h"
 #include "hair25d/generator/generator.h"
 #include "hair25d/layering/layering.h"
@@ -24,7 +25,7 @@ struct Total {
 };
 
 void score(const AnnotatedCase& c, bool predicted, const completion::Options& options,
-           const std::string& name, Total* total) {
+           const std::string& name, const std::string& overlay, Total* total) {
   completion::Input in = completion::test::input_from_case(c);
   if (predicted) {
     in.relations.clear();  // a failed layering leaves no relations, not the annotation's
@@ -36,6 +37,13 @@ void score(const AnnotatedCase& c, bool predicted, const completion::Options& op
   }
   const completion::Result r = completion::complete_strands(in, options);
   const completion::test::PairScore s = completion::test::score_pairs(c, r);
+  if (!overlay.empty()) {
+    std::string file = name;
+    for (char& ch : file)
+      if (ch == ' ') ch = '_';
+    completion::test::write_join_overlay(std::filesystem::path(overlay) / (file + ".png"), c, r,
+                                         name);
+  }
   const std::vector<double> ious = completion::test::strand_ious(c, r);
   double sum = 0.0;
   for (double v : ious) sum += v;
@@ -55,7 +63,7 @@ void score(const AnnotatedCase& c, bool predicted, const completion::Options& op
 
 int main(int argc, char** argv) {
   CLI::App app{"Case-1 join accuracy of completion on annotated or generated cases"};
-  std::string annotated, relations = "annotated", shading = "flat";
+  std::string overlay, annotated, relations = "annotated", shading = "flat";
   int width = 800, height = 640, strands = 20, seed = 1, count = 4;
   app.add_option("--annotated", annotated, "Folder of annotated cases (else generated ones)");
   app.add_option("--relations", relations, "annotated (the case's pairs) or predicted (layering)")
@@ -68,6 +76,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000));
   app.add_option("--shading", shading, "flat, two-tone, gradient, screentone or mixed (cycles)")
       ->check(CLI::IsMember({"flat", "two-tone", "gradient", "screentone", "mixed"}));
+  app.add_option("--overlay", overlay,
+                 "Folder for one PNG a case: joins right (green) and wrong (red), the "
+                 "annotation's strands missed (thick yellow); wrong and missed pairs printed");
   completion::Options options;
   options.inpaint_strands = false;  // colours are not scored
   options.inpaint_background = false;
@@ -85,7 +96,7 @@ int main(int argc, char** argv) {
     if (!annotated.empty()) {
       for (const auto& folder : find_annotated_cases(annotated)) {
         const AnnotatedCase c = read_annotated_case(folder);
-        score(c, predicted, options, c.name, &total);
+        score(c, predicted, options, c.name, overlay, &total);
       }
     } else {
       const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
@@ -103,7 +114,7 @@ int main(int argc, char** argv) {
                     : shading == "screentone" ? kinds[3]
                                               : kinds[0];
         score(generator::generate_case(g), predicted, options, "seed " + std::to_string(seed + k),
-              &total);
+              overlay, &total);
       }
     }
   } catch (const std::exception& e) {

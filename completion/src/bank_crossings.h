@@ -47,3 +47,24 @@ struct BankJoin {
 BankJoin bank_join(const BankCrossings& ca, const BankCrossings& cb, const Edge& a, const Edge& b);
 
 }  // namespace hair25d::completion::detail
+
+namespace hair25d::completion::detail {
+
+// Back hair seen between the strands lying over it and around the face: a
+// wide piece under a fan of overlapping strands faces its other pieces
+// across several occluders at once, so no single edge pair is a case-1 or
+// bank candidate. Region level: rays from every outline pixel of a piece
+// that lies above no region, along the outward normal, through regions
+// above it, landing on another such piece that all crossed regions lie
+// above as well. (The face is left to the face joins: rays across it also
+// land on bangs lying on the face, which lie above no region either.)
+struct MassJoin {
+  int region_a = 0, region_b = 0;
+  int rays = 0;                 // the fewer of the rays landing a -> b and b -> a
+  double colour = 0.0;          // median RGB step across the cut (the larger way)
+  std::vector<Polyline> bands;  // the hidden part: runs of consecutive landing rays
+};
+// Candidates, surest (most rays both ways) first.
+std::vector<MassJoin> mass_join_candidates(const Context& ctx);
+
+}  // namespace hair25d::completion::detail

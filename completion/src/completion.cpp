@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "bank_crossings.h"
 #include "context.h"
 #include "face_joins.h"
 #include "hair25d/core/error.h"
@@ -161,7 +162,11 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     strands.unite(a, b);
     return true;
   };
-  const std::vector<detail::Join> joins = detail::match_edges(ctx, candidates, try_join);
+  // The face hides the back hair as a strand does (it is no region): case-1
+  // joins of back hair may run behind it, and face joins (below) join pieces
+  // seen on opposite sides of it.
+  const detail::Face face = options.face_joins ? detail::find_face(ctx) : detail::Face{};
+  const std::vector<detail::Join> joins = detail::match_edges(ctx, candidates, face.mask, try_join);
   std::set<int> joined_atoms;
   for (const detail::Join& j : joins) {
     const detail::Edge& a = candidates[j.edge_a];
@@ -172,13 +177,27 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     reports[ra].joined_region = b.region;
     const int rb = new_report(b, EdgeCase::kJoined);
     reports[rb].joined_region = a.region;
-    if (j.patch.size() >= 3) pieces.areas.push_back({a.region, j.patch, false, ra});
+    if (j.patch.size() >= 3)
+      pieces.areas.push_back({a.region, j.patch, false, ra, j.behind_face ? &face.mask : nullptr});
     for (const Polyline& band : j.bands) pieces.areas.push_back({a.region, band, false, ra});
     ++result.joins;
   }
-  // The face hides the back hair as a strand does, but it is no region:
-  // back-hair pieces on opposite sides of it are joined across it.
-  const detail::Face face = options.face_joins ? detail::find_face(ctx) : detail::Face{};
+  // Back hair cut by a fan of overlapping strands: no single edge pair faces
+  // across them, so its pieces are matched region to region (bank_crossings.h).
+  for (detail::MassJoin& j : detail::mass_join_candidates(ctx)) {
+    if (!try_join(j.region_a, j.region_b)) continue;
+    EdgeReport ra, rb;
+    ra.region = j.region_a, ra.joined_region = j.region_b;
+    rb.region = j.region_b, rb.joined_region = j.region_a;
+    ra.p = ra.q = j.bands.empty() ? Vec2(0, 0) : j.bands.front().front();
+    rb.p = rb.q = j.bands.empty() ? Vec2(0, 0) : j.bands.front().back();
+    ra.completion = rb.completion = EdgeCase::kJoined;
+    reports.push_back(ra);
+    reports.push_back(rb);
+    for (const Polyline& band : j.bands)
+      pieces.areas.push_back({j.region_a, band, false, static_cast<int>(reports.size()) - 2});
+    ++result.joins;
+  }
   std::set<int> front;
   for (const auto& [id, ups] : ctx.above)
     for (int up : ups) front.insert(strands.find(up));

@@ -81,11 +81,14 @@ struct Join {
   // A join across the banks of an occluder (a wide piece cut by a strand
   // lying over it): bands under the occluder instead of one patch.
   std::vector<Polyline> bands;
+  bool behind_face = false;  // the patch also counts over the face (both pieces back hair)
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
-// records) or refuses joining the strands of regions a and b.
+// records) or refuses joining the strands of regions a and b. `face` (CV_8U,
+// image size, 1 = face; may be empty) hides back hair as an occluder does:
+// a patch between two pieces that lie above no region may run behind it.
 std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
-                              const std::function<bool(int, int)>& try_join);
+                              const cv::Mat& face, const std::function<bool(int, int)>& try_join);
 
 // Cases 2 and 3 (grow.cpp): the completed area of an unmatched edge, or an
 // empty polygon when nothing could be grown.

@@ -55,7 +55,8 @@ Polyline join_patch(const Edge& a, const Edge& b) {
 // Share of the patch's pixels outside both pieces that lie under an occluder
 // of either piece: the hidden part may only be where the drawing shows hair
 // in front (§5 "completed part lies under the occluders").
-double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, int* hidden) {
+double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const cv::Mat& face,
+                int* hidden) {
   double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
   for (const Vec2& p : patch) {
     x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
@@ -81,6 +82,7 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, int* 
       if (l == ra || l == rb) continue;
       ++total;
       if (l != 0 && (ctx.is_above(l, ra) || ctx.is_above(l, rb))) ++under;
+      if (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ++under;
     }
   *hidden = total;
   return total > 0 ? static_cast<double>(under) / total : 1.0;
@@ -89,8 +91,14 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, int* 
 }  // namespace
 
 std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
-                              const std::function<bool(int, int)>& try_join) {
+                              const cv::Mat& face, const std::function<bool(int, int)>& try_join) {
   const Options& o = *ctx.options;
+  // Back hair: regions above no region. Only the face hides back hair; a
+  // strand lying on the face is drawn over it, so the face between two of
+  // its pieces means they are not one strand.
+  std::set<int> front;
+  for (const auto& [id, ups] : ctx.above) front.insert(ups.begin(), ups.end());
+  const cv::Mat no_face;
   const double max_angle = o.max_join_angle_deg * M_PI / 180.0;
   std::vector<BankCrossings> crossings(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i)
@@ -148,7 +156,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         if (cost <= o.max_join_cost) {  // before the costly coverage raster
           join.patch = join_patch(a, b);
           int hidden = 0;
-          const double cover = coverage(ctx, join.patch, a.region, b.region, &hidden);
+          join.behind_face = !face.empty() && !front.count(a.region) && !front.count(b.region);
+          const double cover = coverage(ctx, join.patch, a.region, b.region,
+                                        join.behind_face ? face : no_face, &hidden);
           cost = cover < o.min_join_coverage ? std::numeric_limits<double>::infinity()
                                              : cost + 3.0 * (1.0 - cover);
         }
@@ -160,6 +170,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       if (bank.share >= kMinBankShare && bank_cost < cost) {
         cost = bank_cost;
         join.patch.clear();
+        join.behind_face = false;
         join.bands = std::move(bank.bands);
       }
       if (cost > o.max_join_cost) continue;

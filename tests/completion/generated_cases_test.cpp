@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <set>
 
@@ -44,18 +45,31 @@ TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
         if (it != direct.end()) stack.insert(stack.end(), it->second.begin(), it->second.end());
       }
     }
+    // Back hair (no piece above any region) may also be completed behind
+    // the face, which hides it as a strand does, but never over the paper.
+    std::set<int> front;
+    for (const auto& [id, ups] : above) front.insert(ups.begin(), ups.end());
+    const Rgba paper = c.image.at(0, 0);
+    auto is_paper = [&](int x, int y) {
+      const Rgba& p = c.image.at(x, y);
+      return std::abs(p.r - paper.r) + std::abs(p.g - paper.g) + std::abs(p.b - paper.b) <= 12;
+    };
     std::set<int> seen;
     for (const CompletedStrand& s : r.strands) {
+      bool back_hair = true;
+      for (int id : s.regions) back_hair = back_hair && !front.count(id);
       for (int id : s.regions) EXPECT_TRUE(seen.insert(id).second);
       EXPECT_GE(s.outline.size(), 3u);
       EXPECT_EQ(s.texture.width(), s.mask.width());
       for (int y = 0; y < s.mask.height(); ++y)
         for (int x = 0; x < s.mask.width(); ++x) {
           if (s.mask.at(x, y) != 2) continue;
-          const int l = r.regions.at(x + s.origin.x(), y + s.origin.y());
+          const int gx = x + s.origin.x(), gy = y + s.origin.y();
+          const int l = r.regions.at(gx, gy);
           bool under = false;
           for (int id : s.regions) under = under || above[id].count(l) > 0;
-          EXPECT_TRUE(under);
+          under = under || (back_hair && l == 0 && !is_paper(gx, gy));
+          EXPECT_TRUE(under) << "completed pixel " << gx << ", " << gy;
           EXPECT_EQ(s.texture.at(x, y).a, 255) << "completed pixels are opaque";
         }
     }
@@ -76,9 +90,10 @@ TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
 // flat and cel-shaded drawings, four seeds each. Floors at the measured
 // level (docs/completion.md); the targets (precision 0.95, recall 0.85) are
 // not met on these crowded drawings.
-// With joins across the face the generated drawings lose precision (0.780
-// -> 0.696): their side and under strands lie along the face, above nothing,
-// in the back hair's colour, and are joined to it; both are checked.
+// With joins across the face the generated drawings lose precision (0.786
+// -> 0.694, recall 0.493 -> 0.507): their side and under strands lie along
+// the face, above nothing, in the back hair's colour, and are joined to it;
+// both are checked.
 TEST(GeneratedCases, JoinsMatchTheGeneratedStrands) {
   for (const bool face_joins : {false, true}) {
     test::PairScore total;
@@ -108,7 +123,7 @@ TEST(GeneratedCases, JoinsMatchTheGeneratedStrands) {
         face_joins ? "on" : "off", total.predicted, total.truth, total.correct, total.precision(),
         total.recall());
     EXPECT_GE(total.precision(), face_joins ? 0.68 : 0.75);
-    EXPECT_GE(total.recall(), 0.45);
+    EXPECT_GE(total.recall(), 0.48);
   }
 }
 

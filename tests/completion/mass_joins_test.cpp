@@ -1,0 +1,122 @@
+// Back hair cut by a fan of strands (bank_crossings.cpp, mass joins): the
+// pieces face each other across several overlapping strands, farther apart
+// than one edge's banks reach, and are still joined region to region.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "hair25d/completion/completion.h"
+#include "synthetic.h"
+
+namespace hair25d::completion {
+namespace {
+
+using test::below;
+using test::blank;
+using test::Drawing;
+using test::paint;
+
+constexpr Rgba kBack{120, 80, 50, 255};
+constexpr Rgba kFan{200, 150, 110, 255};
+
+// Back hair (regions 1 left, 2 right) behind a fan of three overlapping
+// vertical strands 3 < 4 < 5 that covers x 112..205: 90 px across, more than
+// the 0.6 edge lengths (~40 px) a single edge's bank rays reach.
+Drawing back_hair_under_fan(Rgba right_colour) {
+  Drawing d = blank(340, 200);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 120 && y > 60 && y < 130; }, kBack, 1);
+  paint(
+      d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, right_colour,
+      2);
+  paint(
+      d, [](double x, double y) { return x > 112 && x < 145 && y > 10 && y < 190; }, kFan, 3);
+  paint(
+      d, [](double x, double y) { return x > 140 && x < 172 && y > 5 && y < 185; }, kFan, 4);
+  paint(
+      d, [](double x, double y) { return x > 168 && x < 205 && y > 15 && y < 195; }, kFan, 5);
+  d.relations = {below(1, 3), below(2, 5), below(3, 4), below(4, 5)};
+  return d;
+}
+
+Result run(const Drawing& d) {
+  Input in;
+  in.image = &d.image;
+  in.regions = &d.regions;
+  in.relations = d.relations;
+  in.head_center = Vec2(170, 20);
+  Options o;
+  // Strand joins ruled out (tangents along the chords, cut widths within 1 %;
+  // the right piece is narrower): only the region-level banks can join.
+  o.max_join_angle_deg = 0.5;
+  o.min_width_ratio = 0.99;
+  o.inpaint_background = false;
+  o.face_joins = false;  // no face here; the paper near the head would pass for one
+  return complete_strands(in, o);
+}
+
+const CompletedStrand* strand_with(const Result& r, int region) {
+  for (const CompletedStrand& s : r.strands)
+    if (std::find(s.regions.begin(), s.regions.end(), region) != s.regions.end()) return &s;
+  return nullptr;
+}
+
+TEST(MassJoins, BackHairUnderAFanOfStrandsIsJoinedAcrossIt) {
+  const Drawing d = back_hair_under_fan(kBack);
+  const Result r = run(d);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1, 2}));
+  // Every completed pixel lies under the fan; the band between the pieces
+  // (x 125..190, y 70..120) is mostly completed.
+  int inside = 0, completed = 0;
+  for (int y = 0; y < s->mask.height(); ++y)
+    for (int x = 0; x < s->mask.width(); ++x) {
+      if (s->mask.at(x, y) != 2) continue;
+      const int gx = x + s->origin.x(), gy = y + s->origin.y();
+      const int l = r.regions.at(gx, gy);
+      EXPECT_TRUE(l == 3 || l == 4 || l == 5) << gx << "," << gy << " shows " << l;
+      EXPECT_GT(gy, 55);
+      EXPECT_LT(gy, 135);
+    }
+  for (int y = 70; y <= 120; ++y)
+    for (int x = 125; x <= 190; ++x) {
+      ++inside;
+      const int mx = x - s->origin.x(), my = y - s->origin.y();
+      completed += s->mask.contains(mx, my) && s->mask.at(mx, my) == 2;
+    }
+  EXPECT_GT(completed, 0.7 * inside);
+  // The fan's strands stay strands of their own.
+  for (int id : {3, 4, 5}) {
+    const CompletedStrand* f = strand_with(r, id);
+    ASSERT_NE(f, nullptr);
+    EXPECT_EQ(f->regions, (std::vector<int>{id}));
+  }
+}
+
+TEST(MassJoins, PiecesOfAnotherShadeAreNotJoined) {
+  // 24 levels darker a channel: a neighbouring lock, not the same piece.
+  const Drawing d = back_hair_under_fan(Rgba{96, 56, 26, 255});
+  const Result r = run(d);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1}));
+}
+
+TEST(MassJoins, PiecesLyingOnOtherHairAreNotBackHair) {
+  // Region 2 lies on a lock (6) of its own: it is above a region, so no back
+  // hair, and the fan between it and region 1 joins nothing.
+  Drawing d = back_hair_under_fan(kBack);
+  paint(
+      d, [](double x, double y) { return x > 300 && x < 335 && y > 40 && y < 150; }, kFan, 6);
+  paint(
+      d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, kBack, 2);
+  d.relations.push_back(below(6, 2));
+  const Result r = run(d);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1}));
+}
+
+}  // namespace
+}  // namespace hair25d::completion
