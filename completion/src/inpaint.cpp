@@ -9,6 +9,7 @@
 
 #include "hair25d/core/error.h"
 #include "inpaint_internal.h"
+#include "patch_ssd.h"
 #include "raster.h"
 
 namespace hair25d::completion {
@@ -78,6 +79,16 @@ class Filler {
         }
       if (any || r_ == 1) break;
     }
+    row_start_.assign(h_ + 1, 0);
+    for (int y = 0; y < h_; ++y) {
+      for (int x = 0; x < w_; ++x)
+        if (valid_[idx(x, y)]) valid_x_.push_back(x);
+      row_start_[y + 1] = static_cast<int>(valid_x_.size());
+    }
+    // Whole source patches never change: candidates are read from this copy,
+    // padded for the 4-pixel reads of the last row (patch_ssd.h).
+    source_bytes_.assign(image_.bytes(), image_.bytes() + 4 * n);
+    source_bytes_.resize(4 * n + 16, 0);
     grey_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const Rgba& c = image_.data()[i];
@@ -185,68 +196,65 @@ class Filler {
     heap_.push({c * d, x, y, s});
   }
 
-  // One pixel of the target patch as the SSD sees it: its offset from the
-  // patch centre and the colour it is compared with.
-  struct TargetPixel {
+  // One unknown pixel of a cel-mode target patch: its offset from the patch
+  // centre and the coarse fill's colour it is compared with.
+  struct GuidedPixel {
     std::ptrdiff_t offset;
     int r, g, b, a;
   };
 
-  // The target patch's known pixels (`known`) and, in cel mode, its unknown
-  // ones with the coarse fill's colours (`guided`), each list split in rows
-  // (`row_end`) so a candidate can stop as soon as it is worse.
+  // The target patch: its known pixels row by row (`rows`, summed four at a
+  // time) and, in cel mode, its unknown ones (`guided`, rows ending at
+  // `guided_end`), so a candidate can stop after any row once it is worse.
   struct Target {
-    std::vector<TargetPixel> pixels;
-    std::vector<int> row_end;    // end of each row in `pixels`
-    std::vector<bool> guided;    // per row: the row holds guided pixels after known ones
-    std::vector<int> known_end;  // per row: end of the known pixels of the row
+    detail::PatchRows rows;
+    std::vector<GuidedPixel> guided;
+    std::vector<int> guided_end;
   };
 
   void make_target(int x, int y, Target* t) const {
     const int r = r_;
-    t->pixels.clear();
-    t->row_end.clear();
-    t->known_end.clear();
+    t->rows.reset(r, w_);
+    t->guided.clear();
+    t->guided_end.clear();
+    std::vector<std::uint8_t> pixels(4 * (2 * r + 1), 0);
+    std::vector<bool> use(2 * r + 1);
     for (int dy = -r; dy <= r; ++dy) {
       const int ty = y + dy;
       if (ty < 0 || ty >= h_) continue;
       for (int dx = -r; dx <= r; ++dx) {
         const int tx = x + dx;
-        if (tx < 0 || tx >= w_ || !known_[idx(tx, ty)]) continue;
+        use[dx + r] = tx >= 0 && tx < w_ && known_[idx(tx, ty)];
+        if (!use[dx + r]) continue;
         const Rgba& a = image_.data()[idx(tx, ty)];
-        t->pixels.push_back({static_cast<std::ptrdiff_t>(dy) * w_ + dx, a.r, a.g, a.b, a.a});
+        std::uint8_t* out = &pixels[4 * (dx + r)];
+        out[0] = a.r, out[1] = a.g, out[2] = a.b, out[3] = a.a;
       }
-      t->known_end.push_back(static_cast<int>(t->pixels.size()));
+      t->rows.add_row(dy, pixels.data(), use, guide_ != nullptr);
       if (guide_ != nullptr)
         for (int dx = -r; dx <= r; ++dx) {
           const int tx = x + dx;
           if (tx < 0 || tx >= w_ || known_[idx(tx, ty)]) continue;
           const Rgba& a = guide_->data()[idx(tx, ty)];
-          t->pixels.push_back({static_cast<std::ptrdiff_t>(dy) * w_ + dx, a.r, a.g, a.b, a.a});
+          t->guided.push_back({static_cast<std::ptrdiff_t>(dy) * w_ + dx, a.r, a.g, a.b, a.a});
         }
-      t->row_end.push_back(static_cast<int>(t->pixels.size()));
+      t->guided_end.push_back(static_cast<int>(t->guided.size()));
     }
   }
 
   // SSD of the candidate centred at pixel index `c`, starting from `ssd` (the
   // distance term); stops (returning a value >= limit) once it reaches
-  // `limit`.
+  // `limit`. Candidates are whole source patches, which never change: their
+  // pixels are read from the padded copy `source_bytes_`.
   long patch_ssd(const Target& t, std::size_t c, long ssd, long limit, long guide_w) const {
-    const Rgba* base = image_.data() + c;
+    const std::uint8_t* centre = source_bytes_.data() + 4 * c;
+    const Rgba* base = reinterpret_cast<const Rgba*>(centre);
     int begin = 0;
-    for (std::size_t row = 0; row < t.row_end.size() && ssd < limit; ++row) {
-      const int known_end = t.known_end[row], end = t.row_end[row];
-      int acc = 0;
-      for (int i = begin; i < known_end; ++i) {
-        const TargetPixel& p = t.pixels[i];
-        const Rgba& b = base[p.offset];
-        const int dr = p.r - b.r, dg = p.g - b.g, db = p.b - b.b;
-        acc += dr * dr + dg * dg + db * db;
-        if (guide_ != nullptr) acc += (p.a - b.a) * (p.a - b.a);
-      }
-      ssd += acc;
-      for (int i = known_end; i < end; ++i) {
-        const TargetPixel& p = t.pixels[i];
+    for (std::size_t row = 0; row < t.rows.rows() && ssd < limit; ++row) {
+      ssd += t.rows.row_ssd(row, centre);
+      const int end = t.guided_end[row];
+      for (int i = begin; i < end; ++i) {
+        const GuidedPixel& p = t.guided[i];
         const Rgba& b = base[p.offset];
         const int dr = p.r - b.r, dg = p.g - b.g, db = p.b - b.b, da = p.a - b.a;
         ssd += (guide_w * (dr * dr + dg * dg + db * db + da * da)) >> 8;
@@ -305,11 +313,20 @@ class Filler {
           consider(cx, cy, off.distance_term);
         }
       } else {
-        for (int cy = y0; cy <= y1; cy += step)
-          for (int cx = x0; cx <= x1; cx += step)
+        // A wider window: only the valid centres of each row, in raster order
+        // (thin strands have few, far from a target that found none nearer).
+        for (int cy = y0; cy <= y1; cy += step) {
+          const auto row_begin = valid_x_.begin() + row_start_[cy];
+          const auto row_end = valid_x_.begin() + row_start_[cy + 1];
+          for (auto it = std::lower_bound(row_begin, row_end, x0); it != row_end && *it <= x1;
+               ++it) {
+            const int cx = *it;
+            if ((cx - x0) % step != 0) continue;
             consider(cx, cy,
                      static_cast<long>(o_.distance_weight *
                                        ((cx - x) * (cx - x) + (cy - y) * (cy - y))));
+          }
+        }
       }
       if (best != std::numeric_limits<long>::max()) {
         *bx = best_x, *by = best_y;
@@ -411,7 +428,10 @@ class Filler {
   std::vector<float> confidence_;
   std::vector<int> integral_;
   std::vector<std::uint8_t> valid_;
+  std::vector<int> valid_x_;    // x of every valid centre, row by row
+  std::vector<int> row_start_;  // row y's centres: valid_x_[row_start_[y], row_start_[y + 1])
   std::vector<float> grey_;
+  std::vector<std::uint8_t> source_bytes_;
   std::vector<std::uint8_t> ink_;  // cel mode only
   std::vector<int> ink_integral_;
   std::vector<unsigned> stamp_ = {};

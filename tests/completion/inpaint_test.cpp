@@ -59,6 +59,46 @@ TEST(Inpaint, OnlySourcePixelsAreCopied) {
     for (int x = 30; x < 40; ++x) EXPECT_EQ(img.at(x, y), (Rgba{10, 200, 10, 255}));
 }
 
+// The only source patches lie far beyond the first search window (which
+// then widens): the hole is filled from them, and only them.
+TEST(Inpaint, SourceFarBeyondTheSearchWindowIsFound) {
+  const int w = 230, h = 90;
+  Image img(w, h, Rgba{90, 90, 90, 255});
+  LabelMap fill(w, h), source(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (x >= 200) img.at(x, y) = {20, 160, 220, 255}, source.at(x, y) = 1;  // a far stripe
+      if (x >= 10 && x < 30 && y >= 30 && y < 50) fill.at(x, y) = 1;
+    }
+  InpaintOptions o;
+  o.search_radius = 16;
+  ASSERT_GT(200 - 30, 4 * o.search_radius);
+  const InpaintResult r = inpaint_exemplar(img, fill, source, o);
+  EXPECT_EQ(r.unfilled, 0);
+  EXPECT_EQ(r.filled, 400);
+  for (int y = 30; y < 50; ++y)
+    for (int x = 10; x < 30; ++x) ASSERT_EQ(img.at(x, y), (Rgba{20, 160, 220, 255}));
+  EXPECT_EQ(img.at(9, 30), (Rgba{90, 90, 90, 255}));
+}
+
+// A hole in a flat area between two flat areas of other colours is filled
+// from its own area only (candidates visited nearest first, all compared).
+TEST(Inpaint, HoleInAFlatAreaTakesItsColourNotItsNeighbours) {
+  const int w = 150, h = 70;
+  Image img(w, h, Rgba{200, 200, 200, 255});
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (x < 40) img.at(x, y) = {30, 30, 200, 255};
+      if (x >= 110) img.at(x, y) = {200, 30, 30, 255};
+    }
+  LabelMap fill(w, h);
+  for (int y = 30; y < 40; ++y)
+    for (int x = 70; x < 80; ++x) fill.at(x, y) = 1, img.at(x, y) = {0, 0, 0, 255};
+  inpaint_exemplar(img, fill, LabelMap{});
+  for (int y = 30; y < 40; ++y)
+    for (int x = 70; x < 80; ++x) ASSERT_EQ(img.at(x, y), (Rgba{200, 200, 200, 255}));
+}
+
 TEST(Inpaint, NoSourceAnywhereIsReportedNotACrash) {
   Image img(20, 30, Rgba{1, 2, 3, 255});
   LabelMap fill(20, 30, 1);
