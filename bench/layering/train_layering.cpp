@@ -29,6 +29,16 @@ struct Sample {
   double weight = 1;
 };
 
+// Every occluding boundary between hair regions of a drawing, for the
+// region context (which also reads boundaries of pairs nobody judged).
+struct BoundaryRecord {
+  layering::ContextBoundary context;
+  layering::BoundaryFeatures features{};
+  layering::EqualCues equal_cues;
+  int y = 0;  // +1 left above, -1 below, 0 same depth or not judged
+};
+using Drawing = std::vector<BoundaryRecord>;
+
 // A same-depth sample keeps its cues: its features read the order model's
 // log-odds, which are those of the weights fitted in this run.
 struct SameSample {
@@ -99,13 +109,15 @@ int main(int argc, char** argv) {
   app.add_option("--ridge", ridge, "L2 penalty")->check(CLI::NonNegativeNumber);
   app.add_option("--same-ridge", same_ridge, "L2 penalty of the same-depth model")
       ->check(CLI::NonNegativeNumber);
-  std::string write;
+  std::string write, dump;
+  app.add_option("--dump", dump, "write the order samples' features here and stop");
   app.add_option("--write", write, "write layering/src/learned_weights.cpp here");
   app.add_flag("--length-weighted", length_weighted, "weight boundaries by sqrt(length)");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<Sample> samples, same_samples;
   std::vector<SameSample> same_cases;
+  std::vector<Drawing> drawings;
   layering::Options options;
   options.metric = layering::Metric::kPaper;
   for (int i = 0; i < cases; ++i) {
@@ -123,10 +135,16 @@ int main(int argc, char** argv) {
       truth[{p.a, p.b}] = p.relation;
       truth[{p.b, p.a}] = hair25d::reversed(p.relation);
     }
+    Drawing& drawing = drawings.emplace_back();
     for (const layering::BoundaryReport& b : r.boundaries) {
       if (!b.occluding || b.left <= 0 || b.right <= 0) continue;
       auto t = truth.find({b.left, b.right});
+      BoundaryRecord& rec = drawing.emplace_back();
+      rec.context = {b.left, b.right, b.length, 0.0, true};
+      rec.features = b.features;
+      rec.equal_cues = b.equal_cues;
       if (t == truth.end()) continue;
+      rec.y = t->second == Relation::kAbove ? 1 : t->second == Relation::kBelow ? -1 : 0;
       // Same depth or ordered: every occluding boundary of a judged pair,
       // weighted by length as the pair's decision is.
       same_cases.push_back({b.equal_cues, b.features, t->second == Relation::kEqual ? 1.0 : -1.0,
@@ -139,6 +157,21 @@ int main(int argc, char** argv) {
                          t->second == Relation::kAbove ? 1.0 : -1.0,
                          length_weighted ? std::sqrt(b.length / r.line_width) : 1.0});
     }
+  }
+  if (!dump.empty()) {
+    // The order samples' features and truth, one line each, for trying other
+    // learners outside this program.
+    std::FILE* f = std::fopen(dump.c_str(), "w");
+    if (f == nullptr) return 1;
+    for (const Drawing& d : drawings)
+      for (const BoundaryRecord& rec : d) {
+        if (rec.y == 0) continue;
+        std::fprintf(f, "%d", rec.y);
+        for (double x : rec.features) std::fprintf(f, " %.6g", x);
+        std::fprintf(f, "\n");
+      }
+    std::fclose(f);
+    return 0;
   }
   const Eigen::VectorXd w = fit(samples, ridge);
   int right_paper = 0, right_learned = 0;
@@ -173,6 +206,36 @@ int main(int argc, char** argv) {
   std::printf("%zu boundaries (%d same depth); right: always ordered %.1f%%, model %.1f%%\n",
               same_samples.size(), positives, 100.0 * right_none / same_samples.size(),
               100.0 * right_same / same_samples.size());
+  // The region context: with both models above, as the layering runs them.
+  std::vector<Sample> context_samples;
+  int right_before = 0, right_after = 0;
+  for (Drawing& d : drawings) {
+    std::vector<layering::ContextBoundary> boundaries;
+    for (BoundaryRecord& rec : d) {
+      const layering::LearnedTerms terms = layering::learned_terms(rec.features);
+      rec.context.log_odds = w.dot(Eigen::Map<const Eigen::VectorXd>(terms.data(), w.size()));
+      layering::EqualCues cues = rec.equal_cues;
+      cues.order_log_odds = rec.context.log_odds;
+      const layering::EqualFeatures f = layering::equal_features(cues);
+      rec.context.used = v.dot(Eigen::Map<const Eigen::VectorXd>(f.data(), v.size())) <= 0;
+      boundaries.push_back(rec.context);
+    }
+    const std::vector<double> diff = layering::context_differences(boundaries);
+    for (std::size_t k = 0; k < d.size(); ++k) {
+      if (d[k].y == 0) continue;
+      const layering::ContextTerms t = layering::context_terms(d[k].context.log_odds, diff[k]);
+      context_samples.push_back({{t.begin(), t.end()}, static_cast<double>(d[k].y), 1.0});
+    }
+  }
+  const Eigen::VectorXd u = fit(context_samples, ridge);
+  for (const Sample& s : context_samples) {
+    right_before += s.y * s.x[0] > 0;
+    right_after += s.y * u.dot(Eigen::Map<const Eigen::VectorXd>(s.x.data(), u.size())) > 0;
+  }
+  std::printf("region context: sign right %.1f%% -> %.1f%%; weights %g %g %g\n",
+              100.0 * right_before / context_samples.size(),
+              100.0 * right_after / context_samples.size(), u[0], u[1], u[2]);
+
   if (write.empty()) return 0;
   // The whole of learned_weights.cpp, so that the committed constants are
   // exactly what this program printed.
@@ -206,7 +269,17 @@ int main(int argc, char** argv) {
                same_samples.size(), positives, 100.0 * right_same / same_samples.size(),
                100.0 * right_none / same_samples.size());
   for (int k = 0; k < v.size(); ++k) std::fprintf(f, "%s%.6g", k ? ", " : "", v[k]);
-  std::fprintf(f, "};\n  return kWeights;\n}\n\n}  // namespace hair25d::layering\n");
+  std::fprintf(f,
+               "};\n  return kWeights;\n}\n\n"
+               "// Same program, same drawings: the second stage over the order log-odds\n"
+               "// above and the region context (both models as the layering runs them);\n"
+               "// boundary sign right %.1f%% before it, %.1f%% after. Order as in\n"
+               "// context_terms.\n"
+               "const ContextTerms& context_weights() {\n"
+               "  static constexpr ContextTerms kWeights = {%.6g, %.6g, %.6g};\n"
+               "  return kWeights;\n}\n\n}  // namespace hair25d::layering\n",
+               100.0 * right_before / context_samples.size(),
+               100.0 * right_after / context_samples.size(), u[0], u[1], u[2]);
   std::fclose(f);
   return 0;
 }

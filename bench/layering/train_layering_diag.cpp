@@ -80,6 +80,8 @@ int main(int argc, char** argv) {
   app.add_option("--cap", options.coupling_cap);
   app.add_option("--smooth-angle", options.smooth_angle);
   app.add_flag("--no-equal", no_equal);
+  app.add_option("--equal-log-odds", options.equal_log_odds);
+  app.add_flag("--context", options.region_context);
   app.add_flag("--paper", paper);
   app.add_flag("--quiet", quiet, "totals only");
   CLI11_PARSE(app, argc, argv);

@@ -92,6 +92,8 @@ bool Options::is_valid(std::string* error) const {
     return fail("fit_reach_widths = " + num(fit_reach_widths) + "; must be finite and > 0");
   if (!positive_finite(fit_reach_min))
     return fail("fit_reach_min = " + num(fit_reach_min) + "; must be finite and > 0");
+  if (!std::isfinite(equal_log_odds))
+    return fail("equal_log_odds = " + num(equal_log_odds) + "; must be finite");
   if (!(equal_fraction >= 0 && equal_fraction <= 1))
     return fail("equal_fraction = " + num(equal_fraction) + "; must be in [0, 1]");
   for (const RegionRelation& r : fixed)
@@ -414,6 +416,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     e.area_right = rep.cues.area_right;
     e.start = rep.cues.start;
     e.end = rep.cues.end;
+    e.shared_left = rep.cues.shared_left;
+    e.shared_right = rep.cues.shared_right;
     rep.equal_features = equal_features(e);
     rep.equal = equal_metric(rep.equal_features);
   }
@@ -436,6 +440,24 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     }
   }
 
+  // --- Region context (an addition): each boundary's log-odds weighed with
+  // how its two regions stand against their other neighbours. ---
+  const bool use_context = options.metric == Metric::kLearned && options.region_context;
+  if (use_context) {
+    std::vector<ContextBoundary> context(nb);
+    for (int i = 0; i < nb; ++i) {
+      const BoundaryReport& rep = out.boundaries[i];
+      const bool same = options.learned_equal && rep.equal > 0;
+      context[i] = {bs[i].left, bs[i].right, rep.length, rep.learned, rep.occluding && !same};
+    }
+    const std::vector<double> diff = context_differences(context);
+    for (int i = 0; i < nb; ++i) {
+      BoundaryReport& rep = out.boundaries[i];
+      rep.context = diff[i];
+      rep.context_log_odds = context_metric(rep.learned, diff[i]);
+    }
+  }
+
   // --- Eq. (2): boundary states by one minimum cut (§4.5). ---
   report(progress, "layering", 0.6, "optimisation");
   std::map<std::pair<int, int>, Relation> fixed_dir;  // (a<b) → relation of a to b
@@ -450,8 +472,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     const BoundaryReport& rep = out.boundaries[i];
     if (!rep.occluding || b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
     if (!options.background_states && (b.left == 0 || b.right == 0)) continue;
-    double unary =
-        options.metric == Metric::kLearned ? options.learned_scale * rep.learned : rep.phi;
+    double unary = options.metric == Metric::kLearned
+                       ? options.learned_scale * (use_context ? rep.context_log_odds : rep.learned)
+                       : rep.phi;
     auto f = fixed_dir.find(key(b.left, b.right));
     if (f != fixed_dir.end()) {
       const bool left_above = (f->second == Relation::kAbove) == (b.left < b.right);
@@ -557,7 +580,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     r.a = k.first;
     r.b = k.second;
     const bool same_depth = options.learned_equal && options.metric == Metric::kLearned &&
-                            acc.occluding > 0 && acc.same > 0;
+                            acc.occluding > 0 && acc.same > options.equal_log_odds * acc.occluding;
     if (acc.occluding < options.equal_fraction * acc.total || acc.occluding == 0 || same_depth) {
       r.relation = Relation::kEqual;
       r.score = 0.0;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <utility>
 
 #include "hair25d/layering/metrics.h"
 
@@ -92,6 +94,19 @@ EqualFeatures equal_features(const EqualCues& c) {
     f[9] += tip(e.left) * tip(e.right);  // both regions end in a point: a forked tip
   }
   if (used > 0) f[8] /= used;
+  // The same read off the label map (circle sectors), how alike the two
+  // sides look at the ends (a fork's halves sit symmetrically; an occluder's
+  // outline runs through), and a lens: one side ending in a point at both
+  // ends, as the piece between a fork line and the strand's outline does.
+  for (const EndAngles& e : {c.start, c.end}) {
+    if (!e.used) continue;
+    f[10] += tip(e.circle_left) * tip(e.circle_right);
+    f[12] += std::abs(e.circle_left - e.circle_right) / kPi / used;
+  }
+  if (c.start.used && c.end.used)
+    f[11] = std::max(tip(c.start.circle_left) * tip(c.end.circle_left),
+                     tip(c.start.circle_right) * tip(c.end.circle_right));
+  f[13] = std::max(c.shared_left, c.shared_right);
   return f;
 }
 
@@ -99,6 +114,56 @@ double equal_metric(const EqualFeatures& features) {
   const EqualFeatures& w = equal_weights();
   double s = 0.0;
   for (int i = 0; i < kEqualFeatureCount; ++i) s += w[i] * features[i];
+  return s;
+}
+
+std::vector<double> context_differences(const std::vector<ContextBoundary>& boundaries) {
+  // Per region: Σ w·p and Σ w over all its boundaries, and the same per pair,
+  // so that a pair's own boundaries can be taken out again.
+  std::map<int, std::pair<double, double>> region;
+  std::map<std::pair<int, int>, std::pair<double, double>> pair;  // of the smaller id
+  auto vote = [](const ContextBoundary& b) { return std::tanh(0.5 * b.log_odds); };
+  for (const ContextBoundary& b : boundaries) {
+    if (!b.used || b.left <= 0 || b.right <= 0 || b.left == b.right) continue;
+    const double p = vote(b);
+    region[b.left].first += b.length * p;
+    region[b.left].second += b.length;
+    region[b.right].first -= b.length * p;
+    region[b.right].second += b.length;
+    auto& q = pair[{std::min(b.left, b.right), std::max(b.left, b.right)}];
+    q.first += b.length * (b.left < b.right ? p : -p);
+    q.second += b.length;
+  }
+  std::vector<double> out(boundaries.size(), 0.0);
+  for (std::size_t i = 0; i < boundaries.size(); ++i) {
+    const ContextBoundary& b = boundaries[i];
+    if (b.left <= 0 || b.right <= 0 || b.left == b.right) continue;
+    const auto k = std::make_pair(std::min(b.left, b.right), std::max(b.left, b.right));
+    const auto it = pair.find(k);
+    const double own = it == pair.end() ? 0.0 : it->second.first;  // toward the smaller id
+    const double own_w = it == pair.end() ? 0.0 : it->second.second;
+    auto mean_without = [&](int id, double own_toward_id) {
+      const auto r = region.find(id);
+      if (r == region.end()) return 0.0;
+      const double w = r->second.second - own_w;
+      return w > 1e-9 ? (r->second.first - own_toward_id) / w : 0.0;
+    };
+    const double own_left = b.left < b.right ? own : -own;
+    out[i] = mean_without(b.left, own_left) - mean_without(b.right, -own_left);
+  }
+  return out;
+}
+
+ContextTerms context_terms(double log_odds, double context) {
+  const double l = std::clamp(log_odds, -8.0, 8.0);
+  return {l, context, context / (1.0 + std::abs(l))};
+}
+
+double context_metric(double log_odds, double context) {
+  const ContextTerms t = context_terms(log_odds, context);
+  const ContextTerms& w = context_weights();
+  double s = 0.0;
+  for (int i = 0; i < kContextTermCount; ++i) s += w[i] * t[i];
   return s;
 }
 

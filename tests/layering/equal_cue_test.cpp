@@ -121,13 +121,21 @@ TEST(EqualCue, FeaturesDoNotDependOnTheWalkingDirection) {
     c.area_right = 5000 * unit(rng);
     c.start = {i % 3 != 0, angle(rng), angle(rng), 3, angle(rng), angle(rng)};
     c.end = {i % 4 != 0, angle(rng), angle(rng), 3, angle(rng), angle(rng)};
+    for (EndAngles* e : {&c.start, &c.end}) {
+      e->circle_left = angle(rng);
+      e->circle_right = angle(rng);
+    }
+    c.shared_left = unit(rng);
+    c.shared_right = unit(rng);
     EqualCues d = c;  // walked the other way: sides and ends swap
     d.order_log_odds = -c.order_log_odds;
     std::swap(d.area_left, d.area_right);
     for (EndAngles* e : {&d.start, &d.end}) {
       std::swap(e->left, e->right);
       std::swap(e->wide_left, e->wide_right);
+      std::swap(e->circle_left, e->circle_right);
     }
+    std::swap(d.shared_left, d.shared_right);
     std::swap(d.start, d.end);
     const EqualFeatures f = equal_features(c), g = equal_features(d);
     for (int k = 0; k < kEqualFeatureCount; ++k) EXPECT_NEAR(f[k], g[k], 1e-12) << k;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <numbers>
 
 #include "hair25d/core/error.h"
 #include "hair25d/layering/layering.h"
@@ -81,6 +82,30 @@ TEST(LayerRegions, CrossingStrands) {
       EXPECT_LT(x.a, x.b);
     }
   }
+}
+
+TEST(LayerRegions, JunctionSectorsOnTheLabelMapAndFromCurvedFits) {
+  // Where the horizontal strand 3 lies over the lower piece 4 of the vertical
+  // one, both ends of their boundary are T-junctions: 3 is the bar (π) and 4
+  // the stem's side (π/2), whichever way the sectors are measured.
+  const Scene s = crossing();
+  const Result r = layer_regions(s.image, s.regions);
+  int seen = 0;
+  for (const BoundaryReport& b : r.boundaries) {
+    if (!((b.left == 3 && b.right == 4) || (b.left == 4 && b.right == 3))) continue;
+    for (const EndAngles& e : {b.cues.start, b.cues.end}) {
+      ASSERT_TRUE(e.used);
+      const double bar = b.left == 3 ? e.circle_left : e.circle_right;
+      const double stem = b.left == 3 ? e.circle_right : e.circle_left;
+      EXPECT_NEAR(bar, std::numbers::pi, 0.35);
+      EXPECT_NEAR(stem, std::numbers::pi / 2, 0.35);
+      EXPECT_NEAR(b.left == 3 ? e.curved_left : e.curved_right, std::numbers::pi, 0.2);
+      EXPECT_NEAR(b.left == 3 ? e.curved_right : e.curved_left, std::numbers::pi / 2, 0.2);
+      ++seen;
+    }
+    EXPECT_GT(b.left == 3 ? b.learned : -b.learned, 0.0);
+  }
+  EXPECT_EQ(seen, 2);
 }
 
 TEST(LayerRegions, RegionsAcrossASliverStrandAreNeighbours) {

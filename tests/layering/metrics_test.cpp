@@ -112,3 +112,42 @@ TEST(CouplingWeight, TangentOfTheDeviationFromARightAngle) {
 
 }  // namespace
 }  // namespace hair25d::layering
+
+namespace hair25d::layering {
+namespace {
+
+TEST(CurvedLeavingDirection, FindsTheTangentOfABentOutline) {
+  // A circle of radius 30 leaving (0, 0) along +x and bending toward +y: the
+  // line through the points leans toward the chord, the quadratic keeps the
+  // tangent at the junction.
+  Polyline arc;
+  for (int k = 0; k <= 60; ++k) {
+    const double t = k * 0.01;  // radians along the circle, arc length 0.3 px a step
+    arc.push_back(Vec2(30 * std::sin(t), 30 * (1 - std::cos(t))));
+  }
+  const Vec2 line = leaving_direction(arc, 18.0);
+  const Vec2 curved = curved_leaving_direction(arc, 3.0, 18.0);
+  const double line_error = std::atan2(line.y(), line.x());
+  const double curved_error = std::atan2(curved.y(), curved.x());
+  EXPECT_GT(line_error, 0.1);  // about a quarter of the 0.6 rad turned
+  EXPECT_LT(std::abs(curved_error), 0.02);
+  // A straight boundary gives its own direction with either fit.
+  Polyline straight;
+  for (int k = 0; k <= 20; ++k) straight.push_back(Vec2(-k * 0.6, k * 0.8));
+  const Vec2 d = curved_leaving_direction(straight, 2.0, 12.0);
+  EXPECT_NEAR(d.x(), -0.6, 1e-9);
+  EXPECT_NEAR(d.y(), 0.8, 1e-9);
+}
+
+TEST(CurvedLeavingDirection, FallsBackOnShortCurves) {
+  // Fewer than three points beyond the skipped blob: the line fit decides.
+  const Polyline two{Vec2(0, 0), Vec2(1, 0), Vec2(2, 1)};
+  const Vec2 d = curved_leaving_direction(two, 5.0, 12.0);
+  const Vec2 e = leaving_direction(two, 12.0);
+  EXPECT_NEAR(d.x(), e.x(), 1e-12);
+  EXPECT_NEAR(d.y(), e.y(), 1e-12);
+  EXPECT_EQ(curved_leaving_direction(Polyline{Vec2(3, 3)}, 1.0, 12.0), Vec2(1, 0));
+}
+
+}  // namespace
+}  // namespace hair25d::layering

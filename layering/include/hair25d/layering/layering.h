@@ -61,6 +61,12 @@ struct Options {
   // same-depth model (equal_metric) says so for its occluding boundaries,
   // length-weighted: a drawn line between two halves of one strand.
   bool learned_equal = true;
+  // ... when that length-weighted mean log-odds exceeds this.
+  double equal_log_odds = 0.0;
+  // With the learned metric, a second stage weighs each boundary's log-odds
+  // with the region context (context_metric in learned_metric.h): how each
+  // region stands against its other neighbours.
+  bool region_context = false;
   // Give label-0 outline pixels to the regions they separate first (FORMATS.md).
   bool fill_outlines = true;
   // Boundaries between hair and background take part in Eq. (2) (they carry
@@ -90,8 +96,10 @@ struct BoundaryReport {
   double phi = 0.0;          // Eq. (1)
   BoundaryCues cues;         // what the learned metric is computed from
   BoundaryFeatures features{};
-  double learned = 0.0;  // learned_metric(features), log-odds of left above
-  EqualCues equal_cues;  // what the same-depth model is computed from
+  double learned = 0.0;           // learned_metric(features), log-odds of left above
+  double context = 0.0;           // context_differences: left's standing minus right's
+  double context_log_odds = 0.0;  // context_metric(learned, context)
+  EqualCues equal_cues;           // what the same-depth model is computed from
   EqualFeatures equal_features{};
   double equal = 0.0;  // equal_metric(equal_features), log-odds of same depth
   int state = 0;       // +1 left above, −1 right above, 0 no state

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 namespace hair25d::layering {
 
@@ -67,6 +68,31 @@ double learned_metric(const BoundaryFeatures& features);
 // The weights in use (layering/src/learned_weights.cpp says how they were made).
 const LearnedTerms& learned_weights();
 
+// Region context, a second stage (an addition to the paper): hair is drawn in
+// layers, so a region that the boundary model puts over most of its other
+// neighbours is likely over this one too. For every boundary, the length-
+// weighted mean of tanh(log-odds / 2) "this region is above", over each
+// region's occluding boundaries with other hair regions except those with the
+// region across this boundary, left minus right (in [−2, 2]; 0 where a region
+// has no other neighbour).
+struct ContextBoundary {
+  int left = 0, right = 0;  // hair regions (> 0); others are left out
+  double length = 0.0;
+  double log_odds = 0.0;  // the boundary model's, left above
+  bool used = true;       // false: left out (not occluding, or same depth)
+};
+std::vector<double> context_differences(const std::vector<ContextBoundary>& boundaries);
+
+// The second stage's terms: the boundary model's log-odds, the context
+// difference, and the context where the boundary model is unsure. All change
+// sign with the walking direction; no intercept.
+inline constexpr int kContextTermCount = 3;
+using ContextTerms = std::array<double, kContextTermCount>;
+ContextTerms context_terms(double log_odds, double context);
+// Log-odds that the left region lies above, after the context.
+double context_metric(double log_odds, double context);
+const ContextTerms& context_weights();
+
 // Same depth or ordered? A second learned model, for occluding boundaries:
 // two halves of a forked strand, or two pieces of one strand meeting where
 // lines converge, are divided by a drawn line just like an occluder and its
@@ -80,9 +106,12 @@ struct EqualCues {
   double order_log_odds = 0.0;  // learned_metric of the boundary (its sign does not matter)
   double area_left = 0.0, area_right = 0.0;  // pixels
   EndAngles start, end;
+  // The share of each region's perimeter on its common boundary with the
+  // other (BoundaryCues::shared_left / shared_right).
+  double shared_left = 0.0, shared_right = 0.0;
 };
 
-inline constexpr int kEqualFeatureCount = 10;
+inline constexpr int kEqualFeatureCount = 14;
 using EqualFeatures = std::array<double, kEqualFeatureCount>;
 
 EqualFeatures equal_features(const EqualCues& cues);
