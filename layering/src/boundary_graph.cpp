@@ -159,16 +159,20 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   // two labels, so is no junction (almost all corners): flags from two rows
   // at once, which vectorises.
   std::vector<std::uint8_t> differs(static_cast<std::size_t>(w) + 1, 0);
+  // Where each row changes label from pixel x − 1 to x (at index x), for the
+  // rows above and below the corners: each row is compared once.
+  std::vector<std::uint8_t> changes_above(static_cast<std::size_t>(w) + 1, 0);
+  std::vector<std::uint8_t> changes_below(static_cast<std::size_t>(w) + 1, 0);
+  if (h > 0 && w > 1) detail::not_equal(labels.data(), labels.data() + 1, w - 1, &changes_below[1]);
   for (int y = 0; y <= h; ++y) {
     if (y == 0 || y == h) {
       for (int x = 0; x <= w; ++x) visit_corner(x, y);
       continue;
     }
-    const int* above = labels.data() + static_cast<std::size_t>(y - 1) * w;
+    changes_above.swap(changes_below);
     const int* below = labels.data() + static_cast<std::size_t>(y) * w;
-    for (int x = 1; x < w; ++x)
-      differs[x] =
-          static_cast<std::uint8_t>((above[x - 1] != above[x]) | (below[x - 1] != below[x]));
+    if (w > 1) detail::not_equal(below, below + 1, w - 1, &changes_below[1]);
+    for (int x = 1; x < w; ++x) differs[x] = changes_above[x] | changes_below[x];
     visit_corner(0, y);
     for_each_set(differs, 1, w, [&](int x) { visit_corner(x, y); });
     visit_corner(w, y);
@@ -232,7 +236,7 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   for (int y = 0; y <= h; ++y) {
     const int* above = y > 0 ? labels.data() + static_cast<std::size_t>(y - 1) * w : outside.data();
     const int* below = y < h ? labels.data() + static_cast<std::size_t>(y) * w : outside.data();
-    for (int x = 0; x < w; ++x) differs[x] = static_cast<std::uint8_t>(above[x] != below[x]);
+    detail::not_equal(above, below, w, differs.data());
     for_each_set(differs, 0, w, [&](int x) {
       if (!visited.test(grid.edge_index(x, y, 0))) trace(x, y, 0);
     });

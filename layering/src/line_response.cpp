@@ -270,23 +270,32 @@ Rgb3f LineResponse::smoothed_colour(int x, int y) const {
     const __m128i zero = _mm_setzero_si128();
     const Rgba* centre = window + static_cast<std::size_t>(yi) * iw + xi - r;
     __m128 sum = _mm_setzero_ps();
+    const float* wv = colour_weights_.data() + 4 * r;  // wv + 4j: weight j in four lanes
+    auto widen = [&](__m128i half, __m128 w, bool high) {
+      return _mm_mul_ps(w, _mm_cvtepi32_ps(high ? _mm_unpackhi_epi16(half, zero)
+                                                : _mm_unpacklo_epi16(half, zero)));
+    };
     for (int g = 0; g < groups; ++g) {
-      __m128 c0 = _mm_setzero_ps(), c1 = c0, c2 = c0, c3 = c0;
-      for (int j = 0; j <= r; ++j) {
-        const __m128i up = _mm_loadu_si128(
-            reinterpret_cast<const __m128i*>(centre - static_cast<std::ptrdiff_t>(j) * iw + 4 * g));
-        const __m128i down = _mm_loadu_si128(
-            reinterpret_cast<const __m128i*>(centre + static_cast<std::ptrdiff_t>(j) * iw + 4 * g));
-        __m128i lo = _mm_unpacklo_epi8(up, zero), hi = _mm_unpackhi_epi8(up, zero);
-        if (j > 0) {
-          lo = _mm_add_epi16(lo, _mm_unpacklo_epi8(down, zero));
-          hi = _mm_add_epi16(hi, _mm_unpackhi_epi8(down, zero));
-        }
-        const __m128 w = _mm_set1_ps(k[r + j]);
-        c0 = _mm_add_ps(c0, _mm_mul_ps(w, _mm_cvtepi32_ps(_mm_unpacklo_epi16(lo, zero))));
-        c1 = _mm_add_ps(c1, _mm_mul_ps(w, _mm_cvtepi32_ps(_mm_unpackhi_epi16(lo, zero))));
-        c2 = _mm_add_ps(c2, _mm_mul_ps(w, _mm_cvtepi32_ps(_mm_unpacklo_epi16(hi, zero))));
-        c3 = _mm_add_ps(c3, _mm_mul_ps(w, _mm_cvtepi32_ps(_mm_unpackhi_epi16(hi, zero))));
+      // The centre row, then the pairs of rows j above and below it.
+      const __m128i mid = _mm_loadu_si128(reinterpret_cast<const __m128i*>(centre + 4 * g));
+      __m128i lo = _mm_unpacklo_epi8(mid, zero), hi = _mm_unpackhi_epi8(mid, zero);
+      __m128 w = _mm_loadu_ps(wv);
+      __m128 c0 = widen(lo, w, false), c1 = widen(lo, w, true);
+      __m128 c2 = widen(hi, w, false), c3 = widen(hi, w, true);
+      const Rgba* above = centre + 4 * g;
+      const Rgba* below = centre + 4 * g;
+      for (int j = 1; j <= r; ++j) {
+        above -= iw;
+        below += iw;
+        const __m128i up = _mm_loadu_si128(reinterpret_cast<const __m128i*>(above));
+        const __m128i down = _mm_loadu_si128(reinterpret_cast<const __m128i*>(below));
+        lo = _mm_add_epi16(_mm_unpacklo_epi8(up, zero), _mm_unpacklo_epi8(down, zero));
+        hi = _mm_add_epi16(_mm_unpackhi_epi8(up, zero), _mm_unpackhi_epi8(down, zero));
+        w = _mm_loadu_ps(wv + 4 * j);
+        c0 = _mm_add_ps(c0, widen(lo, w, false));
+        c1 = _mm_add_ps(c1, widen(lo, w, true));
+        c2 = _mm_add_ps(c2, widen(hi, w, false));
+        c3 = _mm_add_ps(c3, widen(hi, w, true));
       }
       const float* wg = colour_weights_.data() + 16 * g;
       sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg), c0));

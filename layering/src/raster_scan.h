@@ -7,6 +7,10 @@
 #include <cstring>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace hair25d::layering::detail {
 
 // Calls f(x) for every x in [from, to) with flags[x] != 0, in increasing x.
@@ -24,6 +28,25 @@ void for_each_set(const std::vector<T>& flags, int from, int to, F&& f) {
   }
   for (; x < to; ++x)
     if (flags[x] != 0) f(x);
+}
+
+// out[i] = a[i] != b[i] (1 or 0) for i in [0, n): sixteen labels at a time.
+inline void not_equal(const int* a, const int* b, int n, std::uint8_t* out) {
+  int i = 0;
+#if defined(__SSE2__)
+  auto at = [](const int* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
+  const __m128i one = _mm_set1_epi8(1);
+  for (; i + 16 <= n; i += 16) {
+    // −1 where equal, 0 where not, narrowed to bytes; + 1 gives 0 / 1.
+    const __m128i e0 = _mm_cmpeq_epi32(at(a + i), at(b + i));
+    const __m128i e1 = _mm_cmpeq_epi32(at(a + i + 4), at(b + i + 4));
+    const __m128i e2 = _mm_cmpeq_epi32(at(a + i + 8), at(b + i + 8));
+    const __m128i e3 = _mm_cmpeq_epi32(at(a + i + 12), at(b + i + 12));
+    const __m128i bytes = _mm_packs_epi16(_mm_packs_epi32(e0, e1), _mm_packs_epi32(e2, e3));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_add_epi8(bytes, one));
+  }
+#endif
+  for (; i < n; ++i) out[i] = static_cast<std::uint8_t>(a[i] != b[i]);
 }
 
 // A fixed-size set of bits: an eighth of the memory of a byte a flag, so the
