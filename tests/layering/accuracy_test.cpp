@@ -34,7 +34,7 @@ void add(Totals& t, const CaseScore& s) {
               s.name.c_str(), s.regions, s.pairs, s.correct, 100 * s.accuracy(), s.seconds);
 }
 
-Totals six_cases(const Options& options) {
+Totals six_cases(const Options& options, double per_case_floor) {
   const auto folders =
       find_annotated_cases(std::filesystem::path(HAIR25D_TEST_DATA_DIR) / "annotated");
   EXPECT_EQ(folders.size(), 6u);
@@ -43,7 +43,7 @@ Totals six_cases(const Options& options) {
     const AnnotatedCase c = read_annotated_case(folder);
     const CaseScore s = evaluate_case(c, options);
     EXPECT_EQ(s.pairs, static_cast<int>(c.pairs.size()));
-    EXPECT_GE(s.accuracy(), 0.70) << c.name;
+    EXPECT_GE(s.accuracy(), per_case_floor) << c.name;
     add(t, s);
   }
   std::printf("  total %d/%d = %.1f%% (target %.0f%%)\n", t.correct, t.pairs, 100 * t.accuracy(),
@@ -52,18 +52,19 @@ Totals six_cases(const Options& options) {
 }
 
 // The learned metric was trained on generated drawings only: these six cases
-// are a validation it never saw. Measured 279/305 = 91.5%.
+// are a validation it never saw. Measured 287/305 = 94.1% (before the label-map
+// sectors and the same-depth model's new cues: 279/305).
 TEST(Accuracy, SixAnnotatedCases) {
-  const Totals t = six_cases({});
+  const Totals t = six_cases({}, 0.85);  // case1, the lowest: 88.4%
   RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
-  EXPECT_GE(t.accuracy(), 0.91);
+  EXPECT_GE(t.accuracy(), 0.93);
 }
 
 // The paper's own Φ (Eq. 1) as the unary term. Measured 271/305 = 88.9%.
 TEST(Accuracy, SixAnnotatedCasesPaperMetric) {
   Options options;
   options.metric = Metric::kPaper;
-  const Totals t = six_cases(options);
+  const Totals t = six_cases(options, 0.75);  // case1: 78.3%
   RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
   EXPECT_GE(t.accuracy(), 0.88);
 }
@@ -90,13 +91,13 @@ TEST(Accuracy, GeneratedCasesInSeveralStyles) {
   std::printf("  total %d/%d = %.1f%% (target %.0f%%)\n", t.correct, t.pairs, 100 * t.accuracy(),
               100 * kTarget);
   RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
-  // Measured 176/197 = 89.3% (the paper's Φ: 161/197 = 81.7%).
-  EXPECT_GE(t.accuracy(), 0.88);
+  // Measured 178/197 = 90.4% (the paper's Φ: 161/197 = 81.7%).
+  EXPECT_GE(t.accuracy(), 0.89);
 }
 
 // Forks whose dividing line fades out inside the strand (generator option
 // fading_forks): the halves are "equal" although most of their boundary is
-// on a drawn line. Measured 162/183 = 88.5%, 2 of the 8 equal pairs right.
+// on a drawn line. Measured 167/183 = 91.3%, 5 of the 8 equal pairs right.
 TEST(Accuracy, GeneratedFadingForks) {
   Totals t;
   int equal = 0, equal_right = 0;
@@ -122,8 +123,37 @@ TEST(Accuracy, GeneratedFadingForks) {
   std::printf("  total %d/%d = %.1f%%; equal pairs right %d/%d\n", t.correct, t.pairs,
               100 * t.accuracy(), equal_right, equal);
   RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
-  EXPECT_GE(t.accuracy(), 0.87);
-  EXPECT_GE(equal_right, 2);
+  EXPECT_GE(t.accuracy(), 0.90);
+  EXPECT_GE(equal_right, 4);
+}
+
+// Styles of the unseen drawings the project is judged on: lines 1.2 px
+// wide, and grey screentone through JPEG q40 with noise.
+TEST(Accuracy, GeneratedThinLinesAndGreyJpeg) {
+  Totals t;
+  for (int i = 0; i < 8; ++i) {
+    generator::Options o;
+    o.width = i % 2 ? 640 : 560;
+    o.height = 480;
+    o.seed = 900 + i;
+    o.strand_masks = false;
+    if (i < 4) {
+      o.shading = i % 2 ? generator::Shading::kGradient : generator::Shading::kFlat;
+      o.line_width = 1.2;
+    } else {
+      o.shading = generator::Shading::kScreentone;
+      o.jpeg_quality = 40;
+      o.noise_sigma = 3.0;
+    }
+    AnnotatedCase c = generator::generate_case(o);
+    c.name = "style" + std::to_string(i);
+    add(t, evaluate_case(c));
+  }
+  std::printf("  total %d/%d = %.1f%% (target %.0f%%)\n", t.correct, t.pairs, 100 * t.accuracy(),
+              100 * kTarget);
+  RecordProperty("accuracy_percent", std::to_string(100 * t.accuracy()));
+  // Measured 182/204 = 89.2%.
+  EXPECT_GE(t.accuracy(), 0.88);
 }
 
 TEST(Accuracy, GeneratedOrderDoesNotDependOnRegionNumbers) {

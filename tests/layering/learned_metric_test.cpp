@@ -3,8 +3,10 @@
 // the paper's basic cues — the bar of an ideal T and the convex side on top.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include "hair25d/layering/learned_metric.h"
 
@@ -84,6 +86,40 @@ TEST(LearnedMetric, CuspEndsSayNothing) {
   c.end = {false, 0.2, 1.7, 3, 0.3, 1.6};
   const BoundaryFeatures f = boundary_features(c);
   for (double v : f) EXPECT_EQ(v, 0.0);
+}
+
+}  // namespace
+}  // namespace hair25d::layering
+
+namespace hair25d::layering {
+namespace {
+
+TEST(RegionContext, StandingAgainstTheOtherNeighbours) {
+  // Region 1 is put over 3 (log-odds +2, 10 px) and region 2 under 3 (−2 as
+  // walked 2 → 3, 30 px); 1 and 2 share a boundary whose own vote is left out
+  // of their standing. Hand-computed with t = tanh(1).
+  const double t = std::tanh(1.0);
+  const std::vector<ContextBoundary> b{
+      {1, 2, 20.0, 0.5, true},
+      {1, 3, 10.0, 2.0, true},
+      {2, 3, 30.0, -2.0, true},
+      {3, 0, 50.0, 4.0, true},   // background: never counted
+      {1, 3, 40.0, -9.0, false}  // not occluding: left out
+  };
+  const std::vector<double> d = context_differences(b);
+  ASSERT_EQ(d.size(), b.size());
+  // Pair (1, 2): 1 stands +t over its other neighbours, 2 stands −t.
+  EXPECT_NEAR(d[0], 2 * t, 1e-12);
+  // Pair (1, 3): 1 has only 2 left (+tanh(0.25)); 3 has 2 below it: +t.
+  EXPECT_NEAR(d[1], std::tanh(0.25) - t, 1e-12);
+  // Walked the other way, the difference changes sign.
+  const std::vector<double> e = context_differences(
+      {{2, 1, 20.0, -0.5, true}, {3, 1, 10.0, -2.0, true}, {3, 2, 30.0, 2.0, true}});
+  EXPECT_NEAR(e[0], -d[0], 1e-12);
+  EXPECT_NEAR(e[1], -d[1], 1e-12);
+  EXPECT_EQ(d[3], 0.0);
+  // The second stage changes sign with its inputs too.
+  EXPECT_NEAR(context_metric(1.3, 0.4), -context_metric(-1.3, -0.4), 1e-12);
 }
 
 }  // namespace
