@@ -1,7 +1,8 @@
 #include "hair25d/completion/active_contour.h"
 
 #include <Eigen/Sparse>
-#include <Eigen/SparseLU>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <cmath>
 
 #include "hair25d/core/error.h"
@@ -20,25 +21,22 @@ Polyline resample(const Polyline& curve, double spacing) {
   return out;
 }
 
-// I + τ K with K the discrete internal force (−α D² + β D⁴) on free points and
-// identity rows on the four fixed ones.
-Eigen::SparseMatrix<double> system_matrix(int n, const ContourOptions& o) {
+// The rows of I + τ K (K the discrete internal force −α D² + β D⁴) for the
+// free points 2 … n − 3, on the free columns: the four fixed points (ends and
+// their tangent neighbours) go to the right-hand side. Symmetric positive
+// definite and pentadiagonal, so a sparse Cholesky solves it in O(n).
+Eigen::SparseMatrix<double> free_block(int n, const ContourOptions& o) {
+  const int m = n - 4;
+  const double a = o.alpha * o.step, b = o.beta * o.step;
   std::vector<Eigen::Triplet<double>> t;
-  for (int i = 0; i < n; ++i) {
-    if (i < 2 || i > n - 3) {
-      t.emplace_back(i, i, 1.0);
-      continue;
-    }
-    const double a = o.alpha * o.step, b = o.beta * o.step;
-    t.emplace_back(i, i - 2, b);
-    t.emplace_back(i, i - 1, -a - 4 * b);
-    t.emplace_back(i, i, 1 + 2 * a + 6 * b);
-    t.emplace_back(i, i + 1, -a - 4 * b);
-    t.emplace_back(i, i + 2, b);
+  for (int r = 0; r < m; ++r) {
+    t.emplace_back(r, r, 1 + 2 * a + 6 * b);
+    if (r + 1 < m) t.emplace_back(r, r + 1, -a - 4 * b), t.emplace_back(r + 1, r, -a - 4 * b);
+    if (r + 2 < m) t.emplace_back(r, r + 2, b), t.emplace_back(r + 2, r, b);
   }
-  Eigen::SparseMatrix<double> m(n, n);
-  m.setFromTriplets(t.begin(), t.end());
-  return m;
+  Eigen::SparseMatrix<double> block(m, m);
+  block.setFromTriplets(t.begin(), t.end());
+  return block;
 }
 
 }  // namespace
@@ -56,6 +54,7 @@ bool ContourOptions::is_valid(std::string* error) const {
   if (!(spacing > 0)) return fail("spacing = " + std::to_string(spacing) + "; must be > 0");
   if (max_iterations < 1)
     return fail("max_iterations = " + std::to_string(max_iterations) + "; must be >= 1");
+  if (!(max_reach > 0)) return fail("max_reach = " + std::to_string(max_reach) + "; must be > 0");
   if (!(omega_gain > 0))
     return fail("omega_gain = " + std::to_string(omega_gain) + "; must be > 0");
   return true;
@@ -94,6 +93,17 @@ ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const
     return omega * (t * fields.at_p.flow(x) + (1 - t) * fields.at_q.flow(x));
   };
 
+  // Hair under an occluder is unknown: the curve grows no farther from the
+  // chord p q than `max_reach` chord lengths (a root under a wide occluder
+  // would otherwise fill it).
+  const Vec2 chord = q - p;
+  const double reach = options.max_reach * chord.norm();
+  auto beyond_reach = [&](const Vec2& x) {
+    const double len2 = chord.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((x - p).dot(chord) / len2, 0.0, 1.0) : 0.0;
+    return (x - (p + t * chord)).norm() > reach;
+  };
+
   ContourResult result;
   Polyline curve = resample(initial, options.spacing);
   auto pin_ends = [&](Polyline& c) {
@@ -105,26 +115,35 @@ ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const
     c[n - 2] = q + h * tangent_q;
   };
   pin_ends(curve);
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
   int factored_size = -1;
+  // Points whose step would leave the allowed area stay where they are from
+  // then on, while the others keep growing: in Algorithm 1 one point touching
+  // an occluder's edge stops the whole curve, which on drawings stopped most
+  // curves in their first step (C₀ lies on the occluding boundary).
+  std::vector<char> held(curve.size(), 0);
   result.stop = ContourStop::kIterationCap;
   for (int it = 1; it <= options.max_iterations; ++it) {
-    if (it % 8 == 0) {  // the curve lengthens as it grows: keep samples even
+    double longest = 0.0;
+    for (std::size_t i = 1; i < curve.size(); ++i)
+      longest = std::max(longest, (curve[i] - curve[i - 1]).norm());
+    if (longest > 1.8 * options.spacing) {  // the curve lengthens as it grows
       curve = resample(curve, options.spacing);
       pin_ends(curve);
+      held.assign(curve.size(), 0);  // held points find their edge again in one step
     }
     const int n = static_cast<int>(curve.size());
     if (n != factored_size) {
-      solver.compute(system_matrix(n, options));
+      solver.compute(free_block(n, options));
       if (solver.info() != Eigen::Success)
         throw Error("completion::grow_contour: the smoothing matrix could not be factored");
       factored_size = n;
     }
-    Eigen::MatrixX2d rhs(n, 2);
+    Eigen::MatrixX2d rhs(n - 4, 2);
     double largest = 0.0;
     for (int i = 0; i < n; ++i) {
       Vec2 v = Vec2::Zero();
-      if (i >= 2 && i <= n - 3) {
+      if (i >= 2 && i <= n - 3 && !held[i]) {
         const Vec2 tangent = curve[i + 1] - curve[i - 1];
         const double len = tangent.norm();
         if (len > 1e-12) {
@@ -134,24 +153,35 @@ ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const
           if (speed > options.max_speed) v *= options.max_speed / speed;
         }
       }
+      if (i < 2 || i > n - 3) continue;
       largest = std::max(largest, v.norm());
-      rhs.row(i) = (curve[i] + v).transpose();
+      rhs.row(i - 2) = (curve[i] + v).transpose();
     }
-    const Eigen::MatrixX2d next = solver.solve(rhs);
-    Polyline moved(n);
-    bool inside = true;
-    for (int i = 0; i < n; ++i) {
-      moved[i] = next.row(i).transpose();
-      if (i >= 2 && i <= n - 3 && !allowed(moved[i])) inside = false;
+    {  // the fixed points' share of the first two and last two free rows
+      const double a = options.alpha * options.step, b = options.beta * options.step;
+      rhs.row(0) -= (b * curve[0] + (-a - 4 * b) * curve[1]).transpose();
+      if (n - 4 > 1) rhs.row(1) -= (b * curve[1]).transpose();
+      rhs.row(n - 5) -= (b * curve[n - 1] + (-a - 4 * b) * curve[n - 2]).transpose();
+      if (n - 4 > 1) rhs.row(n - 6) -= (b * curve[n - 2]).transpose();
+    }
+    const Eigen::MatrixX2d solved = solver.solve(rhs);
+    double moved_most = 0.0;
+    int free_points = 0;
+    for (int i = 2; i <= n - 3; ++i) {
+      if (held[i]) continue;
+      const Vec2 x = solved.row(i - 2).transpose();
+      if (!allowed(x) || beyond_reach(x)) {
+        held[i] = 1;
+        continue;
+      }
+      ++free_points;
+      moved_most = std::max(moved_most, (x - curve[i]).norm());
+      curve[i] = x;
     }
     result.iterations = it;
-    if (!inside) {
-      result.stop = ContourStop::kLeftAllowed;
-      break;
-    }
-    curve = std::move(moved);
-    if (largest < options.epsilon) {
-      result.stop = ContourStop::kConverged;
+    // Line 11 of Algorithm 1: no force left on the free points; or nothing moves.
+    if (largest < options.epsilon || moved_most < options.epsilon) {
+      result.stop = free_points < n - 4 ? ContourStop::kLeftAllowed : ContourStop::kConverged;
       break;
     }
   }

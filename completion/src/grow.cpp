@@ -83,11 +83,22 @@ Polyline sharpen(const Polyline& curve, const Edge& e) {
 
 Growth grow_edge(const Context& ctx, const Edge& e) {
   Growth g;
-  if (e.piece_p.size() < 3 || e.piece_q.size() < 3 || e.width < 2.0) return g;
+  if (e.width < 2.0) return g;
   const RegionInfo& region = ctx.regions.at(e.region);
+  // An end without visible outline beside it (its side runs on under another
+  // occluder: the back hair's long edge under the cap and the bangs) was left
+  // uncompleted; it continues straight along its tangent instead.
+  const auto piece_or_line = [](const Polyline& piece, const Vec2& end, const Vec2& tangent) {
+    if (piece.size() >= 3) return piece;
+    Polyline line;
+    for (int k = 8; k >= 0; --k) line.push_back(end - static_cast<double>(k) * tangent);
+    return line;
+  };
   ContourFields fields;
-  fields.at_p = fit_hamiltonian(e.piece_p, ctx.options->fit_regularization);
-  fields.at_q = fit_hamiltonian(e.piece_q, ctx.options->fit_regularization);
+  fields.at_p =
+      fit_hamiltonian(piece_or_line(e.piece_p, e.p, e.tangent_p), ctx.options->fit_regularization);
+  fields.at_q =
+      fit_hamiltonian(piece_or_line(e.piece_q, e.q, e.tangent_q), ctx.options->fit_regularization);
   // Υ > 0 on the strand's side of each extended outline: the side the other
   // end lies on.
   const double dp = fields.at_p.value(e.p) - fields.at_p.value(e.q);

@@ -44,11 +44,12 @@ TEST(AnnotatedCases, JoinsMatchTheAnnotatedStrands) {
   }
   std::printf("all: precision %.3f recall %.3f, mean strand IoU %.3f\n", total.precision(),
               total.recall(), iou_sum / std::max(1, iou_count));
-  // Floors just under the measured level (0.982 / 0.931 / 0.737 with the
-  // joins across the face; see docs/completion.md for the targets).
+  // Floors just under the measured level (0.982 / 0.931 / 0.754 with the
+  // joins across the face and the grown edges without visible outline beside
+  // an end; see docs/completion.md for the targets).
   EXPECT_GE(total.precision(), 0.975);
   EXPECT_GE(total.recall(), 0.92);
-  EXPECT_GE(iou_sum / iou_count, 0.73);
+  EXPECT_GE(iou_sum / iou_count, 0.75);
 }
 
 }  // namespace

@@ -102,6 +102,53 @@ TEST(ActiveContour, StopsWhenItWouldLeaveTheOccluder) {
   for (const Vec2& x : r.curve) EXPECT_TRUE(s.allowed(x));
 }
 
+// A notch of another region cuts into the occluder next to the band's top
+// side: the points that reach it stay there while the rest of the curve
+// grows (in Algorithm 1 as written the first point that would leave stops
+// the whole curve, which on drawings stopped most curves in their first steps).
+TEST(ActiveContour, PointsAtTheOccludersEdgeHoldWhileTheRestGrows) {
+  BandUnderOccluder s;
+  s.allowed = [](const Vec2& x) {
+    const bool band = x.x() >= 10 && x.x() < 100 && x.y() >= 40 && x.y() < 70;
+    const bool occluder = x.x() >= 100 && x.x() < 150 && x.y() >= 20 && x.y() < 90;
+    const bool notch = x.x() >= 106 && x.x() < 112 && x.y() >= 30 && x.y() < 46;
+    return band || (occluder && !notch);
+  };
+  const ContourResult r = grow_contour({s.p, s.q}, Vec2(1, 0), Vec2(1, 0), s.fields, s.allowed);
+  EXPECT_NE(r.stop, ContourStop::kIterationCap);
+  double reach = 0;
+  for (const Vec2& x : r.curve) {
+    EXPECT_TRUE(s.allowed(x)) << x.transpose();
+    reach = std::max(reach, x.x());
+  }
+  EXPECT_GT(reach, 130.0) << "the curve grew past the notch";
+}
+
+// Under a wide occluder the growth stops max_reach chord lengths from p q.
+TEST(ActiveContour, GrowthStopsAtMaxReachUnderAWideOccluder) {
+  BandUnderOccluder s;
+  s.allowed = [](const Vec2& x) {
+    const bool band = x.x() >= 10 && x.x() < 100 && x.y() >= 40 && x.y() < 70;
+    return band || (x.x() >= 100 && x.x() < 500 && x.y() >= 0 && x.y() < 110);
+  };
+  for (double max_reach : {1.0, 2.0}) {
+    ContourOptions options;
+    options.max_reach = max_reach;
+    const ContourResult r =
+        grow_contour({s.p, s.q}, Vec2(1, 0), Vec2(1, 0), s.fields, s.allowed, options);
+    double reach = 0;
+    for (const Vec2& x : r.curve) reach = std::max(reach, x.x());
+    SCOPED_TRACE(max_reach);
+    EXPECT_LE(reach, 100.0 + 30.0 * max_reach + 1e-9);  // |p − q| = 30
+    EXPECT_GT(reach, 100.0 + 30.0 * max_reach - 4.0) << "grew up to the reach";
+  }
+  ContourOptions bad;
+  bad.max_reach = 0;
+  std::string why;
+  EXPECT_FALSE(bad.is_valid(&why));
+  EXPECT_NE(why.find("max_reach"), std::string::npos);
+}
+
 TEST(ActiveContour, ZeroFieldConvergesAtOnce) {
   BandUnderOccluder s;
   ContourFields zero;  // A = 0, B = 0: no force anywhere

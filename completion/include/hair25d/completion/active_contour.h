@@ -21,12 +21,17 @@ struct ContourOptions {
   double spacing = 2.0;    // pixels between curve samples (resampled as it grows)
   int max_iterations = 400;
   double omega_gain = 0.05;  // Ω(x) = tanh(gain · Υ_p Υ_q), 0 outside the wedge
+  // No point grows farther from the chord p q than this many |p − q|: what
+  // lies under a wide occluder is unknown, and a root would otherwise fill it.
+  double max_reach = 2.0;
   // False, with a message naming the option, its value and the rule, if unusable.
   bool is_valid(std::string* error) const;
 };
 
 enum class ContourStop {
-  kLeftAllowed,   // the next step would leave the allowed area: the previous curve
+  // Some points stopped where their next step would leave the allowed area
+  // (or pass `max_reach`), the others stopped moving.
+  kLeftAllowed,
   kConverged,     // |V| < ε
   kIterationCap,  // max_iterations reached
 };
@@ -49,7 +54,8 @@ struct ContourFields {
 
 // Grows `initial` (from p = front() to q = back(), at least 2 points) under the
 // fields. `allowed(x)` says whether a point may be there (inside the occluders
-// or the strand itself). Endpoints stay fixed; the neighbours of the ends
+// or the strand itself); a point whose step would leave it stays where it is
+// while the others go on. Endpoints stay fixed; the neighbours of the ends
 // follow the tangents `tangent_p`, `tangent_q` (unit, pointing into the hidden
 // part). Throws hair25d::Error for invalid options or a curve of < 2 points.
 ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const Vec2& tangent_q,
