@@ -88,19 +88,35 @@ Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& sour
 namespace hair25d::completion::detail {
 namespace {
 
+// Steps beyond a material's reach into the hole cost this many times more.
+constexpr int kBeyondReach = 16;
+
+// The known materials around the hole (connected known, non-ink areas) and
+// how far (chamfer units) each plausibly continues behind the hair.
+struct Materials {
+  std::vector<int> label;  // per pixel, 0 = none
+  std::vector<int> reach;  // per material
+};
+
 // Multi-source geodesic propagation (Dial's bucket queue, chamfer weights 5
 // orthogonal and 7 diagonal ≈ 5√2): each pixel reachable through `pass`
 // takes the origin of its nearest seed. A seed starts at its `start`
-// distance (same units; empty = all 0). Pixels never reached keep −1.
+// distance (same units; empty = all 0). With `materials`, a step beyond the
+// reach of the origin's material costs kBeyondReach times more. Pixels never
+// reached keep −1.
 void propagate(int w, int h, const Mask& pass, const std::vector<int>& seeds,
-               const std::vector<int>& start, std::vector<int>& origin) {
+               const std::vector<int>& start, std::vector<int>& origin,
+               const Materials* materials = nullptr) {
   const std::size_t n = static_cast<std::size_t>(w) * h;
   std::vector<int> dist(n, INT_MAX);
+  // Distance from the origin (unweighted), only needed with materials.
+  std::vector<int> travelled(materials == nullptr ? 0 : n, 0);
   int max_start = 0;
   for (std::size_t k = 0; k < start.size(); ++k) max_start = std::max(max_start, start[k]);
-  // Every pending distance lies within [d, d + max_start + 7]: a ring of
-  // that many buckets never wraps onto the one being emptied.
-  const std::size_t ring = static_cast<std::size_t>(max_start) + 8;
+  // Every pending distance lies within [d, d + max_start + longest step]: a
+  // ring of that many buckets never wraps onto the one being emptied.
+  const int longest = materials == nullptr ? 7 : 7 * kBeyondReach;
+  const std::size_t ring = static_cast<std::size_t>(max_start + longest) + 1;
   std::vector<std::vector<int>> bucket(ring);
   for (std::size_t k = 0; k < seeds.size(); ++k) {
     const int s = seeds[k], d0 = start.empty() ? 0 : start[k];
@@ -129,9 +145,18 @@ void propagate(int w, int h, const Mask& pass, const std::vector<int>& seeds,
         if (m >= 4 && !pass[static_cast<std::size_t>(y * w + nx)] &&
             !pass[static_cast<std::size_t>(ny * w + x)])
           continue;
-        const int nd = d + (m < 4 ? 5 : 7);
+        const int step = m < 4 ? 5 : 7;
+        int nd = d + step, nt = 0;
+        if (materials != nullptr) {
+          nt = travelled[static_cast<std::size_t>(i)] + step;
+          const int o = origin[static_cast<std::size_t>(i)];
+          const int m = o >= 0 ? materials->label[static_cast<std::size_t>(o)] : 0;
+          if (m > 0 && nt > materials->reach[static_cast<std::size_t>(m)])
+            nd = d + step * kBeyondReach;
+        }
         if (nd >= dist[static_cast<std::size_t>(j)]) continue;
         dist[static_cast<std::size_t>(j)] = nd;
+        if (materials != nullptr) travelled[static_cast<std::size_t>(j)] = nt;
         origin[static_cast<std::size_t>(j)] = origin[static_cast<std::size_t>(i)];
         bucket[static_cast<std::size_t>(nd) % ring].push_back(j);
         ++pending;
@@ -165,6 +190,52 @@ cv::Mat region_depth(const Image& image, const Mask& hole, const Mask& ink) {
   cv::Mat depth;
   cv::distanceTransform(free, depth, cv::DIST_L1, cv::DIST_MASK_3);  // only compared to 10 px
   return depth;
+}
+
+// The known materials around the hole: connected known, non-ink areas of the
+// crop (4-connected, so a line closes them). One that lies on the hair (most
+// of its rim within a line's width of the hole: a headband or a clip lying on
+// the hair, a highlight the segmentation left) is no part of what is behind
+// the hair: it continues only as far as it is thick (its largest inscribed
+// radius). The face, the skin and the paper, cut by the hair, reach on.
+Materials find_materials(const Mask& hole, const Mask& ink, int w, int h) {
+  constexpr int kRimReach = 6;       // px: a rim pixel this near the hole borders it
+  constexpr double kOnHair = 0.6;    // share of the rim bordering the hole
+  constexpr float kMinReach = 3.0f;  // px
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  cv::Mat known(h, w, CV_8U);
+  for (std::size_t i = 0; i < n; ++i) known.data[i] = !hole[i] && !ink[i] ? 255 : 0;
+  cv::Mat labels;
+  const int count = cv::connectedComponents(known, labels, 4, CV_32S);
+  cv::Mat hole_m(h, w, CV_8U, const_cast<std::uint8_t*>(hole.data())), near_hole;
+  cv::dilate(hole_m, near_hole,
+             cv::getStructuringElement(cv::MORPH_RECT, {2 * kRimReach + 1, 2 * kRimReach + 1}));
+  cv::Mat inside;
+  cv::distanceTransform(known, inside, cv::DIST_L2, cv::DIST_MASK_3);
+  const std::size_t k_count = static_cast<std::size_t>(count);
+  std::vector<int> rim(k_count, 0), rim_near(k_count, 0);
+  std::vector<float> thick(k_count, 0.0f);
+  const int* lab = labels.ptr<int>();
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      const int c = lab[i];
+      if (c == 0) continue;
+      const std::size_t k = static_cast<std::size_t>(c);
+      thick[k] = std::max(thick[k], inside.ptr<float>(y)[x]);
+      const bool edge = x == 0 || y == 0 || x + 1 == w || y + 1 == h || lab[i - 1] != c ||
+                        lab[i + 1] != c || lab[i - w] != c || lab[i + w] != c;
+      if (!edge) continue;
+      ++rim[k];
+      if (near_hole.data[i]) ++rim_near[k];
+    }
+  Materials m;
+  m.label.assign(lab, lab + n);
+  m.reach.assign(k_count, INT_MAX);
+  for (std::size_t k = 1; k < k_count; ++k)
+    if (rim[k] > 0 && rim_near[k] >= kOnHair * rim[k])
+      m.reach[k] = static_cast<int>(std::lround(5.0f * std::max(kMinReach, thick[k])));
+  return m;
 }
 
 }  // namespace
@@ -216,7 +287,8 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
     const float t = depth.at<float>(seeds[k] / w, seeds[k] % w);
     start[k] = static_cast<int>(std::lround(kThinPenalty * std::max(0.0f, kThinDepth - t)));
   }
-  propagate(w, h, pass, seeds, start, origin);
+  const Materials materials = find_materials(hole, ink, w, h);
+  propagate(w, h, pass, seeds, start, origin, &materials);
   // Pockets closed off by barriers or ink (and the barrier pixels
   // themselves) take the nearest colour across them.
   bool cut_off = false;
@@ -229,7 +301,7 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
       if (hole[i] || band.data[i]) all[i] = 1;
       if (origin[i] >= 0 && all[i]) reached.push_back(static_cast<int>(i));
     }
-    propagate(w, h, all, reached, {}, origin);
+    propagate(w, h, all, reached, {}, origin, &materials);
   }
   int unreached = 0;
   Image filled = image;

@@ -16,6 +16,10 @@ constexpr Rgba kShadow{215, 150, 120, 255};
 constexpr Rgba kInk{35, 25, 25, 255};
 constexpr Rgba kHair{90, 140, 190, 255};
 
+struct Box {  // [x0, x1) × [y0, y1)
+  int x0, y0, x1, y1;
+};
+
 int luma(const Rgba& c) { return (299 * c.r + 587 * c.g + 114 * c.b) / 1000; }
 
 int colour_distance(const Rgba& a, const Rgba& b) {
@@ -200,6 +204,47 @@ TEST(Background, ShadingBorderWithoutInkGetsNoLine) {
     }
   EXPECT_LE(colour_distance(r.image.at(60, 120), kSkin), 6);
   EXPECT_LE(colour_distance(r.image.at(150, 120), kShadow), 6);
+}
+
+// A white headband (soft-shaded, no ink outline, as in lucy) lies on a wide
+// band of hair (the hole all round it), paper above the hair, skin below.
+// What is behind the hair is paper and skin: the band continues no farther
+// than it is thick. (Before, its white filled the hair round it as the
+// nearest flat colour: a white cap.)
+TEST(Background, AccessoryLyingOnTheHairIsNotContinuedBehindIt) {
+  constexpr int kW = 300, kH = 200;
+  constexpr Rgba kWhite{255, 255, 255, 255};
+  const Box band{100, 88, 200, 112};  // interior, 24 px thick
+  Image drawing(kW, kH);
+  LabelMap hole(kW, kH);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      Rgba c = y >= 190 ? kSkin : kPaper;
+      const bool hair = y >= 10 && y < 190 && x >= 20 && x < 280;
+      if (hair) c = kHair;
+      const bool inside = x >= band.x0 && x < band.x1 && y >= band.y0 && y < band.y1;
+      if (inside) c = kWhite;
+      drawing.at(x, y) = c;
+      hole.at(x, y) = hair && !inside;
+    }
+  const BackgroundResult r = fill_background(drawing, hole);
+  expect_known_untouched(drawing, r.image, hole);
+  EXPECT_EQ(r.unreached, 0);
+  int white_far = 0, hole_far = 0, skin_below = 0, below = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (!hole.at(x, y)) continue;
+      const int dx = std::max({band.x0 - x, x - (band.x1 - 1), 0});
+      const int dy = std::max({band.y0 - y, y - (band.y1 - 1), 0});
+      // The band's own reach: its inscribed radius, 12 px, and a little.
+      if (std::max(dx, dy) <= 16) continue;
+      ++hole_far;
+      white_far += colour_distance(r.image.at(x, y), kWhite) <= 8;
+      if (y >= 170) ++below, skin_below += colour_distance(r.image.at(x, y), kSkin) <= 10;
+    }
+  ASSERT_GT(hole_far, 30000);
+  EXPECT_EQ(white_far, 0) << "the headband's white continued behind the hair";
+  EXPECT_GT(skin_below, 0.9 * below) << "the skin below still continues up";
 }
 
 TEST(Background, EmptyHoleLeavesTheImage) {
