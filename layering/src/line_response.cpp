@@ -231,8 +231,11 @@ void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
       cv::GaussianBlur(grey.rowRange(r0, r1), dst, cv::Size(0, 0), sigma, sigma,
                        cv::BORDER_REPLICATE);
     };
-    auto top = std::async(n > 20000 ? std::launch::async : std::launch::deferred,
-                          [&] { blur_rows(0, split); });
+    // Not worth a thread for small windows; where no thread can be made,
+    // the band runs here at get().
+    const auto policy =
+        n > 20000 ? std::launch::async | std::launch::deferred : std::launch::deferred;
+    auto top = std::async(policy, [&] { blur_rows(0, split); });
     // Noise: MAD of a 3x3 Laplacian on the raw grey window (its edges
     // reflected), over pixels where it is small (flat areas), scaled for a
     // Gaussian.

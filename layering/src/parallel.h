@@ -7,6 +7,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -42,7 +43,13 @@ void parallel_for(int n, F&& f, int max_threads = 0) {
   };
   std::vector<std::jthread> helpers;
   helpers.reserve(threads - 1);
-  for (int t = 1; t < threads; ++t) helpers.emplace_back(work);
+  for (int t = 1; t < threads; ++t) {
+    try {
+      helpers.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;  // no more threads to be had: the ones running take every item
+    }
+  }
   work();
   helpers.clear();  // joins
   if (error) std::rethrow_exception(error);
