@@ -137,6 +137,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   out.line_width = options.line_width > 0 ? options.line_width
                    : fill.line_width > 0  ? fill.line_width
                                           : detail::LineResponse::estimate_line_width(image);
+  // The grey levels are smoothed on a second core while the boundaries are traced.
+  lines.prepare(out.line_width, out.labels);
   out.graph = build_boundary_graph(out.labels);
   const BoundaryGraph& graph = out.graph;
   const auto& bs = graph.boundaries;
@@ -217,12 +219,14 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   const int nj = static_cast<int>(graph.junctions.size());
   std::vector<std::vector<Ray>> rays(nj);
   std::vector<char> cusp(nj, 0);
+  // Each boundary walked from its end, made once for every fit below.
+  std::vector<Polyline> backs(nb);
   for (int i = 0; i < nb; ++i) {
     const Boundary& b = bs[i];
     if (b.closed()) continue;
     const Vec2 leave_start = leaving_direction(b.points, reach);
-    Polyline back(b.points.rbegin(), b.points.rend());
-    const Vec2 leave_end = leaving_direction(back, reach);
+    backs[i].assign(b.points.rbegin(), b.points.rend());
+    const Vec2 leave_end = leaving_direction(backs[i], reach);
     rays[b.start].push_back({i, true, leave_start});
     rays[b.end].push_back({i, false, leave_end});
     // From the first direction to the last one (arriving, -leave_end); on
@@ -232,6 +236,17 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     out.boundaries[i].cues.turning = -std::atan2(cross, leave_start.dot(arrive));
     const bool on_border = b.left == kOutsideLabel || b.right == kOutsideLabel;
     if (!on_border && !out.boundaries[i].occluding) cusp[b.start] = cusp[b.end] = 1;
+  }
+  // The circles of the label-map sectors (2.5 and 5 line widths, at least 4
+  // and 8 px) as offsets from a junction, the same for every junction.
+  std::vector<Vec2> circles[2];
+  for (int wide = 0; wide < 2; ++wide) {
+    const double radius = std::max(wide ? 8.0 : 4.0, (wide ? 5.0 : 2.5) * out.line_width);
+    const int samples = std::max(32, static_cast<int>(std::ceil(2 * std::numbers::pi * radius)));
+    for (int k = 0; k < samples; ++k) {
+      const double t = 2 * std::numbers::pi * (k + 0.5) / samples;
+      circles[wide].emplace_back(radius * std::cos(t), radius * std::sin(t));
+    }
   }
   bool hair_junction = false;
   // Φ_J and the sectors at every junction that is not a cusp (run again
@@ -273,7 +288,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       for (const Ray& r : rays[j]) {
         const Polyline& p = bs[r.boundary].points;
         dirs.push_back(r.at_start ? leaving_direction(p, 3 * reach)
-                                  : leaving_direction(Polyline(p.rbegin(), p.rend()), 3 * reach));
+                                  : leaving_direction(backs[r.boundary], 3 * reach));
       }
       const RaySectors around = sectors_around(dirs);
       const int n = static_cast<int>(dirs.size());
@@ -295,9 +310,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       std::vector<Vec2> dirs;
       for (const Ray& r : rays[j]) {
         const Polyline& p = bs[r.boundary].points;
-        dirs.push_back(r.at_start
-                           ? curved_leaving_direction(p, skip, reach)
-                           : curved_leaving_direction(Polyline(p.rbegin(), p.rend()), skip, reach));
+        dirs.push_back(r.at_start ? curved_leaving_direction(p, skip, reach)
+                                  : curved_leaving_direction(backs[r.boundary], skip, reach));
       }
       const RaySectors around = sectors_around(dirs);
       const int n = static_cast<int>(dirs.size());
@@ -314,26 +328,36 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     // And off the label map: each region's share of a circle about the
     // junction.
     const LabelMap& lab = out.labels;
+    std::vector<std::pair<int, int>> count;  // (label, samples), a handful per junction
+    auto count_of = [&](int label) {
+      for (const auto& [l, c] : count)
+        if (l == label) return c;
+      return 0;
+    };
     for (int j = 0; j < nj; ++j) {
       if (cusp[j]) continue;
       const Vec2 centre = graph.junctions[j].position;
       for (int wide = 0; wide < 2; ++wide) {
-        const double radius = std::max(wide ? 8.0 : 4.0, (wide ? 5.0 : 2.5) * out.line_width);
-        const int samples =
-            std::max(32, static_cast<int>(std::ceil(2 * std::numbers::pi * radius)));
-        std::map<int, int> count;
-        for (int k = 0; k < samples; ++k) {
-          const double t = 2 * std::numbers::pi * (k + 0.5) / samples;
-          const int x = static_cast<int>(std::floor(centre.x() + radius * std::cos(t)));
-          const int y = static_cast<int>(std::floor(centre.y() + radius * std::sin(t)));
-          ++count[lab.contains(x, y) ? lab.at(x, y) : kOutsideLabel];
+        const std::vector<Vec2>& circle = circles[wide];
+        const int samples = static_cast<int>(circle.size());
+        count.clear();
+        for (const Vec2& d : circle) {
+          const int x = static_cast<int>(std::floor(centre.x() + d.x()));
+          const int y = static_cast<int>(std::floor(centre.y() + d.y()));
+          const int label = lab.contains(x, y) ? lab.at(x, y) : kOutsideLabel;
+          auto it = std::find_if(count.begin(), count.end(),
+                                 [&](const auto& p) { return p.first == label; });
+          if (it == count.end())
+            count.emplace_back(label, 1);
+          else
+            ++it->second;
         }
         for (const Ray& r : rays[j]) {
           const Boundary& b = bs[r.boundary];
           EndAngles& e = r.at_start ? out.boundaries[r.boundary].cues.start
                                     : out.boundaries[r.boundary].cues.end;
-          const double l = 2 * std::numbers::pi * count[b.left] / samples;
-          const double rr = 2 * std::numbers::pi * count[b.right] / samples;
+          const double l = 2 * std::numbers::pi * count_of(b.left) / samples;
+          const double rr = 2 * std::numbers::pi * count_of(b.right) / samples;
           (wide ? e.circle_wide_left : e.circle_left) = l;
           (wide ? e.circle_wide_right : e.circle_right) = rr;
         }
