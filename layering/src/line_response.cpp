@@ -13,6 +13,7 @@
 #endif
 
 #include "hair25d/core/error.h"
+#include "raster_scan.h"
 
 namespace hair25d::layering::detail {
 namespace {
@@ -150,6 +151,20 @@ struct LabelView {
                                                   : kOutside;
   }
 };
+// Noise: MAD of a 3x3 Laplacian on the raw grey window (its edges
+// reflected, as if it were the whole image), over every fourth pixel of
+// every fourth row, scaled for a Gaussian.
+double noise_of(const cv::Mat& grey) {
+  cv::Mat lap;
+  cv::Laplacian(grey, lap, CV_32F, 1, 1.0, 0.0, cv::BORDER_DEFAULT | cv::BORDER_ISOLATED);
+  std::vector<double> mags;
+  mags.reserve(static_cast<std::size_t>(grey.total()) / 16 + 1);
+  for (int y = 0; y < grey.rows; y += 4)
+    for (int x = 0; x < grey.cols; x += 4) mags.push_back(std::abs(lap.at<float>(y, x)));
+  // A 4-neighbour Laplacian of i.i.d. noise has σ·√20.
+  return median_of(mags) * 1.4826 / std::sqrt(20.0);
+}
+
 }  // namespace
 
 int LineResponse::window_margin(double line_width) {
@@ -182,21 +197,71 @@ LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0
 }
 
 LineResponse::~LineResponse() {
-  // The conversion reads the image and writes this object's buffers: it must
-  // end before they go (also when smooth() was never called).
+  // The conversion and the early blur read the image and write this
+  // object's buffers: they must end before those go (also when smooth() was
+  // never called). The early blur waits for the conversion itself, so it is
+  // waited for first.
+  if (smoothing_.valid()) smoothing_.wait();
   if (converting_.valid()) converting_.wait();
 }
 
+void LineResponse::prepare(double line_width, const LabelMap& filled) {
+  if (smoothing_.valid() || filled.width() != image_->width() ||
+      filled.height() != image_->height())
+    return;
+  // Every boundary smooth() will be given has a non-zero label on one side,
+  // so it lies in the box of those labels' pixel corners; that box grown by
+  // the margin holds smooth()'s window. Blurring it here, on a second core
+  // while the caller traces the boundaries, gives the same values there: a
+  // window's blur reads the pixels beyond it from the image.
+  auto blur = [this, lw = std::max(1.0, line_width), &filled] {
+    converting_.get();
+    int bx0, by0, bx1, by1;
+    if (!detail::label_box(filled, &bx0, &by0, &bx1, &by1)) return;
+    const Image& image = *image_;
+    const int margin = window_margin(lw);
+    const int x0 = std::max(0, bx0 - margin), y0 = std::max(0, by0 - margin);
+    const int x1 = std::min(image.width(), bx1 + 1 + margin);
+    const int y1 = std::min(image.height(), by1 + 1 + margin);
+    auto grey =
+        std::make_unique_for_overwrite<float[]>(static_cast<std::size_t>(x1 - x0) * (y1 - y0));
+    try {
+      const cv::Mat raw(image.height(), image.width(), CV_32F, raw_.get());
+      cv::Mat smooth(y1 - y0, x1 - x0, CV_32F, grey.get());
+      const double sigma = grey_sigma(lw);
+      cv::GaussianBlur(raw(cv::Rect(x0, y0, x1 - x0, y1 - y0)), smooth, cv::Size(0, 0), sigma,
+                       sigma, cv::BORDER_REPLICATE);
+    } catch (const cv::Exception& e) {
+      throw Error(std::string("layering: OpenCV failed while smoothing grey levels: ") + e.what());
+    }
+    early_ = {x0, y0, x1 - x0, y1 - y0, lw};
+    early_grey_ = std::move(grey);
+  };
+  smoothing_ = std::async(std::launch::async | std::launch::deferred, blur);
+}
+
 void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
-  converting_.get();  // rethrows what the conversion threw
+  // Rethrow what the conversion or the early blur threw.
+  if (smoothing_.valid()) smoothing_.get();
+  if (converting_.valid()) converting_.get();
   const Image& image = *image_;
   line_width_ = std::max(1.0, line_width);
   x0_ = std::clamp(x0, 0, std::max(0, image.width() - 1));
   y0_ = std::clamp(y0, 0, std::max(0, image.height() - 1));
   w_ = std::clamp(x1, x0_ + 1, image.width()) - x0_;
   h_ = std::clamp(y1, y0_ + 1, image.height()) - y0_;
+  // The noise is measured on this window; the smoothed grey levels may be
+  // kept for the larger one blurred early, whose values here are the same.
+  const cv::Rect window(x0_, y0_, w_, h_);
+  const bool early = early_grey_ && early_.line_width == line_width_ && early_.x0 <= x0_ &&
+                     early_.y0 <= y0_ && x0_ + w_ <= early_.x0 + early_.w &&
+                     y0_ + h_ <= early_.y0 + early_.h;
+  if (early) {
+    x0_ = early_.x0, y0_ = early_.y0, w_ = early_.w, h_ = early_.h;
+    grey_ = std::move(early_grey_);
+  }
   const std::size_t n = static_cast<std::size_t>(w_) * h_;
-  grey_ = std::make_unique_for_overwrite<float[]>(n);
+  if (!early) grey_ = std::make_unique_for_overwrite<float[]>(n);
   translucent_rows_.assign(h_ + 1, 0);
   for (int y = 0; y < h_; ++y)
     translucent_rows_[y + 1] = translucent_rows_[y] + image_translucent_[y0_ + y];
@@ -217,6 +282,10 @@ void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
     const cv::Mat raw(image.height(), image.width(), CV_32F, raw_.get());
     const cv::Mat grey = raw(cv::Rect(x0_, y0_, w_, h_));
     cv::Mat smooth(h_, w_, CV_32F, grey_.get());
+    if (early) {
+      noise_sigma_ = noise_of(raw(window));
+      return;
+    }
     // Smooth at about a quarter line width: tones (screentone dots, JPEG
     // ringing) average out while a line keeps most of its depth. The top
     // rows on a second core, the bottom ones here after the noise. A band
@@ -236,17 +305,7 @@ void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
     const auto policy =
         n > 20000 ? std::launch::async | std::launch::deferred : std::launch::deferred;
     auto top = std::async(policy, [&] { blur_rows(0, split); });
-    // Noise: MAD of a 3x3 Laplacian on the raw grey window (its edges
-    // reflected), over pixels where it is small (flat areas), scaled for a
-    // Gaussian.
-    cv::Mat lap;
-    cv::Laplacian(grey, lap, CV_32F, 1, 1.0, 0.0, cv::BORDER_DEFAULT | cv::BORDER_ISOLATED);
-    std::vector<double> mags;
-    mags.reserve(n / 16 + 1);
-    for (int y = 0; y < h_; y += 4)
-      for (int x = 0; x < w_; x += 4) mags.push_back(std::abs(lap.at<float>(y, x)));
-    // A 4-neighbour Laplacian of i.i.d. noise has σ·√20.
-    noise_sigma_ = median_of(mags) * 1.4826 / std::sqrt(20.0);
+    noise_sigma_ = noise_of(grey);
     blur_rows(split, h_);
     top.get();
   } catch (const cv::Exception& e) {

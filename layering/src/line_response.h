@@ -41,6 +41,12 @@ class LineResponse {
   // may be measured before smooth().
   explicit LineResponse(const Image& image);
   void smooth(double line_width, int x0, int y0, int x1, int y1);
+  // Optional, between the two: starts blurring, on a second core, the box of
+  // the non-zero labels of `filled` (the map whose boundaries will be
+  // measured) grown by window_margin(line_width); smooth() with the same
+  // line width then uses it if it holds smooth()'s window. `filled` must
+  // stay unchanged until smooth().
+  void prepare(double line_width, const LabelMap& filled);
 
   LineResponse(const LineResponse&) = delete;
   LineResponse& operator=(const LineResponse&) = delete;
@@ -91,6 +97,14 @@ class LineResponse {
   std::unique_ptr<float[]> raw_;
   std::vector<std::uint8_t> image_translucent_;
   std::future<void> converting_;
+  // The early blur (prepare): its window and line width, and its result.
+  struct EarlyWindow {
+    int x0 = 0, y0 = 0, w = 0, h = 0;
+    double line_width = 0.0;
+  };
+  EarlyWindow early_;
+  std::unique_ptr<float[]> early_grey_;
+  std::future<void> smoothing_;
   // w_ × h_, row-major.
   std::unique_ptr<float[]> grey_;
   std::vector<float> colour_kernel_;

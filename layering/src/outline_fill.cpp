@@ -50,45 +50,6 @@ struct Growth {
   std::vector<int> reached;
 };
 
-// Rows and columns holding non-zero labels; false if there are none. Rows
-// are scanned only outside the box found so far: from the top and the bottom
-// for its rows, then within those from each side up to its columns.
-bool label_box(const LabelMap& labels, int* x0, int* y0, int* x1, int* y1) {
-  const int w = labels.width();
-  auto row = [&](int y) { return labels.data() + static_cast<std::size_t>(y) * w; };
-  auto any = [&](int y) {
-    int bits = 0;  // a branch-free OR: most rows of a drawing are all paper or all hair
-    for (int x = 0; x < w; ++x) bits |= row(y)[x];
-    return bits != 0;
-  };
-  *y0 = 0;
-  while (*y0 < labels.height() && !any(*y0)) ++*y0;
-  if (*y0 == labels.height()) return false;
-  *y1 = labels.height() - 1;
-  while (!any(*y1)) --*y1;
-  *x0 = w, *x1 = -1;
-  // Paper beside the hair is skipped eight pixels at a time (an OR, which
-  // vectorises), then the first label is found pixel by pixel.
-  constexpr int kBlock = 8;
-  auto zero_block = [](const int* p) {
-    int bits = 0;
-    for (int k = 0; k < kBlock; ++k) bits |= p[k];
-    return bits == 0;
-  };
-  for (int y = *y0; y <= *y1; ++y) {
-    const int* r = row(y);
-    int x = 0;
-    while (x + kBlock <= *x0 && zero_block(r + x)) x += kBlock;
-    for (; x < *x0; ++x)
-      if (r[x] != 0) *x0 = x;  // the loop ends at once
-    x = w - 1;
-    while (x - kBlock >= *x1 && zero_block(r + x - kBlock + 1)) x -= kBlock;
-    for (; x > *x1; --x)
-      if (r[x] != 0) *x1 = x;
-  }
-  return true;
-}
-
 // Dial's algorithm: a multi-source shortest path on the 8-neighbour grid with a
 // ring of buckets, linear in the pixel count. Fronts start from region pixels
 // next to label 0, in raster order; where two fronts reach a pixel at the same
@@ -98,7 +59,7 @@ Growth grow(const LabelMap& labels, int limit) {
   const int h = labels.height();
   Growth g;
   int bx0, by0, bx1, by1;
-  if (!label_box(labels, &bx0, &by0, &bx1, &by1)) return g;
+  if (!detail::label_box(labels, &bx0, &by0, &bx1, &by1)) return g;
   // A pixel c steps (Chebyshev) from every region is at least c · kOrtho away.
   const int margin = limit / kOrtho + 1;
   Window& box = g.box;

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <vector>
 
+#include "hair25d/core/image.h"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -47,6 +49,45 @@ inline void not_equal(const int* a, const int* b, int n, std::uint8_t* out) {
   }
 #endif
   for (; i < n; ++i) out[i] = static_cast<std::uint8_t>(a[i] != b[i]);
+}
+
+// Rows and columns holding non-zero labels; false if there are none. Rows
+// are scanned only outside the box found so far: from the top and the bottom
+// for its rows, then within those from each side up to its columns.
+inline bool label_box(const LabelMap& labels, int* x0, int* y0, int* x1, int* y1) {
+  const int w = labels.width();
+  auto row = [&](int y) { return labels.data() + static_cast<std::size_t>(y) * w; };
+  auto any = [&](int y) {
+    int bits = 0;  // a branch-free OR: most rows of a drawing are all paper or all hair
+    for (int x = 0; x < w; ++x) bits |= row(y)[x];
+    return bits != 0;
+  };
+  *y0 = 0;
+  while (*y0 < labels.height() && !any(*y0)) ++*y0;
+  if (*y0 == labels.height()) return false;
+  *y1 = labels.height() - 1;
+  while (!any(*y1)) --*y1;
+  *x0 = w, *x1 = -1;
+  // Paper beside the hair is skipped eight pixels at a time (an OR, which
+  // vectorises), then the first label is found pixel by pixel.
+  constexpr int kBlock = 8;
+  auto zero_block = [](const int* p) {
+    int bits = 0;
+    for (int k = 0; k < kBlock; ++k) bits |= p[k];
+    return bits == 0;
+  };
+  for (int y = *y0; y <= *y1; ++y) {
+    const int* r = row(y);
+    int x = 0;
+    while (x + kBlock <= *x0 && zero_block(r + x)) x += kBlock;
+    for (; x < *x0; ++x)
+      if (r[x] != 0) *x0 = x;  // the loop ends at once
+    x = w - 1;
+    while (x - kBlock >= *x1 && zero_block(r + x - kBlock + 1)) x -= kBlock;
+    for (; x > *x1; --x)
+      if (r[x] != 0) *x1 = x;
+  }
+  return true;
 }
 
 // A fixed-size set of bits: an eighth of the memory of a byte a flag, so the

@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "hair25d/layering/boundary_graph.h"
 #include "line_response.h"
 
 namespace hair25d::layering {
@@ -109,6 +110,52 @@ TEST(LineSpeed, SparseColourSmoothingOnImagesSmallerThanTheKernel) {
     for (const double lw : {1.0, 6.0, 21.0})
       EXPECT_LT(max_colour_error(image, lw, 0, 0, w, h), kTolerance)
           << w << "x" << h << ", line width " << lw;
+  }
+}
+
+// Blurring early (prepare: the box of the labels, on a second core) and
+// blurring smooth()'s window measure alike, to the bit; so does a prepare()
+// whose line width smooth() does not use.
+TEST(LineSpeed, EarlyBlurMeasuresLikeTheWindowBlur) {
+  const Image image = test_image(331, 247, 5, true);
+  LabelMap labels(image.width(), image.height(), 0);
+  for (int y = 20; y < 230; ++y)
+    for (int x = 15 + y / 9; x < 300; ++x) labels.at(x, y) = 1 + (x / 41 + y / 37) % 4;
+  const BoundaryGraph graph = build_boundary_graph(labels);
+  for (const double lw : {1.0, 3.0, 4.6, 8.0}) {
+    const int m = LineResponse::window_margin(lw);
+    int x0 = image.width(), y0 = image.height(), x1 = 0, y1 = 0;
+    for (const Boundary& b : graph.boundaries) {
+      if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+      for (const Vec2& p : b.points) {
+        x0 = std::min(x0, static_cast<int>(p.x()));
+        y0 = std::min(y0, static_cast<int>(p.y()));
+        x1 = std::max(x1, static_cast<int>(p.x()));
+        y1 = std::max(y1, static_cast<int>(p.y()));
+      }
+    }
+    const LineResponse plain(image, lw, x0 - m, y0 - m, x1 + m, y1 + m);
+    LineResponse early(image);
+    early.prepare(lw, labels);
+    early.smooth(lw, x0 - m, y0 - m, x1 + m, y1 + m);
+    LineResponse other(image);
+    other.prepare(lw + 1.0, labels);
+    other.smooth(lw, x0 - m, y0 - m, x1 + m, y1 + m);
+    EXPECT_EQ(plain.noise_sigma(), early.noise_sigma());
+    EXPECT_EQ(plain.noise_sigma(), other.noise_sigma());
+    int compared = 0;
+    for (const Boundary& b : graph.boundaries) {
+      if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+      const auto want = plain.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+      for (const LineResponse* got : {&early, &other}) {
+        const auto m2 = got->measure(b.points, 1.5 * lw, labels, b.left, b.right);
+        EXPECT_EQ(want.contrast, m2.contrast) << "line width " << lw;
+        EXPECT_EQ(want.contrast_low, m2.contrast_low) << "line width " << lw;
+        EXPECT_EQ(want.colour_difference, m2.colour_difference) << "line width " << lw;
+      }
+      compared += want.contrast != 0.0;
+    }
+    EXPECT_GT(compared, 10) << "line width " << lw;
   }
 }
 
