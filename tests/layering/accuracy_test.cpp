@@ -177,9 +177,15 @@ TEST(Accuracy, GeneratedOrderDoesNotDependOnRegionNumbers) {
     for (const auto& [id, depth] : r.depth) EXPECT_EQ(p.depth.at(perm.at(id)), depth) << seed;
     // And the order is acyclic: every relation holds in it.
     for (const RegionRelation& x : p.relations) {
-      if (x.relation == Relation::kAbove) EXPECT_GT(p.depth.at(x.a), p.depth.at(x.b));
-      if (x.relation == Relation::kBelow) EXPECT_LT(p.depth.at(x.a), p.depth.at(x.b));
-      if (x.relation == Relation::kEqual) EXPECT_EQ(p.depth.at(x.a), p.depth.at(x.b));
+      if (x.relation == Relation::kAbove) {
+        EXPECT_GT(p.depth.at(x.a), p.depth.at(x.b));
+      }
+      if (x.relation == Relation::kBelow) {
+        EXPECT_LT(p.depth.at(x.a), p.depth.at(x.b));
+      }
+      if (x.relation == Relation::kEqual) {
+        EXPECT_EQ(p.depth.at(x.a), p.depth.at(x.b));
+      }
     }
   }
 }
