@@ -139,8 +139,6 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                                           : detail::LineResponse::estimate_line_width(image);
   // The grey levels are smoothed on a second core while the boundaries are traced.
   lines.prepare(out.line_width, out.labels);
-  // The grey levels are smoothed on a second core while the boundaries are traced.
-  lines.prepare(out.line_width, out.labels);
   out.graph = build_boundary_graph(out.labels);
   const BoundaryGraph& graph = out.graph;
   const auto& bs = graph.boundaries;
