@@ -5,62 +5,80 @@
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "hair25d/core/error.h"
 #include "polygon_sampling.h"
+#include "simple_outline.h"
 
 namespace hair25d::skeleton {
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Delaunay_mesh_vertex_base_2<K>;
-using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
-using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
-using Mesher = CGAL::Delaunay_mesher_2<Cdt, Criteria>;
-using Point = K::Point_2;
+// An outline that crosses or touches itself (a completed strand can fold over
+// itself where its grown part meets its visible part) makes the triangulation
+// insert constraint intersections. With inexact constructions those points
+// are rounded, the triangulation no longer agrees with its own geometry and
+// the mesher fails an internal check (a crash in a release build); making the
+// crossings explicit vertices is not enough, the refinement's own points
+// between nearly touching edges fail the same way. Such an outline is first
+// replaced by the boundaries of its filled shape (simple_outline.h); if even
+// those resample to a non-simple polygon, they are meshed with exact
+// constructions, correct but 10-300 ms rather than under 10.
+struct InexactKernel {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Itag = CGAL::Exact_predicates_tag;
+};
+struct ExactKernel {
+  using K = CGAL::Exact_predicates_exact_constructions_kernel;
+  using Itag = CGAL::Exact_intersections_tag;
+};
 
-}  // namespace
-
-MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw Error(why);
-  const Polyline clean = detail::clean_polygon(outline, "skeleton::mesh_strand", nullptr);
-  if (std::abs(signed_area(clean)) < 1e-6) {
-    throw Error("skeleton::mesh_strand: outline encloses zero area; a mesh needs a 2D shape");
-  }
-  const double spacing =
-      options.outline_spacing > 0 ? options.outline_spacing : 0.5 * options.max_edge;
-  const Polyline samples = detail::resample_closed(clean, spacing, nullptr);
+// Meshes the inside of disjoint closed loops (one, unless a pinched outline
+// was split): inside means inside an odd number of them.
+template <typename Kernel>
+MeshResult mesh_samples(const std::vector<Polyline>& loops, const MeshOptions& options) {
+  using K = typename Kernel::K;
+  using Vb = CGAL::Delaunay_mesh_vertex_base_2<K>;
+  using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+  using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, typename Kernel::Itag>;
+  using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
+  using Mesher = CGAL::Delaunay_mesher_2<Cdt, Criteria>;
+  using Point = typename K::Point_2;
 
   MeshResult result;
   try {
     Cdt cdt;
-    std::vector<Cdt::Vertex_handle> handles;
-    for (const Vec2& p : samples) handles.push_back(cdt.insert(Point(p.x(), p.y())));
-    for (std::size_t i = 0; i < handles.size(); ++i) {
-      Cdt::Vertex_handle a = handles[i], b = handles[(i + 1) % handles.size()];
-      if (a != b) cdt.insert_constraint(a, b);
+    for (const Polyline& samples : loops) {
+      std::vector<typename Cdt::Vertex_handle> handles;
+      for (const Vec2& p : samples) handles.push_back(cdt.insert(Point(p.x(), p.y())));
+      for (std::size_t i = 0; i < handles.size(); ++i) {
+        typename Cdt::Vertex_handle a = handles[i], b = handles[(i + 1) % handles.size()];
+        if (a != b) cdt.insert_constraint(a, b);
+      }
     }
-    // The seed is a point inside the outline: the domain is the component of
-    // the plane (cut by the constraints) that holds it. The centroid of the
-    // largest initial triangle inside the polygon is safely interior.
+    auto inside = [&loops](const Vec2& p) {
+      bool odd = false;
+      for (const Polyline& loop : loops) odd ^= point_in_polygon(loop, p);
+      return odd;
+    };
+    // Seeds are points inside the outline: the domain is the components of
+    // the plane (cut by the constraints) that hold them. The centroid of every
+    // initial triangle inside the polygon is one: a simple outline has one
+    // component, one pinched or folded by completion has several.
     std::vector<Point> seeds;
-    double best = 0.0;
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
       const Point c =
           CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-      const double a = std::abs(cdt.triangle(f).area());
-      if (a > best && point_in_polygon(samples, Vec2(c.x(), c.y()))) {
-        best = a;
-        seeds = {c};
-      }
+      if (inside(Vec2(CGAL::to_double(c.x()), CGAL::to_double(c.y())))) seeds.push_back(c);
     }
     if (seeds.empty()) {
       throw Error("skeleton::mesh_strand: no triangle lies inside the outline");
@@ -79,7 +97,7 @@ MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
       mesher.step_by_step_refine_mesh();
     }
 
-    std::map<Cdt::Vertex_handle, int> index;
+    std::map<typename Cdt::Vertex_handle, int> index;
     std::vector<std::array<int, 3>> faces;
     std::vector<std::array<bool, 3>> on_curve;
     std::vector<Vec2> vertices;
@@ -88,13 +106,16 @@ MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
       std::array<int, 3> tri{};
       for (int k = 0; k < 3; ++k) {
         auto [it, inserted] = index.emplace(f->vertex(k), static_cast<int>(vertices.size()));
-        if (inserted) vertices.emplace_back(f->vertex(k)->point().x(), f->vertex(k)->point().y());
+        if (inserted) {
+          const Point& q = f->vertex(k)->point();
+          vertices.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+        }
         tri[k] = it->second;
       }
       // CGAL faces are counter-clockwise in (x, y); edge k of ours runs from
       // vertex k to k+1, which is opposite CGAL's vertex (k+2)%3.
       std::array<bool, 3> curve{};
-      for (int k = 0; k < 3; ++k) curve[k] = cdt.is_constrained(Cdt::Edge(f, (k + 2) % 3));
+      for (int k = 0; k < 3; ++k) curve[k] = cdt.is_constrained(typename Cdt::Edge(f, (k + 2) % 3));
       faces.push_back(tri);
       on_curve.push_back(curve);
     }
@@ -112,6 +133,39 @@ MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
   } catch (const std::exception& e) {
     throw Error(std::string("skeleton::mesh_strand: CGAL mesher failed: ") + e.what());
   }
+  return result;
+}
+
+bool is_simple(const Polyline& samples) {
+  std::vector<InexactKernel::K::Point_2> points;
+  points.reserve(samples.size());
+  for (const Vec2& p : samples) points.emplace_back(p.x(), p.y());
+  return CGAL::is_simple_2(points.begin(), points.end(), InexactKernel::K());
+}
+
+}  // namespace
+
+MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw Error(why);
+  const Polyline clean = detail::clean_polygon(outline, "skeleton::mesh_strand", nullptr);
+  if (std::abs(signed_area(clean)) < 1e-6) {
+    throw Error("skeleton::mesh_strand: outline encloses zero area; a mesh needs a 2D shape");
+  }
+  const double spacing =
+      options.outline_spacing > 0 ? options.outline_spacing : 0.5 * options.max_edge;
+  std::vector<Polyline> loops{detail::resample_closed(clean, spacing, nullptr)};
+  if (!is_simple(loops[0])) {
+    loops.clear();
+    for (const Polyline& loop : detail::simple_outline(clean))
+      loops.push_back(detail::resample_closed(loop, spacing, nullptr));
+    if (loops.empty()) {
+      throw Error("skeleton::mesh_strand: nothing of the outline is thicker than a pixel");
+    }
+  }
+  const bool simple = std::all_of(loops.begin(), loops.end(), is_simple);
+  MeshResult result = simple ? mesh_samples<InexactKernel>(loops, options)
+                             : mesh_samples<ExactKernel>(loops, options);
   if (result.mesh.triangle_count() == 0) {
     throw Error("skeleton::mesh_strand: the outline gave no triangles inside it");
   }

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <string>
 
 #include "hair25d/core/error.h"
+#include "hair25d/core/tri_mesh.h"
 #include "shapes.h"
 
 namespace hair25d::skeleton {
@@ -103,6 +106,61 @@ TEST(StrandMesh, BadInputThrows) {
   EXPECT_THROW(mesh_strand(test::forked_strand({0, 0}), bad), Error);
   // A one-pixel square still meshes.
   EXPECT_GT(mesh_strand({{5, 5}, {6, 5}, {6, 6}, {5, 6}}).mesh.triangle_count(), 0);
+}
+
+double mesh_area(const TriMesh2& m) {
+  double area = 0;
+  for (int t = 0; t < m.triangle_count(); ++t) {
+    const Vec2 a = m.V.row(m.F(t, 0)), b = m.V.row(m.F(t, 1)), c = m.V.row(m.F(t, 2));
+    area += 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+  }
+  return area;
+}
+
+// A bow tie: the outline crosses itself once, at (40, 24). Both lobes are the
+// strand, so both are meshed (the mesh used to hold only the larger lobe).
+TEST(StrandMesh, BothLobesOfACrossedOutline) {
+  const Polyline bow = {{0, 0}, {100, 60}, {100, 0}, {0, 40}};
+  MeshOptions options;
+  options.max_edge = 8;
+  const MeshResult r = mesh_strand(bow, options);
+  EXPECT_NO_THROW(r.mesh.validate("bow-tie mesh"));
+  // Triangles of 800 (left) and 1800 (right) square pixels; the crossed
+  // outline is retraced on a half-pixel raster, so within 1.5 %.
+  EXPECT_NEAR(mesh_area(r.mesh), 2600.0, 40.0);
+  int left = 0, right = 0;
+  for (int v = 0; v < r.mesh.vertex_count(); ++v) {
+    left += r.mesh.V(v, 0) < 30;
+    right += r.mesh.V(v, 0) > 50;
+  }
+  EXPECT_GT(left, 10);
+  EXPECT_GT(right, 10);
+}
+
+// A completed strand that folds over itself (tests/data/README.md): CGAL's
+// mesher crashed on it. The mesh covers the inside: the outline is resampled
+// every 6 px before meshing, so a sliver of triangles may stick out where two
+// parts of it nearly touch, nothing more.
+TEST(StrandMesh, OutlineThatTouchesItself) {
+  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) + "/skeleton/folded_outline.txt");
+  ASSERT_TRUE(in) << "missing test data";
+  Polyline outline;
+  double x = 0, y = 0;
+  while (in >> x >> y) outline.emplace_back(x, y);
+  ASSERT_EQ(outline.size(), 190u);
+  const MeshResult r = mesh_strand(outline);
+  EXPECT_NO_THROW(r.mesh.validate("folded strand mesh"));
+  ASSERT_GT(r.mesh.triangle_count(), 100);
+  double outside = 0;
+  for (int t = 0; t < r.mesh.triangle_count(); ++t) {
+    const Vec2 a = r.mesh.V.row(r.mesh.F(t, 0)), b = r.mesh.V.row(r.mesh.F(t, 1)),
+               c = r.mesh.V.row(r.mesh.F(t, 2));
+    if (!point_in_polygon(outline, (a + b + c) / 3.0))
+      outside += 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+  }
+  const double area = mesh_area(r.mesh);
+  EXPECT_LT(outside, 0.02 * area);
+  EXPECT_GT(area, 0.5 * std::abs(signed_area(outline)));
 }
 
 }  // namespace
