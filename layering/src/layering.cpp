@@ -280,51 +280,36 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
         (r.at_start ? rep.phi_j_start : rep.phi_j_end) = term;
       }
     }
-    // The same sectors seen from farther away (3 × the fit length): a tip
-    // stays narrow, a wedge cut by rasterised lines opens up.
-    for (int j = 0; j < nj; ++j) {
-      if (cusp[j]) continue;
-      std::vector<Vec2> dirs;
-      for (const Ray& r : rays[j]) {
-        const Polyline& p = bs[r.boundary].points;
-        dirs.push_back(r.at_start ? leaving_direction(p, 3 * reach)
-                                  : leaving_direction(backs[r.boundary], 3 * reach));
+    // The sectors again from other leaving directions, into `left` / `right`
+    // of each end's angles.
+    auto sectors_from = [&](auto&& leaving, double EndAngles::*left, double EndAngles::*right) {
+      for (int j = 0; j < nj; ++j) {
+        if (cusp[j]) continue;
+        std::vector<Vec2> dirs;
+        for (const Ray& r : rays[j])
+          dirs.push_back(leaving(r.at_start ? bs[r.boundary].points : backs[r.boundary]));
+        const RaySectors around = sectors_around(dirs);
+        const int n = static_cast<int>(dirs.size());
+        for (int k = 0; k < n; ++k) {
+          const Ray& r = rays[j][around.order[k]];
+          const double after = around.sectors[k];
+          const double before = around.sectors[(k + n - 1) % n];
+          EndAngles& e = r.at_start ? out.boundaries[r.boundary].cues.start
+                                    : out.boundaries[r.boundary].cues.end;
+          e.*left = r.at_start ? before : after;
+          e.*right = r.at_start ? after : before;
+        }
       }
-      const RaySectors around = sectors_around(dirs);
-      const int n = static_cast<int>(dirs.size());
-      for (int k = 0; k < n; ++k) {
-        const Ray& r = rays[j][around.order[k]];
-        const double after = around.sectors[k];
-        const double before = around.sectors[(k + n - 1) % n];
-        EndAngles& e = r.at_start ? out.boundaries[r.boundary].cues.start
-                                  : out.boundaries[r.boundary].cues.end;
-        e.wide_left = r.at_start ? before : after;
-        e.wide_right = r.at_start ? after : before;
-      }
-    }
-    // And from quadratics fitted near the junction (a bent outline's own
+    };
+    // Seen from farther away (3 × the fit length): a tip stays narrow, a
+    // wedge cut by rasterised lines opens up.
+    sectors_from([&](const Polyline& p) { return leaving_direction(p, 3 * reach); },
+                 &EndAngles::wide_left, &EndAngles::wide_right);
+    // From quadratics fitted near the junction (a bent outline's own
     // direction there), leaving out the blob where the lines merge.
     const double skip = std::max(1.5, out.line_width);
-    for (int j = 0; j < nj; ++j) {
-      if (cusp[j]) continue;
-      std::vector<Vec2> dirs;
-      for (const Ray& r : rays[j]) {
-        const Polyline& p = bs[r.boundary].points;
-        dirs.push_back(r.at_start ? curved_leaving_direction(p, skip, reach)
-                                  : curved_leaving_direction(backs[r.boundary], skip, reach));
-      }
-      const RaySectors around = sectors_around(dirs);
-      const int n = static_cast<int>(dirs.size());
-      for (int k = 0; k < n; ++k) {
-        const Ray& r = rays[j][around.order[k]];
-        const double after = around.sectors[k];
-        const double before = around.sectors[(k + n - 1) % n];
-        EndAngles& e = r.at_start ? out.boundaries[r.boundary].cues.start
-                                  : out.boundaries[r.boundary].cues.end;
-        e.curved_left = r.at_start ? before : after;
-        e.curved_right = r.at_start ? after : before;
-      }
-    }
+    sectors_from([&](const Polyline& p) { return curved_leaving_direction(p, skip, reach); },
+                 &EndAngles::curved_left, &EndAngles::curved_right);
     // And off the label map: each region's share of a circle about the
     // junction.
     const LabelMap& lab = out.labels;

@@ -14,6 +14,7 @@ using test::below;
 using test::blank;
 using test::Drawing;
 using test::paint;
+using test::strand_with;
 
 const Rgba kHair{200, 170, 90, 255};
 const Rgba kFront{120, 90, 160, 255};
@@ -25,12 +26,6 @@ Result run(const Drawing& d, std::optional<Vec2> head = std::nullopt, Options o 
   in.relations = d.relations;
   in.head_center = head;
   return complete_strands(in, o);
-}
-
-const CompletedStrand* strand_with(const Result& r, int region) {
-  for (const CompletedStrand& s : r.strands)
-    if (std::find(s.regions.begin(), s.regions.end(), region) != s.regions.end()) return &s;
-  return nullptr;
 }
 
 // Every completed pixel lies where the drawing shows one of `occluders`.

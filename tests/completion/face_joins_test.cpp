@@ -14,6 +14,7 @@ using test::below;
 using test::blank;
 using test::Drawing;
 using test::paint;
+using test::strand_with;
 
 const Rgba kBack{110, 70, 60, 255};
 const Rgba kOther{60, 150, 210, 255};
@@ -66,12 +67,6 @@ Result run(const Drawing& d) {
   o.inpaint_strands = false;
   o.inpaint_background = false;
   return complete_strands(in, o);
-}
-
-const CompletedStrand* strand_with(const Result& r, int region) {
-  for (const CompletedStrand& s : r.strands)
-    if (std::find(s.regions.begin(), s.regions.end(), region) != s.regions.end()) return &s;
-  return nullptr;
 }
 
 bool completed(const CompletedStrand& s, int x, int y) {

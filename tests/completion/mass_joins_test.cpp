@@ -15,6 +15,7 @@ using test::below;
 using test::blank;
 using test::Drawing;
 using test::paint;
+using test::strand_with;
 
 constexpr Rgba kBack{120, 80, 50, 255};
 constexpr Rgba kFan{200, 150, 110, 255};
@@ -53,12 +54,6 @@ Result run(const Drawing& d) {
   o.inpaint_background = false;
   o.face_joins = false;  // no face here; the paper near the head would pass for one
   return complete_strands(in, o);
-}
-
-const CompletedStrand* strand_with(const Result& r, int region) {
-  for (const CompletedStrand& s : r.strands)
-    if (std::find(s.regions.begin(), s.regions.end(), region) != s.regions.end()) return &s;
-  return nullptr;
 }
 
 TEST(MassJoins, BackHairUnderAFanOfStrandsIsJoinedAcrossIt) {

@@ -2,8 +2,10 @@
 // outlines, occluded by other bands, on non-square canvases.
 #pragma once
 
+#include <algorithm>
 #include <functional>
 
+#include "hair25d/completion/completion.h"
 #include "hair25d/core/hair_model.h"
 #include "hair25d/core/image.h"
 
@@ -43,5 +45,12 @@ inline Drawing blank(int w, int h) {
 }
 
 inline RegionRelation below(int a, int b) { return {a, b, Relation::kBelow, 1.0, false, false}; }
+
+// The completed strand that holds `region`, or null.
+inline const CompletedStrand* strand_with(const Result& r, int region) {
+  for (const CompletedStrand& s : r.strands)
+    if (std::find(s.regions.begin(), s.regions.end(), region) != s.regions.end()) return &s;
+  return nullptr;
+}
 
 }  // namespace hair25d::completion::test
