@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <map>
 
+#include "bench_case.h"
 #include "hair25d/generator/generator.h"
 #include "hair25d/layering/boundary_graph.h"
 #include "hair25d/layering/layering.h"
@@ -19,26 +20,13 @@ using namespace hair25d;
 constexpr double kPaperSeconds = 0.031;  // §7, per image, on the authors' machine
 
 // The benchmark arguments name a case: a target region count and an image
-// size. The strand count is raised until the generated case has at least that
-// many regions (the generator splits strands into several regions, so the
-// ratio is not fixed).
+// size (bench_case.h).
 const AnnotatedCase& case_for(int regions, int width, int height) {
   static std::map<std::tuple<int, int, int>, AnnotatedCase> cache;
   const auto key = std::make_tuple(regions, width, height);
   auto it = cache.find(key);
   if (it == cache.end()) {
-    generator::Options o;
-    o.width = width;
-    o.height = height;
-    o.seed = 42;
-    o.strand_masks = false;
-    AnnotatedCase c;
-    for (int strands = std::max(1, regions * 2 / 3);; strands += std::max(1, strands / 10)) {
-      o.strand_count = strands;
-      c = generator::generate_case(o);
-      if (static_cast<int>(c.regions.labels().size()) >= regions || strands > 4 * regions) break;
-    }
-    it = cache.emplace(key, std::move(c)).first;
+    it = cache.emplace(key, bench::layering_case(regions, width, height)).first;
   }
   return it->second;
 }

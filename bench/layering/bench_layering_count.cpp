@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "bench_case.h"
 #include "hair25d/core/error.h"
 #include "hair25d/generator/generator.h"
 #include "hair25d/layering/layering.h"
@@ -19,17 +20,7 @@ int main(int argc, char** argv) {
   }
   try {
     const int regions = std::stoi(argv[1]);
-    generator::Options o;
-    o.width = std::stoi(argv[2]);
-    o.height = std::stoi(argv[3]);
-    o.seed = 42;
-    o.strand_masks = false;
-    AnnotatedCase c;
-    for (int strands = std::max(1, regions * 2 / 3);; strands += std::max(1, strands / 10)) {
-      o.strand_count = strands;
-      c = generator::generate_case(o);
-      if (static_cast<int>(c.regions.labels().size()) >= regions || strands > 4 * regions) break;
-    }
+    const AnnotatedCase c = bench::layering_case(regions, std::stoi(argv[2]), std::stoi(argv[3]));
     const int n = std::stoi(argv[4]);
     std::size_t relations = 0;
     for (int i = 0; i < n; ++i)

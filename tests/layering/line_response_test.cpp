@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "boundary_box.h"
 #include "hair25d/layering/boundary_graph.h"
 #include "hair25d/layering/layering.h"
 
@@ -29,16 +30,7 @@ using detail::LineResponse;
 // window_margin()); returns how many were compared.
 int expect_same(const Image& image, const LabelMap& labels, double line_width) {
   const BoundaryGraph graph = build_boundary_graph(labels);
-  int x0 = image.width(), y0 = image.height(), x1 = 0, y1 = 0;
-  for (const Boundary& b : graph.boundaries) {
-    if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
-    for (const Vec2& p : b.points) {
-      x0 = std::min(x0, static_cast<int>(p.x()));
-      y0 = std::min(y0, static_cast<int>(p.y()));
-      x1 = std::max(x1, static_cast<int>(p.x()));
-      y1 = std::max(y1, static_cast<int>(p.y()));
-    }
-  }
+  const auto [x0, y0, x1, y1] = test::inner_boundary_box(graph, image.width(), image.height());
   const int m = LineResponse::window_margin(line_width);
   EXPECT_GE(m, 3.0 * line_width + 2.0);  // at least the search for paper
   const LineResponse whole(image, line_width, 0, 0, image.width(), image.height());

@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "boundary_box.h"
 #include "hair25d/layering/boundary_graph.h"
 #include "line_response.h"
 
@@ -124,16 +125,7 @@ TEST(LineSpeed, EarlyBlurMeasuresLikeTheWindowBlur) {
   const BoundaryGraph graph = build_boundary_graph(labels);
   for (const double lw : {1.0, 3.0, 4.6, 8.0}) {
     const int m = LineResponse::window_margin(lw);
-    int x0 = image.width(), y0 = image.height(), x1 = 0, y1 = 0;
-    for (const Boundary& b : graph.boundaries) {
-      if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
-      for (const Vec2& p : b.points) {
-        x0 = std::min(x0, static_cast<int>(p.x()));
-        y0 = std::min(y0, static_cast<int>(p.y()));
-        x1 = std::max(x1, static_cast<int>(p.x()));
-        y1 = std::max(y1, static_cast<int>(p.y()));
-      }
-    }
+    const auto [x0, y0, x1, y1] = test::inner_boundary_box(graph, image.width(), image.height());
     const LineResponse plain(image, lw, x0 - m, y0 - m, x1 + m, y1 + m);
     LineResponse early(image);
     early.prepare(lw, labels);
