@@ -219,21 +219,37 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   const int nj = static_cast<int>(graph.junctions.size());
   std::vector<std::vector<Ray>> rays(nj);
   std::vector<char> cusp(nj, 0);
-  // Each boundary walked from its end, made once for every fit below.
-  std::vector<Polyline> backs(nb);
+  // The directions in which each boundary leaves its two ends, fitted three
+  // ways (over the fit length, 3 × farther, by quadratics), once for both
+  // rounds of junction cues below. Boundaries are fitted on all cores, each
+  // into its own slot.
+  struct Leaving {
+    Vec2 near, wide, curved;
+  };
+  std::vector<Leaving> leave_start(nb), leave_end(nb);
+  const double skip = std::max(1.5, out.line_width);
+  auto leaving = [&](const Polyline& p) {
+    return Leaving{leaving_direction(p, reach), leaving_direction(p, 3 * reach),
+                   curved_leaving_direction(p, skip, reach)};
+  };
+  detail::parallel_for(nb, [&](int i) {
+    const Boundary& b = bs[i];
+    if (b.closed()) return;
+    leave_start[i] = leaving(b.points);
+    const Polyline back(b.points.rbegin(), b.points.rend());
+    leave_end[i] = leaving(back);
+    // From the first direction to the last one (arriving, -leave_end); on
+    // the screen (y down) a positive cross product turns right.
+    const Vec2 start = leave_start[i].near;
+    const Vec2 arrive = -leave_end[i].near;
+    const double cross = start.x() * arrive.y() - start.y() * arrive.x();
+    out.boundaries[i].cues.turning = -std::atan2(cross, start.dot(arrive));
+  });
   for (int i = 0; i < nb; ++i) {
     const Boundary& b = bs[i];
     if (b.closed()) continue;
-    const Vec2 leave_start = leaving_direction(b.points, reach);
-    backs[i].assign(b.points.rbegin(), b.points.rend());
-    const Vec2 leave_end = leaving_direction(backs[i], reach);
-    rays[b.start].push_back({i, true, leave_start});
-    rays[b.end].push_back({i, false, leave_end});
-    // From the first direction to the last one (arriving, -leave_end); on
-    // the screen (y down) a positive cross product turns right.
-    const Vec2 arrive = -leave_end;
-    const double cross = leave_start.x() * arrive.y() - leave_start.y() * arrive.x();
-    out.boundaries[i].cues.turning = -std::atan2(cross, leave_start.dot(arrive));
+    rays[b.start].push_back({i, true, leave_start[i].near});
+    rays[b.end].push_back({i, false, leave_end[i].near});
     const bool on_border = b.left == kOutsideLabel || b.right == kOutsideLabel;
     if (!on_border && !out.boundaries[i].occluding) cusp[b.start] = cusp[b.end] = 1;
   }
@@ -251,21 +267,30 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   bool hair_junction = false;
   // Φ_J and the sectors at every junction that is not a cusp (run again
   // below when the same-depth model turns more junctions into cusps).
+  // Junctions run on all cores: each end of a boundary has one junction, so
+  // each writes only the angles of its own rays' ends, and Φ_J is summed
+  // from the two ends afterwards.
+  std::vector<char> hair_at(nj, 0);
   auto junction_cues = [&] {
     for (int i = 0; i < nb; ++i) {
       BoundaryReport& rep = out.boundaries[i];
       rep.cues.start = rep.cues.end = EndAngles{};
       rep.phi_j = rep.phi_j_start = rep.phi_j_end = 0.0;
     }
-    for (int j = 0; j < nj; ++j) {
-      std::vector<Vec2> dirs;
-      for (const Ray& r : rays[j]) dirs.push_back(r.direction);
+    const LabelMap& lab = out.labels;
+    detail::parallel_for(nj, [&](int j) {
+      const int n = static_cast<int>(rays[j].size());
+      auto end_of = [&](const Ray& r) -> EndAngles& {
+        return r.at_start ? out.boundaries[r.boundary].cues.start
+                          : out.boundaries[r.boundary].cues.end;
+      };
+      std::vector<Vec2> dirs(n);
+      for (int k = 0; k < n; ++k) dirs[k] = rays[j][k].direction;
       const RaySectors around = sectors_around(dirs);
-      const int n = static_cast<int>(dirs.size());
       for (int k = 0; k < n; ++k) {
         const Ray& r = rays[j][around.order[k]];
         const Boundary& b = bs[r.boundary];
-        if (b.left > 0 && b.right > 0) hair_junction = true;
+        if (b.left > 0 && b.right > 0) hair_at[j] = 1;
         const double after = around.sectors[k];
         const double before = around.sectors[(k + n - 1) % n];
         // Walking away from the start, `left` fills the sector before the ray;
@@ -275,52 +300,42 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
         if (cusp[j]) continue;
         const double term = junction_metric(alpha, beta);
         BoundaryReport& rep = out.boundaries[r.boundary];
-        (r.at_start ? rep.cues.start : rep.cues.end) = {true, alpha, beta, n};
-        rep.phi_j += term;
+        end_of(r) = {true, alpha, beta, n};
         (r.at_start ? rep.phi_j_start : rep.phi_j_end) = term;
       }
-    }
-    // The sectors again from other leaving directions, into `left` / `right`
-    // of each end's angles.
-    auto sectors_from = [&](auto&& leaving, double EndAngles::*left, double EndAngles::*right) {
-      for (int j = 0; j < nj; ++j) {
-        if (cusp[j]) continue;
-        std::vector<Vec2> dirs;
-        for (const Ray& r : rays[j])
-          dirs.push_back(leaving(r.at_start ? bs[r.boundary].points : backs[r.boundary]));
-        const RaySectors around = sectors_around(dirs);
-        const int n = static_cast<int>(dirs.size());
+      if (cusp[j]) return;
+      // The sectors again from other leaving directions, into `left` /
+      // `right` of each end's angles.
+      auto sectors_from = [&](Vec2 Leaving::*kind, double EndAngles::*left,
+                              double EndAngles::*right) {
         for (int k = 0; k < n; ++k) {
-          const Ray& r = rays[j][around.order[k]];
-          const double after = around.sectors[k];
-          const double before = around.sectors[(k + n - 1) % n];
-          EndAngles& e = r.at_start ? out.boundaries[r.boundary].cues.start
-                                    : out.boundaries[r.boundary].cues.end;
+          const Ray& r = rays[j][k];
+          dirs[k] = (r.at_start ? leave_start : leave_end)[r.boundary].*kind;
+        }
+        const RaySectors other = sectors_around(dirs);
+        for (int k = 0; k < n; ++k) {
+          const Ray& r = rays[j][other.order[k]];
+          const double after = other.sectors[k];
+          const double before = other.sectors[(k + n - 1) % n];
+          EndAngles& e = end_of(r);
           e.*left = r.at_start ? before : after;
           e.*right = r.at_start ? after : before;
         }
-      }
-    };
-    // Seen from farther away (3 × the fit length): a tip stays narrow, a
-    // wedge cut by rasterised lines opens up.
-    sectors_from([&](const Polyline& p) { return leaving_direction(p, 3 * reach); },
-                 &EndAngles::wide_left, &EndAngles::wide_right);
-    // From quadratics fitted near the junction (a bent outline's own
-    // direction there), leaving out the blob where the lines merge.
-    const double skip = std::max(1.5, out.line_width);
-    sectors_from([&](const Polyline& p) { return curved_leaving_direction(p, skip, reach); },
-                 &EndAngles::curved_left, &EndAngles::curved_right);
-    // And off the label map: each region's share of a circle about the
-    // junction.
-    const LabelMap& lab = out.labels;
-    std::vector<std::pair<int, int>> count;  // (label, samples), a handful per junction
-    auto count_of = [&](int label) {
-      for (const auto& [l, c] : count)
-        if (l == label) return c;
-      return 0;
-    };
-    for (int j = 0; j < nj; ++j) {
-      if (cusp[j]) continue;
+      };
+      // Seen from farther away (3 × the fit length): a tip stays narrow, a
+      // wedge cut by rasterised lines opens up.
+      sectors_from(&Leaving::wide, &EndAngles::wide_left, &EndAngles::wide_right);
+      // From quadratics fitted near the junction (a bent outline's own
+      // direction there), leaving out the blob where the lines merge.
+      sectors_from(&Leaving::curved, &EndAngles::curved_left, &EndAngles::curved_right);
+      // And off the label map: each region's share of a circle about the
+      // junction.
+      std::vector<std::pair<int, int>> count;  // (label, samples), a handful
+      auto count_of = [&](int label) {
+        for (const auto& [l, c] : count)
+          if (l == label) return c;
+        return 0;
+      };
       const Vec2 centre = graph.junctions[j].position;
       for (int wide = 0; wide < 2; ++wide) {
         const std::vector<Vec2>& circle = circles[wide];
@@ -339,23 +354,30 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
         }
         for (const Ray& r : rays[j]) {
           const Boundary& b = bs[r.boundary];
-          EndAngles& e = r.at_start ? out.boundaries[r.boundary].cues.start
-                                    : out.boundaries[r.boundary].cues.end;
+          EndAngles& e = end_of(r);
           const double l = 2 * std::numbers::pi * count_of(b.left) / samples;
           const double rr = 2 * std::numbers::pi * count_of(b.right) / samples;
           (wide ? e.circle_wide_left : e.circle_left) = l;
           (wide ? e.circle_wide_right : e.circle_right) = rr;
         }
       }
+    });
+    // Φ_J over both ends (ends at a cusp add nothing).
+    for (int i = 0; i < nb; ++i) {
+      BoundaryReport& rep = out.boundaries[i];
+      rep.phi_j = 0.0 + rep.phi_j_start + rep.phi_j_end;
     }
+    hair_junction = std::find(hair_at.begin(), hair_at.end(), 1) != hair_at.end();
   };
   junction_cues();
   if (!hair_junction)
     throw Error("layering: no two hair regions meet at a junction (" + std::to_string(ids.size()) +
                 " regions, " + std::to_string(nj) +
                 " junctions); layering needs regions that meet where three or more do");
+  // Φ_R, the features and the learned metric of each boundary on all cores,
+  // each into its own report; the sums over regions in between on this one.
   auto unary_cues = [&] {
-    for (int i = 0; i < nb; ++i) {
+    detail::parallel_for(nb, [&](int i) {
       const Boundary& b = bs[i];
       BoundaryReport& rep = out.boundaries[i];
       Polyline curve = b.points;
@@ -366,7 +388,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       const double scale2 = std::max({chord2, std::pow(rep.length / std::numbers::pi, 2), 1.0});
       rep.phi_r = overlap_metric(curve) / scale2;
       rep.phi = options.junction_weight * rep.phi_j + rep.phi_r;
-    }
+    });
     // Region areas (Green's theorem over each region's boundaries, walked with
     // the region on their left) and perimeters, for the learned metric.
     std::map<int, double> area, perimeter;
@@ -395,9 +417,12 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       const double shared = common[key(bs[i].left, bs[i].right)];
       rep.cues.shared_left = perimeter[bs[i].left] > 0 ? shared / perimeter[bs[i].left] : 0.0;
       rep.cues.shared_right = perimeter[bs[i].right] > 0 ? shared / perimeter[bs[i].right] : 0.0;
+    }
+    detail::parallel_for(nb, [&](int i) {
+      BoundaryReport& rep = out.boundaries[i];
       rep.features = boundary_features(rep.cues);
       rep.learned = learned_metric(rep.features);
-    }
+    });
   };
   unary_cues();
   // The same-depth model, with the drawing's typical colour step across its
@@ -412,7 +437,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     std::nth_element(steps.begin(), mid, steps.end());
     typical_step = *mid;
   }
-  for (int i = 0; i < nb; ++i) {
+  detail::parallel_for(nb, [&](int i) {
     BoundaryReport& rep = out.boundaries[i];
     EqualCues& e = rep.equal_cues;
     e.length_widths = rep.length / out.line_width;
@@ -429,7 +454,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     e.shared_right = rep.cues.shared_right;
     rep.equal_features = equal_features(e);
     rep.equal = equal_metric(rep.equal_features);
-  }
+  });
   // A drawn line between two halves of one strand ends on the strand's
   // outline in what looks like a T-junction, but nothing is occluded there:
   // like the ends of a non-occluding boundary (§4.1), the junctions of a

@@ -1,5 +1,6 @@
 // Independent per-item work of the layering (measuring lines along
-// boundaries) spread over the machine's cores. Each item writes only its own
+// boundaries, the cues of each boundary and junction) spread over the
+// machine's cores. Each item writes only its own
 // output, so results do not depend on the number of threads.
 #pragma once
 
