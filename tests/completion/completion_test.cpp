@@ -20,11 +20,7 @@ const Rgba kHair{200, 170, 90, 255};
 const Rgba kFront{120, 90, 160, 255};
 
 Result run(const Drawing& d, std::optional<Vec2> head = std::nullopt, Options o = {}) {
-  Input in;
-  in.image = &d.image;
-  in.regions = &d.regions;
-  in.relations = d.relations;
-  in.head_center = head;
+  const Input in = test::input_of(d, head);
   return complete_strands(in, o);
 }
 

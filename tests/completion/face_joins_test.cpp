@@ -58,11 +58,7 @@ Drawing face_over_back_hair(Rgba right) {
 }
 
 Result run(const Drawing& d) {
-  Input in;
-  in.image = &d.image;
-  in.regions = &d.regions;
-  in.relations = d.relations;
-  in.head_center = Vec2(kCx, kCy + 10);
+  const Input in = test::input_of(d, Vec2(kCx, kCy + 10));
   Options o;
   o.inpaint_strands = false;
   o.inpaint_background = false;
@@ -112,11 +108,7 @@ TEST(FaceJoins, BackHairOnBothSidesOfTheFaceIsJoinedBehindIt) {
       joined += e.joined_region == 3 - e.region;
   EXPECT_GE(joined, 2);
   // Without face joins the two pieces stay apart (the face is no occluder).
-  Input in;
-  in.image = &d.image;
-  in.regions = &d.regions;
-  in.relations = d.relations;
-  in.head_center = Vec2(kCx, kCy + 10);
+  const Input in = test::input_of(d, Vec2(kCx, kCy + 10));
   Options o;
   o.inpaint_strands = o.inpaint_background = false;
   o.face_joins = false;

@@ -41,11 +41,7 @@ Drawing back_hair_under_fan(Rgba right_colour) {
 }
 
 Result run(const Drawing& d) {
-  Input in;
-  in.image = &d.image;
-  in.regions = &d.regions;
-  in.relations = d.relations;
-  in.head_center = Vec2(170, 20);
+  const Input in = test::input_of(d, Vec2(170, 20));
   Options o;
   // Strand joins ruled out (tangents along the chords, cut widths within 1 %;
   // the right piece is narrower): only the region-level banks can join.

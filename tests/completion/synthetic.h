@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <optional>
 
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/hair_model.h"
@@ -45,6 +46,16 @@ inline Drawing blank(int w, int h) {
 }
 
 inline RegionRelation below(int a, int b) { return {a, b, Relation::kBelow, 1.0, false, false}; }
+
+// The completion input for drawing `d` (which must outlive it).
+inline Input input_of(const Drawing& d, std::optional<Vec2> head_center) {
+  Input in;
+  in.image = &d.image;
+  in.regions = &d.regions;
+  in.relations = d.relations;
+  in.head_center = head_center;
+  return in;
+}
 
 // The completed strand that holds `region`, or null.
 inline const CompletedStrand* strand_with(const Result& r, int region) {
