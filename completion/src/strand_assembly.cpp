@@ -146,11 +146,11 @@ std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPi
                                               InpaintResult* inpainted) {
   const std::size_t n = pieces.groups.size();
   std::vector<CompletedStrand> out(n);
-  // Strands are independent (each edge report belongs to one strand): two
-  // workers take every other strand; counters are summed afterwards.
+  // Strands are independent (each edge report belongs to one strand): with
+  // two workers each takes every other strand; counters are summed afterwards.
   InpaintResult counts[2];
-  auto work = [&](std::size_t first, InpaintResult* count) {
-    for (std::size_t g = first; g < n; g += 2) {
+  auto work = [&](std::size_t first, std::size_t stride, InpaintResult* count) {
+    for (std::size_t g = first; g < n; g += stride) {
       const std::vector<int>& members = pieces.groups[g];
       std::vector<const PieceArea*> areas;
       for (const PieceArea& a : pieces.areas)
@@ -160,18 +160,11 @@ std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPi
     }
   };
   if (ctx.options->threads > 1 && n > 1) {
-    auto other = std::async(std::launch::async, work, 1, &counts[1]);
-    work(0, &counts[0]);
+    auto other = std::async(std::launch::async, work, 1, 2, &counts[1]);
+    work(0, 2, &counts[0]);
     other.get();
   } else {
-    for (std::size_t g = 0; g < n; ++g) {
-      const std::vector<int>& members = pieces.groups[g];
-      std::vector<const PieceArea*> areas;
-      for (const PieceArea& a : pieces.areas)
-        if (std::find(members.begin(), members.end(), a.region) != members.end())
-          areas.push_back(&a);
-      out[g] = build_strand(ctx, members, areas, reports, &counts[0]);
-    }
+    work(0, 1, &counts[0]);
   }
   for (const InpaintResult& c : counts) {
     inpainted->filled += c.filled;
