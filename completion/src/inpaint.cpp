@@ -313,18 +313,50 @@ class Filler {
           consider(cx, cy, off.distance_term);
         }
       } else {
-        // A wider window: only the valid centres of each row, in raster order
-        // (thin strands have few, far from a target that found none nearer).
-        for (int cy = y0; cy <= y1; cy += step) {
+        // A wider window: only the valid centres of each row (thin strands
+        // have few, far from a target that found none nearer), rows nearest
+        // first and each row outward from x, so that once a match is found
+        // whatever lies farther than its cost is never visited.
+        const auto term = [&](int dx, int dy) {
+          return static_cast<long>(o_.distance_weight * (dx * dx + dy * dy));
+        };
+        // The first grid row at or below y.
+        const int first_below = y <= y0 ? y0 : y0 + ((y - y0 + step - 1) / step) * step;
+        for (int below = first_below, above = first_below - step; below <= y1 || above >= y0;) {
+          // The nearer of the next row below and above.
+          int cy;
+          if (above < y0 || (below <= y1 && below - y <= y - above)) {
+            cy = below;
+            below += step;
+          } else {
+            cy = above;
+            above -= step;
+          }
+          if (term(0, cy - y) > best) {
+            // This row and every row farther on this side are too far.
+            if (cy >= y)
+              below = y1 + 1;
+            else
+              above = y0 - 1;
+            continue;
+          }
           const auto row_begin = valid_x_.begin() + row_start_[cy];
           const auto row_end = valid_x_.begin() + row_start_[cy + 1];
-          for (auto it = std::lower_bound(row_begin, row_end, x0); it != row_end && *it <= x1;
-               ++it) {
-            const int cx = *it;
-            if ((cx - x0) % step != 0) continue;
-            consider(cx, cy,
-                     static_cast<long>(o_.distance_weight *
-                                       ((cx - x) * (cx - x) + (cy - y) * (cy - y))));
+          const auto lo = std::lower_bound(row_begin, row_end, x0);
+          const auto hi = std::upper_bound(lo, row_end, x1);
+          const auto mid = std::lower_bound(lo, hi, x);
+          for (auto it = mid; it != hi; ++it) {
+            if ((*it - x0) % step != 0) continue;
+            const long d = term(*it - x, cy - y);
+            if (d > best) break;
+            consider(*it, cy, d);
+          }
+          for (auto it = mid; it != lo;) {
+            --it;
+            if ((*it - x0) % step != 0) continue;
+            const long d = term(*it - x, cy - y);
+            if (d > best) break;
+            consider(*it, cy, d);
           }
         }
       }
