@@ -55,6 +55,10 @@ bool ContourOptions::is_valid(std::string* error) const {
   if (max_iterations < 1)
     return fail("max_iterations = " + std::to_string(max_iterations) + "; must be >= 1");
   if (!(max_reach > 0)) return fail("max_reach = " + std::to_string(max_reach) + "; must be > 0");
+  if (!(hold_distance >= 0))
+    return fail("hold_distance = " + std::to_string(hold_distance) + "; must be >= 0");
+  if (!(stop_share >= 0 && stop_share <= 1))
+    return fail("stop_share = " + std::to_string(stop_share) + "; must be in [0, 1]");
   if (!(omega_gain > 0))
     return fail("omega_gain = " + std::to_string(omega_gain) + "; must be > 0");
   return true;
@@ -106,6 +110,18 @@ ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const
 
   ContourResult result;
   Polyline curve = resample(initial, options.spacing);
+  // Distance from C₀: a point nearer than hold_distance has not grown yet.
+  const Polyline start = curve;
+  auto grown = [&](const Vec2& x) {
+    const double limit = options.hold_distance * options.hold_distance;
+    for (std::size_t k = 1; k < start.size(); ++k) {
+      const Vec2 a = start[k - 1], d = start[k] - a;
+      const double len2 = d.squaredNorm();
+      const double t = len2 > 0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+      if ((x - (a + t * d)).squaredNorm() <= limit) return false;
+    }
+    return true;
+  };
   auto pin_ends = [&](Polyline& c) {
     const int n = static_cast<int>(c.size());
     const double h = std::min(options.spacing, 0.25 * (q - p).norm() + 0.5);
@@ -165,13 +181,18 @@ ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const
       if (n - 4 > 1) rhs.row(n - 6) -= (b * curve[n - 2]).transpose();
     }
     const Eigen::MatrixX2d solved = solver.solve(rhs);
+    const Polyline previous = curve;
     double moved_most = 0.0;
-    int free_points = 0;
+    int free_points = 0, met_edge = 0;
     for (int i = 2; i <= n - 3; ++i) {
-      if (held[i]) continue;
+      if (held[i]) {
+        met_edge += grown(curve[i]);
+        continue;
+      }
       const Vec2 x = solved.row(i - 2).transpose();
       if (!allowed(x) || beyond_reach(x)) {
         held[i] = 1;
+        met_edge += grown(curve[i]);
         continue;
       }
       ++free_points;
@@ -179,6 +200,12 @@ ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const
       curve[i] = x;
     }
     result.iterations = it;
+    // Lines 7–8 of Algorithm 1: the grown curve meets the occluders' edge.
+    if (met_edge > options.stop_share * (n - 4)) {
+      curve = previous;
+      result.stop = ContourStop::kLeftAllowed;
+      break;
+    }
     // Line 11 of Algorithm 1: no force left on the free points; or nothing moves.
     if (largest < options.epsilon || moved_most < options.epsilon) {
       result.stop = free_points < n - 4 ? ContourStop::kLeftAllowed : ContourStop::kConverged;

@@ -124,6 +124,46 @@ TEST(ActiveContour, PointsAtTheOccludersEdgeHoldWhileTheRestGrows) {
   EXPECT_GT(reach, 130.0) << "the curve grew past the notch";
 }
 
+// The occluder's top half ends 25 px in, its bottom half runs on for 300 px
+// (a long occluder under which the strand's root ends): once the grown top
+// of the curve meets the edge, the curve stops (Algorithm 1, lines 7–8)
+// instead of growing on along the long half up to max_reach.
+TEST(ActiveContour, StopsWhenTheGrownFrontMeetsTheOccludersEdge) {
+  BandUnderOccluder s;
+  s.allowed = [](const Vec2& x) {
+    const bool band = x.x() >= 10 && x.x() < 100 && x.y() >= 40 && x.y() < 70;
+    const bool top = x.x() >= 100 && x.x() < 125 && x.y() >= 20 && x.y() < 55;
+    const bool bottom = x.x() >= 100 && x.x() < 400 && x.y() >= 55 && x.y() < 90;
+    return band || top || bottom;
+  };
+  const ContourResult r = grow_contour({s.p, s.q}, Vec2(1, 0), Vec2(1, 0), s.fields, s.allowed);
+  EXPECT_EQ(r.stop, ContourStop::kLeftAllowed);
+  double reach = 0;
+  for (const Vec2& x : r.curve) {
+    EXPECT_TRUE(s.allowed(x)) << x.transpose();
+    reach = std::max(reach, x.x());
+  }
+  EXPECT_GT(reach, 115.0) << "the curve grew into the occluder";
+  EXPECT_LT(reach, 135.0) << "stopped about where the top half ends";
+  // Never stopping on the grown front: the bottom half grows on.
+  ContourOptions never;
+  never.stop_share = 1.0;
+  const ContourResult held =
+      grow_contour({s.p, s.q}, Vec2(1, 0), Vec2(1, 0), s.fields, s.allowed, never);
+  double held_reach = 0;
+  for (const Vec2& x : held.curve) held_reach = std::max(held_reach, x.x());
+  EXPECT_GT(held_reach, 140.0);
+  ContourOptions bad;
+  bad.stop_share = 1.5;
+  std::string why;
+  EXPECT_FALSE(bad.is_valid(&why));
+  EXPECT_NE(why.find("stop_share"), std::string::npos);
+  bad = ContourOptions{};
+  bad.hold_distance = -1;
+  EXPECT_FALSE(bad.is_valid(&why));
+  EXPECT_NE(why.find("hold_distance"), std::string::npos);
+}
+
 // Under a wide occluder the growth stops max_reach chord lengths from p q.
 TEST(ActiveContour, GrowthStopsAtMaxReachUnderAWideOccluder) {
   BandUnderOccluder s;

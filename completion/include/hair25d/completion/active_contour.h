@@ -24,13 +24,22 @@ struct ContourOptions {
   // No point grows farther from the chord p q than this many |p − q|: what
   // lies under a wide occluder is unknown, and a root would otherwise fill it.
   double max_reach = 2.0;
+  // Algorithm 1 returns C_{i−1} when the curve would leave the occluders.
+  // C₀ lies on the occluding boundary, so points still within
+  // `hold_distance` px of it only stay where they are; a point farther out
+  // has grown under the occluders and meets their edge. When more than
+  // `stop_share` of the free points have, the curve stops: its front has
+  // reached the end of the occluders (a root's round end under a long one).
+  double hold_distance = 4.0;
+  double stop_share = 0.2;
   // False, with a message naming the option, its value and the rule, if unusable.
   bool is_valid(std::string* error) const;
 };
 
 enum class ContourStop {
   // Some points stopped where their next step would leave the allowed area
-  // (or pass `max_reach`), the others stopped moving.
+  // (or pass `max_reach`), the others stopped moving; or more than
+  // `stop_share` of them had grown up to the occluders' edge.
   kLeftAllowed,
   kConverged,     // |V| < ε
   kIterationCap,  // max_iterations reached
@@ -55,9 +64,10 @@ struct ContourFields {
 // Grows `initial` (from p = front() to q = back(), at least 2 points) under the
 // fields. `allowed(x)` says whether a point may be there (inside the occluders
 // or the strand itself); a point whose step would leave it stays where it is
-// while the others go on. Endpoints stay fixed; the neighbours of the ends
-// follow the tangents `tangent_p`, `tangent_q` (unit, pointing into the hidden
-// part). Throws hair25d::Error for invalid options or a curve of < 2 points.
+// while the others go on, until more than `stop_share` of the points that
+// grew farther than `hold_distance` from `initial` would leave it. Endpoints stay fixed; the
+// neighbours of the ends follow the tangents `tangent_p`, `tangent_q` (unit, pointing into the
+// hidden part). Throws hair25d::Error for invalid options or a curve of < 2 points.
 ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const Vec2& tangent_q,
                            const ContourFields& fields,
                            const std::function<bool(const Vec2&)>& allowed,
