@@ -27,6 +27,8 @@ bool InpaintOptions::is_valid(std::string* error) const {
     return fail("distance_weight = " + std::to_string(distance_weight) + "; must be >= 0");
   if (search_step < 1 || search_step > search_radius)
     return fail("search_step = " + std::to_string(search_step) + "; must be in [1, search_radius]");
+  if (far_candidates < 0)
+    return fail("far_candidates = " + std::to_string(far_candidates) + "; must be >= 0");
   if (ink_luma < 0 || ink_luma > 256)
     return fail("ink_luma = " + std::to_string(ink_luma) + "; must be in [0, 256]");
   if (ink_step < 1) return fail("ink_step = " + std::to_string(ink_step) + "; must be >= 1");
@@ -45,6 +47,7 @@ class Filler {
       : image_(image), o_(o), guide_(guide), w_(image.width()), h_(image.height()) {
     const std::size_t n = static_cast<std::size_t>(w_) * h_;
     known_.assign(n, 1);
+    from_.assign(n, -1);
     stamp_.assign(n, 0);
     confidence_.assign(n, 1.0f);
     std::vector<int> is_source(n, 0);
@@ -313,50 +316,55 @@ class Filler {
           consider(cx, cy, off.distance_term);
         }
       } else {
-        // A wider window: only the valid centres of each row (thin strands
-        // have few, far from a target that found none nearer), rows nearest
-        // first and each row outward from x, so that once a match is found
-        // whatever lies farther than its cost is never visited.
+        // A wider window: the target is far from every whole source patch
+        // (deep in a large hole, or in a thin strand).
         const auto term = [&](int dx, int dy) {
           return static_cast<long>(o_.distance_weight * (dx * dx + dy * dy));
         };
-        // The first grid row at or below y.
-        const int first_below = y <= y0 ? y0 : y0 + ((y - y0 + step - 1) / step) * step;
-        for (int below = first_below, above = first_below - step; below <= y1 || above >= y0;) {
-          // The nearer of the next row below and above.
-          int cy;
-          if (above < y0 || (below <= y1 && below - y <= y - above)) {
-            cy = below;
-            below += step;
-          } else {
-            cy = above;
-            above -= step;
-          }
-          if (term(0, cy - y) > best) {
-            // This row and every row farther on this side are too far.
-            if (cy >= y)
-              below = y1 + 1;
-            else
-              above = y0 - 1;
-            continue;
-          }
-          const auto row_begin = valid_x_.begin() + row_start_[cy];
-          const auto row_end = valid_x_.begin() + row_start_[cy + 1];
-          const auto lo = std::lower_bound(row_begin, row_end, x0);
-          const auto hi = std::upper_bound(lo, row_end, x1);
-          const auto mid = std::lower_bound(lo, hi, x);
-          for (auto it = mid; it != hi; ++it) {
-            if ((*it - x0) % step != 0) continue;
-            const long d = term(*it - x, cy - y);
-            if (d > best) break;
-            consider(*it, cy, d);
-          }
-          for (auto it = mid; it != lo;) {
-            --it;
-            if ((*it - x0) % step != 0) continue;
-            const long d = term(*it - x, cy - y);
-            if (d > best) break;
-            consider(*it, cy, d);
+        if (o_.far_candidates > 0) {
+          far_search(x, y, x0, x1, y0, y1, term, best, consider);
+        } else {
+          // Exact: only the valid centres of each row, rows nearest first
+          // and each row outward from x, so that once a match is found
+          // whatever lies farther than its cost is never visited.
+          // The first grid row at or below y.
+          const int first_below = y <= y0 ? y0 : y0 + ((y - y0 + step - 1) / step) * step;
+          for (int below = first_below, above = first_below - step; below <= y1 || above >= y0;) {
+            // The nearer of the next row below and above.
+            int cy;
+            if (above < y0 || (below <= y1 && below - y <= y - above)) {
+              cy = below;
+              below += step;
+            } else {
+              cy = above;
+              above -= step;
+            }
+            if (term(0, cy - y) > best) {
+              // This row and every row farther on this side are too far.
+              if (cy >= y)
+                below = y1 + 1;
+              else
+                above = y0 - 1;
+              continue;
+            }
+            const auto row_begin = valid_x_.begin() + row_start_[cy];
+            const auto row_end = valid_x_.begin() + row_start_[cy + 1];
+            const auto lo = std::lower_bound(row_begin, row_end, x0);
+            const auto hi = std::upper_bound(lo, row_end, x1);
+            const auto mid = std::lower_bound(lo, hi, x);
+            for (auto it = mid; it != hi; ++it) {
+              if ((*it - x0) % step != 0) continue;
+              const long d = term(*it - x, cy - y);
+              if (d > best) break;
+              consider(*it, cy, d);
+            }
+            for (auto it = mid; it != lo;) {
+              --it;
+              if ((*it - x0) % step != 0) continue;
+              const long d = term(*it - x, cy - y);
+              if (d > best) break;
+              consider(*it, cy, d);
+            }
           }
         }
       }
@@ -365,6 +373,94 @@ class Filler {
         return true;
       }
       if (radius > w_ + h_) return false;
+    }
+  }
+
+  // A row's next valid centre in one direction (far_search): valid_x_[pos],
+  // stepping by dir until end; d is its distance term.
+  struct Cursor {
+    long d;
+    int cy, pos, end, dir;
+  };
+
+  // The search of a widened window, made cheap: first the coherent
+  // candidates, the sources that continue the copies already made around the
+  // target (Ashikhmin 2001), then the window's valid centres nearest first,
+  // at most far_candidates of them (the lowest cost of a farther one is its
+  // distance term alone, so the search also stops once that exceeds the
+  // best). Exact search over the window would visit every valid centre:
+  // thousands per target deep in a large hole.
+  template <typename Term, typename Consider>
+  void far_search(int x, int y, int x0, int x1, int y0, int y1, const Term& term, const long& best,
+                  const Consider& consider) const {
+    const int r = r_, step = o_.search_step;
+    coherent_.clear();
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const int qx = x + dx, qy = y + dy;
+        if (qx < 0 || qy < 0 || qx >= w_ || qy >= h_ || from_[idx(qx, qy)] < 0) continue;
+        const int from = from_[idx(qx, qy)];
+        const int cx = from % w_ - dx, cy = from / w_ - dy;
+        if (cx < r || cy < r || cx >= w_ - r || cy >= h_ - r) continue;
+        const int c = static_cast<int>(idx(cx, cy));
+        if (std::find(coherent_.begin(), coherent_.end(), c) == coherent_.end())
+          coherent_.push_back(c);
+      }
+    for (int c : coherent_) consider(c % w_, c / w_, term(c % w_ - x, c / w_ - y));
+
+    // Each grid row of the window holds two cursors into its valid centres,
+    // one going right from x and one going left; a heap yields the nearest.
+    // Rows join the heap only once they could hold the nearest candidate.
+    const auto farther = [](const Cursor& a, const Cursor& b) {
+      return a.d != b.d ? a.d > b.d : a.cy != b.cy ? a.cy > b.cy : a.pos > b.pos;
+    };
+    std::vector<Cursor>& heap = cursors_;
+    heap.clear();
+    // Moves c to its next centre on the window's grid, pushing it if any.
+    const auto advance = [&](Cursor c) {
+      for (; c.pos != c.end; c.pos += c.dir) {
+        const int cx = valid_x_[c.pos];
+        if ((cx - x0) % step != 0) continue;
+        c.d = term(cx - x, c.cy - y);
+        heap.push_back(c);
+        std::push_heap(heap.begin(), heap.end(), farther);
+        return;
+      }
+    };
+    const auto add_row = [&](int cy) {
+      const auto row_begin = valid_x_.begin() + row_start_[cy];
+      const auto row_end = valid_x_.begin() + row_start_[cy + 1];
+      const int lo = static_cast<int>(std::lower_bound(row_begin, row_end, x0) - valid_x_.begin());
+      const int hi = static_cast<int>(std::upper_bound(row_begin, row_end, x1) - valid_x_.begin());
+      const int mid =
+          std::max(lo, std::min(hi, static_cast<int>(std::lower_bound(row_begin, row_end, x) -
+                                                     valid_x_.begin())));
+      advance({0, cy, mid, hi, 1});
+      advance({0, cy, mid - 1, lo - 1, -1});
+    };
+    const int first_below = y <= y0 ? y0 : y0 + ((y - y0 + step - 1) / step) * step;
+    int below = first_below, above = first_below - step;
+    int visited = 0;
+    for (;;) {
+      // Rows whose nearest possible centre is no farther than the heap's.
+      while (below <= y1 || above >= y0) {
+        const bool take_below = above < y0 || (below <= y1 && below - y <= y - above);
+        const int cy = take_below ? below : above;
+        if (!heap.empty() && term(0, cy - y) > heap.front().d) break;
+        if (take_below)
+          below += step;
+        else
+          above -= step;
+        add_row(cy);
+      }
+      if (heap.empty()) return;
+      std::pop_heap(heap.begin(), heap.end(), farther);
+      const Cursor c = heap.back();
+      heap.pop_back();
+      if (c.d > best) return;
+      consider(valid_x_[c.pos], c.cy, c.d);
+      if (++visited >= o_.far_candidates && best != std::numeric_limits<long>::max()) return;
+      advance({c.d, c.cy, c.pos + c.dir, c.end, c.dir});
     }
   }
 
@@ -427,6 +523,7 @@ class Filler {
         const std::uint8_t alpha = dst.a;
         if (found) {
           dst = image_.data()[idx(bx + dx, by + dy)];
+          from_[idx(px, py)] = static_cast<int>(idx(bx + dx, by + dy));
         } else if (guide_ != nullptr) {
           dst = guide_->data()[idx(px, py)];  // no allowed patch: the coarse fill
         } else {
@@ -472,6 +569,9 @@ class Filler {
   long remaining_ = 0;
   std::vector<std::vector<Offset>> nearest_;  // make_offsets()
   mutable Target target_;                     // best_source's scratch
+  std::vector<int> from_;              // the source pixel each filled pixel was copied from, or -1
+  mutable std::vector<int> coherent_;  // far_search's scratch
+  mutable std::vector<Cursor> cursors_;
 };
 
 }  // namespace

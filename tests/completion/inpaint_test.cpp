@@ -81,6 +81,68 @@ TEST(Inpaint, SourceFarBeyondTheSearchWindowIsFound) {
   EXPECT_EQ(img.at(9, 30), (Rgba{90, 90, 90, 255}));
 }
 
+// Cells 8 × 5 px: a texture with a period in both directions.
+Image checker(int w, int h) {
+  Image img(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      img.at(x, y) = ((x / 8) + (y / 5)) % 2 ? Rgba{220, 180, 60, 255} : Rgba{90, 50, 30, 255};
+  return img;
+}
+
+struct TextureScore {
+  int wrong = 0;     // hole pixels unlike the truth
+  int periodic = 0;  // hole pixels that repeat at the period and flip at half of it
+  int checked = 0;   // hole pixels whose period neighbours are in the hole too
+};
+
+TextureScore fill_checker_hole(int far_candidates) {
+  const int w = 211, h = 143;
+  const Image truth = checker(w, h);
+  Image img = truth;
+  LabelMap fill(w, h);
+  for (int y = 30; y < 115; ++y)
+    for (int x = 40; x < 170; ++x) fill.at(x, y) = 1, img.at(x, y) = {255, 255, 255, 255};
+  InpaintOptions o;
+  o.far_candidates = far_candidates;
+  const InpaintResult r = inpaint_exemplar(img, fill, LabelMap{}, o);
+  EXPECT_EQ(r.filled, 85 * 130);
+  EXPECT_EQ(r.unfilled, 0);
+  TextureScore s;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!fill.at(x, y)) {
+        EXPECT_EQ(img.at(x, y), truth.at(x, y)) << "known pixel changed at " << x << "," << y;
+        continue;
+      }
+      s.wrong += !(img.at(x, y) == truth.at(x, y));
+      if (x + 16 >= w || y + 10 >= h || !fill.at(x + 16, y) || !fill.at(x, y + 10)) continue;
+      ++s.checked;
+      const Rgba c = img.at(x, y);
+      s.periodic += c == img.at(x + 16, y) && c == img.at(x, y + 10) && !(c == img.at(x + 8, y)) &&
+                    !(c == img.at(x, y + 5));
+    }
+  return s;
+}
+
+// Targets deep in a hole 130 × 85 px have no whole source patch within the
+// search radius: the widened search (coherent candidates and the nearest
+// far_candidates) still carries the texture through, nearly as well as the
+// exact search over the whole window, and far better than with one candidate.
+TEST(Inpaint, LargeHoleFarFromEverySourceCarriesThePeriodicTexture) {
+  const TextureScore fast = fill_checker_hole(InpaintOptions{}.far_candidates);
+  const TextureScore exact = fill_checker_hole(0);
+  const TextureScore poor = fill_checker_hole(1);
+  const int n = 85 * 130;
+  EXPECT_LT(exact.wrong, n / 20);
+  EXPECT_LT(fast.wrong, n / 10);
+  EXPECT_GT(fast.periodic, fast.checked * 3 / 4);
+  EXPECT_GT(exact.periodic, exact.checked * 3 / 4);
+  // The property separates a good search from a poor one.
+  EXPECT_GT(poor.wrong, n / 7);
+  EXPECT_LT(poor.periodic, poor.checked / 2);
+}
+
 // A hole in a flat area between two flat areas of other colours is filled
 // from its own area only (candidates visited nearest first, all compared).
 TEST(Inpaint, HoleInAFlatAreaTakesItsColourNotItsNeighbours) {
@@ -114,6 +176,9 @@ TEST(Inpaint, BadInputThrows) {
   InpaintOptions bad;
   bad.patch_radius = 0;
   EXPECT_THROW(inpaint_exemplar(img, LabelMap(20, 30), LabelMap{}, bad), Error);
+  InpaintOptions negative;
+  negative.far_candidates = -1;
+  EXPECT_THROW(inpaint_exemplar(img, LabelMap(20, 30), LabelMap{}, negative), Error);
 }
 
 }  // namespace

@@ -18,6 +18,11 @@ struct InpaintOptions {
   // among equal matches the nearest wins, so distinct features (an eye) are
   // not copied far across a flat area.
   double distance_weight = 2.0;
+  // A target with no whole source patch within search_radius (deep in a large
+  // hole) is matched against the sources continuing its neighbours' copies
+  // and at most this many of the nearest candidates of the widened window;
+  // 0 = every candidate of the window (exact, thousands per target).
+  int far_candidates = 64;
   // Cel-art fill (inpaint_cel) only. Ink = luma below ink_luma, or a ridge
   // more than ink_step darker than both sides (1–2 px away): drawn lines,
   // hatching and small dark features, not the border of two flat regions.
