@@ -11,6 +11,8 @@
 
 #include "hair25d/core/error.h"
 #include "hair25d/layering/boundary_graph.h"
+#include "outline_fill.h"
+#include "parallel.h"
 #include "raster_scan.h"
 
 namespace hair25d::layering {
@@ -22,15 +24,18 @@ constexpr int kDiag = 7;
 constexpr int kUnit = 5;
 constexpr double kMaxReach = 7.0;  // pixels grown at most: outlines up to ~14 px wide
 
-// The part of the image the growth can reach: the box of all regions grown by
-// the growth limit, with a one-pixel frame so that neighbours need no bounds
-// checks. Indices are row-major in the framed box, which keeps the raster order
-// of the image and so the order in which fronts are seeded and expanded.
+// The part of the image a growth runs on: columns of the box of all regions
+// grown by the growth limit, rows of one band of it, with a one-pixel frame so
+// that neighbours need no bounds checks. Indices are row-major in the framed
+// window, which keeps the raster order of the image and so the order in which
+// fronts are seeded and expanded.
 struct Window {
   int x0 = 0, y0 = 0;  // image position of the first pixel inside the frame
   int w = 0, h = 0;    // pixels inside the frame
   int stride() const { return w + 2; }
   int at(int x, int y) const { return (y - y0 + 1) * stride() + (x - x0 + 1); }
+  int x_of(int i) const { return i % stride() - 1 + x0; }
+  int y_of(int i) const { return i / stride() - 1 + y0; }
 };
 
 constexpr std::uint16_t kUnreached = std::numeric_limits<std::uint16_t>::max();
@@ -41,60 +46,74 @@ struct Growth {
   // pixels and on the frame (so nothing grows into them), kUnreached on label-0
   // pixels not reached. 16 bits halve the memory traffic of the relaxation; the
   // growth limit keeps real distances far below kUnreached.
-  std::vector<std::uint16_t> dist;
+  std::unique_ptr<std::uint16_t[]> dist;
   // The region that reached a label-0 pixel; set only on the seeds and where
   // dist was lowered, so it needs no clearing.
   std::unique_ptr<int[]> owner;
-  // Every label-0 pixel reached, once: the passes after the growth visit
-  // these rather than the whole box.
+  // Every label-0 pixel reached in the band's own rows, once: the passes
+  // after the growth visit these rather than the whole window.
   std::vector<int> reached;
 };
 
 // Dial's algorithm: a multi-source shortest path on the 8-neighbour grid with a
 // ring of buckets, linear in the pixel count. Fronts start from region pixels
 // next to label 0, in raster order; where two fronts reach a pixel at the same
-// distance the one expanded first keeps it.
-Growth grow(const LabelMap& labels, int limit) {
+// distance the one expanded first keeps it. Runs on the rows [y0, y1) of
+// `box` (the box's columns), keeping in `reached` the pixels of rows
+// [own0, own1).
+//
+// Why a band gives the whole map's answer on its own rows: a pixel at
+// distance d is decided by the pixels its fronts came through, all within
+// d / kOrtho ≤ limit / kOrtho pixels of it (every step lowers the distance by
+// at least kOrtho), and by which of them was expanded first. Within a bucket
+// pixels are expanded in the order they were put there, that is in the order
+// of (the expansion of the neighbour that first gave them that distance, the
+// direction from it): a key made of pixels equally near, down to the seeds'
+// raster order. So when the band reaches limit / kOrtho + 2 rows beyond its
+// own (the +2: seeds are found from their neighbours), its own rows get the
+// distances, owners and ties of one growth over the whole box.
+Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0, int own1,
+            int limit) {
   const int w = labels.width();
-  const int h = labels.height();
   Growth g;
-  int bx0, by0, bx1, by1;
-  if (!detail::label_box(labels, &bx0, &by0, &bx1, &by1)) return g;
-  // A pixel c steps (Chebyshev) from every region is at least c · kOrtho away.
-  const int margin = limit / kOrtho + 1;
-  Window& box = g.box;
-  box.x0 = std::max(0, bx0 - margin);
-  box.y0 = std::max(0, by0 - margin);
-  box.w = std::min(w, bx1 + margin + 1) - box.x0;
-  box.h = std::min(h, by1 + margin + 1) - box.y0;
-  const int stride = box.stride();
-  const std::size_t n = static_cast<std::size_t>(stride) * (box.h + 2);
-  g.dist.assign(n, 0);
+  Window& win = g.box;
+  win.x0 = box.x0;
+  win.w = box.w;
+  win.y0 = y0;
+  win.h = y1 - y0;
+  const int stride = win.stride();
+  const std::size_t n = static_cast<std::size_t>(stride) * (win.h + 2);
+  g.dist = std::make_unique_for_overwrite<std::uint16_t[]>(n);
   g.owner = std::make_unique_for_overwrite<int[]>(n);
-  std::uint16_t* dist = g.dist.data();
+  std::uint16_t* dist = g.dist.get();
   int* owner = g.owner.get();
-  for (int y = 0; y < box.h; ++y) {
-    const int* row = labels.data() + static_cast<std::size_t>(box.y0 + y) * w + box.x0;
-    std::uint16_t* out = dist + box.at(box.x0, box.y0 + y);
-    for (int x = 0; x < box.w; ++x) out[x] = row[x] == 0 ? kUnreached : 0;
+  // The frame: rows above and below, and a column each side of every row.
+  std::fill(dist, dist + stride, 0);
+  std::fill(dist + n - stride, dist + n, 0);
+  for (int y = 0; y < win.h; ++y) {
+    const int* row = labels.data() + static_cast<std::size_t>(win.y0 + y) * w + win.x0;
+    std::uint16_t* out = dist + win.at(win.x0, win.y0 + y);
+    out[-1] = 0;
+    out[win.w] = 0;
+    for (int x = 0; x < win.w; ++x) out[x] = row[x] == 0 ? kUnreached : 0;
   }
   // Only region pixels on the edge of label 0 start a front. Every dist is 0
   // or kUnreached yet, so "a label-0 neighbour" is an OR of the eight, which
   // vectorises; the flags are then read in raster order.
   std::array<std::vector<int>, kDiag + 1> ring;
-  std::vector<std::uint16_t> edge(box.w);
-  for (int y = 0; y < box.h; ++y) {
-    const int base = box.at(box.x0, box.y0 + y);
+  std::vector<std::uint16_t> edge(win.w);
+  for (int y = 0; y < win.h; ++y) {
+    const int base = win.at(win.x0, win.y0 + y);
     const std::uint16_t* up = dist + base - stride;
     const std::uint16_t* mid = dist + base;
     const std::uint16_t* down = dist + base + stride;
-    for (int x = 0; x < box.w; ++x) {
+    for (int x = 0; x < win.w; ++x) {
       const std::uint16_t around = up[x - 1] | up[x] | up[x + 1] | mid[x - 1] | mid[x + 1] |
                                    down[x - 1] | down[x] | down[x + 1];
       edge[x] = mid[x] == 0 ? around : 0;
     }
-    const int* row = labels.data() + static_cast<std::size_t>(box.y0 + y) * w + box.x0;
-    detail::for_each_set(edge, 0, box.w, [&](int x) {
+    const int* row = labels.data() + static_cast<std::size_t>(win.y0 + y) * w + win.x0;
+    detail::for_each_set(edge, 0, win.w, [&](int x) {
       owner[base + x] = row[x];
       ring[0].push_back(base + x);
     });
@@ -102,10 +121,11 @@ Growth grow(const LabelMap& labels, int limit) {
   // Neighbour offsets: right, left, down, up, then the diagonals.
   const std::array<int, 4> ortho = {1, -1, stride, -stride};
   const std::array<int, 4> diag = {stride + 1, -stride + 1, stride - 1, -stride - 1};
+  const int first = win.at(win.x0, own0), last = win.at(win.x0, own1);  // own rows' indices
   auto relax = [&](int j, int nd, int own) {
     // Region pixels and the frame hold 0, so they are never grown into.
     if (nd >= dist[j]) return;
-    if (dist[j] == kUnreached) g.reached.push_back(j);
+    if (dist[j] == kUnreached && j >= first && j < last) g.reached.push_back(j);
     dist[j] = static_cast<std::uint16_t>(nd);
     owner[j] = own;
     ring[nd % ring.size()].push_back(j);
@@ -135,6 +155,83 @@ Growth grow(const LabelMap& labels, int limit) {
 
 }  // namespace
 
+namespace detail {
+
+OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
+                                   int max_bands, int min_band_rows) {
+  std::string why;
+  if (!options.is_valid(&why)) throw Error("layering: " + why);
+  if (labels.empty()) throw Error("layering: label map is empty; need at least one pixel");
+  // Lines wider than this are not outlines but background gaps; growing no
+  // farther keeps the cost to a band around the regions.
+  const double reach = options.max_distance > 0 ? options.max_distance : kMaxReach;
+  const int limit = static_cast<int>(std::ceil(std::min(reach * kUnit, 60000.0)));
+  OutlineFill out;
+  out.labels = labels;
+  int bx0, by0, bx1, by1;
+  if (!detail::label_box(labels, &bx0, &by0, &bx1, &by1)) {
+    out.radius = options.max_distance > 0 ? options.max_distance : 0.0;
+    out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
+    return out;
+  }
+  // A pixel c steps (Chebyshev) from every region is at least c · kOrtho away.
+  const int margin = limit / kOrtho + 1;
+  Window box;
+  box.x0 = std::max(0, bx0 - margin);
+  box.y0 = std::max(0, by0 - margin);
+  box.w = std::min(labels.width(), bx1 + margin + 1) - box.x0;
+  box.h = std::min(labels.height(), by1 + margin + 1) - box.y0;
+  // Bands of the box's rows, each grown on its own core over its rows and
+  // the rows within reach (grow()), to the same result as one growth.
+  const int reach_rows = limit / kOrtho + 2;
+  const int bands = std::clamp(std::min(max_bands, box.h / std::max(1, min_band_rows)), 1, 64);
+  std::vector<Growth> growth(bands);
+  std::vector<std::vector<int>> meets(bands);
+  detail::parallel_for(
+      bands,
+      [&](int b) {
+        const int own0 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * b / bands);
+        const int own1 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * (b + 1) / bands);
+        growth[b] = grow(labels, box, std::max(box.y0, own0 - reach_rows),
+                         std::min(box.y0 + box.h, own1 + reach_rows), own0, own1, limit);
+        // Where fronts of two regions meet inside label-0 pixels, each side
+        // has come about half a line width: the typical meeting distance
+        // measures the lines. Each pair of 4-neighbours is counted once, from
+        // its left or upper pixel (the one below may be in the next band's
+        // rows, which this band's growth also holds as they are).
+        const Growth& g = growth[b];
+        for (int i : g.reached) {
+          for (int j : {i + 1, i + g.box.stride()}) {
+            // The frame and region pixels hold 0, unreached pixels kUnreached.
+            if (g.dist[j] == 0 || g.dist[j] == kUnreached || g.owner[j] == g.owner[i]) continue;
+            meets[b].push_back(std::max(g.dist[i], g.dist[j]));
+          }
+        }
+      },
+      0, 1);
+  std::vector<int> meet;
+  for (const auto& m : meets) meet.insert(meet.end(), m.begin(), m.end());
+  if (!meet.empty()) {
+    auto mid = meet.begin() + static_cast<std::ptrdiff_t>(meet.size() / 2);
+    std::nth_element(meet.begin(), mid, meet.end());
+    // A line w pixels wide is met at about w/2 from each side.
+    out.line_width = std::max(1.0, 2.0 * (*mid) / kUnit - 1.0);
+  }
+  out.radius = options.max_distance > 0 ? options.max_distance
+                                        : (out.line_width > 0 ? out.line_width + 1.5 : 0.0);
+  out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
+  const int radius = static_cast<int>(std::floor(out.radius * kUnit));
+  for (const Growth& g : growth) {
+    for (int i : g.reached) {
+      if (g.dist[i] > radius) continue;
+      out.labels.at(g.box.x_of(i), g.box.y_of(i)) = g.owner[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace detail
+
 bool OutlineFillOptions::is_valid(std::string* error) const {
   if (!std::isfinite(max_distance)) {
     if (error)
@@ -146,45 +243,8 @@ bool OutlineFillOptions::is_valid(std::string* error) const {
 }
 
 OutlineFill fill_outlines(const LabelMap& labels, const OutlineFillOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw Error("layering: " + why);
-  if (labels.empty()) throw Error("layering: label map is empty; need at least one pixel");
-  // Lines wider than this are not outlines but background gaps; growing no
-  // farther keeps the cost to a band around the regions.
-  const double reach = options.max_distance > 0 ? options.max_distance : kMaxReach;
-  const int limit = static_cast<int>(std::ceil(std::min(reach * kUnit, 60000.0)));
-  const Growth g = grow(labels, limit);
-  const Window& box = g.box;
-
-  // Where fronts of two regions meet inside label-0 pixels, each side has come
-  // about half a line width: the typical meeting distance measures the lines.
-  // Each pair of 4-neighbours is counted once, from its left or upper pixel.
-  std::vector<int> meet;
-  for (int i : g.reached) {
-    for (int j : {i + 1, i + box.stride()}) {
-      // The frame and region pixels hold 0, unreached pixels kUnreached.
-      if (g.dist[j] == 0 || g.dist[j] == kUnreached || g.owner[j] == g.owner[i]) continue;
-      meet.push_back(std::max(g.dist[i], g.dist[j]));
-    }
-  }
-  OutlineFill out;
-  if (!meet.empty()) {
-    auto mid = meet.begin() + static_cast<std::ptrdiff_t>(meet.size() / 2);
-    std::nth_element(meet.begin(), mid, meet.end());
-    // A line w pixels wide is met at about w/2 from each side.
-    out.line_width = std::max(1.0, 2.0 * (*mid) / kUnit - 1.0);
-  }
-  out.radius = options.max_distance > 0 ? options.max_distance
-                                        : (out.line_width > 0 ? out.line_width + 1.5 : 0.0);
-  out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
-  out.labels = labels;
-  const int radius = static_cast<int>(std::floor(out.radius * kUnit));
-  for (int i : g.reached) {
-    if (g.dist[i] > radius) continue;
-    const int x = i % box.stride() - 1 + box.x0, y = i / box.stride() - 1 + box.y0;
-    out.labels.at(x, y) = g.owner[i];
-  }
-  return out;
+  return detail::fill_outlines_in_bands(labels, options, detail::kFillBands,
+                                        detail::kMinFillBandRows);
 }
 
 }  // namespace hair25d::layering

@@ -16,13 +16,16 @@ namespace hair25d::layering::detail {
 
 // Calls f(i) once for every i in [0, n), on the calling thread and up to
 // max_threads − 1 more (items handed out one at a time, as costs vary with
-// boundary length). The first exception thrown by f is rethrown here after
-// all threads have stopped; items not yet started are then skipped.
+// boundary length), one thread per `items_per_thread` items at most. The first exception thrown by
+// f is rethrown here after all threads have stopped; items not yet started are then skipped.
 template <class F>
-void parallel_for(int n, F&& f, int max_threads = 0) {
+void parallel_for(int n, F&& f, int max_threads = 0, int items_per_thread = 8) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  // Threads cost tens of microseconds to start: not worth it for a handful.
-  const int threads = std::min({max_threads > 0 ? max_threads : cores, cores, n / 8 + 1});
+  // Threads cost tens of microseconds to start: not worth it for a handful
+  // of small items.
+  const int threads =
+      std::min({max_threads > 0 ? max_threads : cores, cores,
+                (n + std::max(1, items_per_thread) - 1) / std::max(1, items_per_thread)});
   if (threads <= 1) {
     for (int i = 0; i < n; ++i) f(i);
     return;

@@ -2,7 +2,9 @@
 // §4.1) against straightforward reference computations: the colours smoothed
 // only where they are sampled against cv::GaussianBlur over the whole window
 // (what the layering did before), on non-square images with noise, translucent
-// pixels and windows cut by the image's edges, for line widths 1–21.
+// pixels and windows cut by the image's edges, for line widths 1–21; and
+// the outline fill grown in bands of rows on several cores against one
+// growth over the whole map.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,10 +12,12 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
+#include <vector>
 
 #include "boundary_box.h"
 #include "hair25d/layering/boundary_graph.h"
 #include "line_response.h"
+#include "outline_fill.h"
 
 namespace hair25d::layering {
 namespace {
@@ -163,6 +167,103 @@ TEST(LineSpeed, TheReferenceTellsAnotherSmoothingApart) {
       worst = std::max(
           worst, std::abs(double(lines.smoothed_colour(x, y)[0]) - other.at<cv::Vec3f>(y, x)[0]));
   EXPECT_GT(worst, 1.0);
+}
+
+// A drawing-like label map: strands as discs and thick strokes painted one
+// over another, each with a label-0 outline `line` pixels wide (lines of
+// even width split into ties), on a background of label 0.
+LabelMap strand_map(int w, int h, unsigned seed, int line) {
+  std::mt19937 rng(seed);
+  LabelMap m(w, h, 0);
+  const int strands = 4 + static_cast<int>(rng() % 12);
+  for (int s = 0; s < strands; ++s) {
+    const double cx = rng() % w, cy = rng() % h;
+    const double dx = (static_cast<int>(rng() % 200) - 100) / 100.0;
+    const double dy = (static_cast<int>(rng() % 200) - 100) / 100.0;
+    const double length = 5 + rng() % std::max(6, w / 2);
+    const double radius = 3 + rng() % std::max(4, h / 6);
+    const int label = 1 + static_cast<int>(rng() % 9);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        // Distance to the segment from (cx, cy) along (dx, dy).
+        const double len2 = dx * dx + dy * dy;
+        const double t =
+            len2 > 0 ? std::clamp(((x - cx) * dx + (y - cy) * dy) / len2, 0.0, length) : 0.0;
+        const double d = std::hypot(x - cx - t * dx, y - cy - t * dy);
+        if (d < radius)
+          m.at(x, y) = label;
+        else if (d < radius + line)
+          m.at(x, y) = 0;
+      }
+  }
+  return m;
+}
+
+void expect_same_fill(const LabelMap& m, const OutlineFillOptions& options, int bands,
+                      const std::string& what) {
+  const OutlineFill one = detail::fill_outlines_in_bands(m, options, 1, 1);
+  const OutlineFill split = detail::fill_outlines_in_bands(m, options, bands, 1);
+  EXPECT_EQ(split.line_width, one.line_width) << what;
+  EXPECT_EQ(split.radius, one.radius) << what;
+  ASSERT_EQ(split.labels.width(), one.labels.width());
+  int differ = 0;
+  for (int y = 0; y < m.height(); ++y)
+    for (int x = 0; x < m.width(); ++x) differ += split.labels.at(x, y) != one.labels.at(x, y);
+  EXPECT_EQ(differ, 0) << what;
+}
+
+// Hand-built: lines of odd and even width (ties in the middle), across and
+// along the bands' edges, between regions and against the background.
+TEST(FillBands, HandBuiltLinesFillAsOneGrowth) {
+  LabelMap m(37, 61, 0);
+  for (int y = 0; y < 61; ++y)
+    for (int x = 0; x < 37; ++x) {
+      if (y >= 3 && y < 20 && x >= 2 && x < 34) m.at(x, y) = x < 17 ? 1 : (x >= 19 ? 2 : 0);
+      if (y >= 22 && y < 58 && x >= 4) m.at(x, y) = y < 39 ? 3 : (y >= 42 ? 4 : 0);
+      if (y >= 22 && y < 58 && (x + y) % 13 < 2) m.at(x, y) = 0;  // diagonal lines
+    }
+  const OutlineFill one = detail::fill_outlines_in_bands(m, {}, 1, 1);
+  // The two-pixel line between 1 and 2 is split between them; the
+  // three-pixel one between 3 and 4 too, its middle row to one of them.
+  EXPECT_EQ(one.labels.at(17, 10), 1);
+  EXPECT_EQ(one.labels.at(18, 10), 2);
+  EXPECT_EQ(one.labels.at(20, 39), 3);
+  EXPECT_EQ(one.labels.at(20, 41), 4);
+  for (int bands : {2, 3, 5, 8, 61})
+    for (double reach : {0.0, 1.0, 2.5, 7.0, 12.0})
+      expect_same_fill(m, {.max_distance = reach}, bands,
+                       std::to_string(bands) + " bands, reach " + std::to_string(reach));
+}
+
+// Generated drawing-like maps (non-square, outlines 1–5 px) and noise (ties
+// everywhere), split into bands of a few rows up to one band per row.
+TEST(FillBands, GeneratedMapsFillAsOneGrowth) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 24; ++trial) {
+    const int w = 30 + static_cast<int>(rng() % 150), h = 20 + static_cast<int>(rng() % 110);
+    LabelMap m = strand_map(w, h, 100 + trial, 1 + trial % 5);
+    if (trial % 6 == 5) {
+      const int kinds[] = {0, 0, 0, 1, 2, 7};
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) m.at(x, y) = kinds[rng() % 6];
+    }
+    const double reach = trial % 3 == 0 ? 0.0 : 0.5 + (rng() % 90) / 10.0;
+    const int bands = 2 + static_cast<int>(rng() % 9);
+    expect_same_fill(m, {.max_distance = reach}, bands,
+                     "trial " + std::to_string(trial) + ", " + std::to_string(bands) + " bands");
+  }
+}
+
+// The public fill splits large maps; it equals one growth there too (a
+// 640 x 480 drawing-like map, the bands of fill_outlines).
+TEST(FillBands, PublicFillOnALargeMapEqualsOneGrowth) {
+  const LabelMap m = strand_map(640, 480, 7, 4);
+  const OutlineFill one = detail::fill_outlines_in_bands(m, {}, 1, 1);
+  const OutlineFill pub = fill_outlines(m);
+  EXPECT_GT(one.line_width, 0.0);
+  EXPECT_EQ(pub.line_width, one.line_width);
+  EXPECT_EQ(pub.radius, one.radius);
+  EXPECT_TRUE(pub.labels == one.labels);
 }
 
 }  // namespace

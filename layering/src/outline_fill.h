@@ -1,0 +1,23 @@
+// The outline fill (paper §4.1: outline pixels given to the regions they
+// separate) split into bands of rows grown on separate cores, internal to
+// the layering; fill_outlines (boundary_graph.h) is the public entry.
+#pragma once
+
+#include "hair25d/layering/boundary_graph.h"
+
+namespace hair25d::layering::detail {
+
+// Bands fill_outlines splits a large map into, and the fewest rows of the
+// label box per band: with fewer, the rows grown twice (the reach beyond
+// each band) cost more than a second core saves.
+inline constexpr int kFillBands = 4;
+inline constexpr int kMinFillBandRows = 96;
+
+// fill_outlines with the label box's rows split into at most `max_bands`
+// bands of at least `min_band_rows` rows, each grown on its own over the
+// rows within the growth's reach: the result equals one growth over the
+// whole map (max_bands = 1) in every pixel, the line width and the radius.
+OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
+                                   int max_bands, int min_band_rows);
+
+}  // namespace hair25d::layering::detail
