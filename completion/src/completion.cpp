@@ -70,6 +70,13 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   ctx.labels =
       assign_outline_pixels(image, *input.regions, options.outline_reach, options.dark_luma);
   report(progress, "completion", 0.05, "regions");
+  // The background fill needs only the labels (never changed below): it runs
+  // beside the matching, growing and strands.
+  std::future<Image> background;
+  if (options.inpaint_background && options.threads > 1)
+    background = std::async(std::launch::async, [&] {
+      return detail::fill_background(ctx, &result.background_inpaint);
+    });
   detail::describe_regions(ctx);
 
   UnionFind strands;
@@ -237,12 +244,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   for (auto& [root, members] : groups) pieces.groups.push_back(members);
 
   report(progress, "completion", 0.6, "strands");
-  // The background fill is independent of the strands: run it beside them.
-  std::future<Image> background;
-  if (options.inpaint_background && options.threads > 1)
-    background = std::async(std::launch::async, [&] {
-      return detail::fill_background(ctx, &result.background_inpaint);
-    });
   result.strands = detail::assemble_strands(ctx, pieces, &reports, &result.strand_inpaint);
   report(progress, "completion", 0.85, "background");
   if (background.valid())
