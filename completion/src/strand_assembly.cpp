@@ -1,6 +1,7 @@
 #include "strand_assembly.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <future>
 #include <opencv2/imgproc.hpp>
@@ -146,11 +147,26 @@ std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPi
                                               InpaintResult* inpainted) {
   const std::size_t n = pieces.groups.size();
   std::vector<CompletedStrand> out(n);
-  // Strands are independent (each edge report belongs to one strand): with
-  // two workers each takes every other strand; counters are summed afterwards.
+  // Strands are independent (each edge report belongs to one strand): two
+  // workers each take the next strand, the largest boxes first, so that one
+  // big strand does not leave the other worker idle at the end; counters are
+  // summed afterwards.
+  std::vector<std::size_t> order(n);
+  std::vector<long> area(n, 0);
+  for (std::size_t g = 0; g < n; ++g) {
+    order[g] = g;
+    cv::Rect box;
+    for (int m : pieces.groups[g])
+      box = box.area() == 0 ? ctx.regions.at(m).box : box | ctx.regions.at(m).box;
+    area[g] = box.area();
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return area[a] > area[b]; });
+  std::atomic<std::size_t> next{0};
   InpaintResult counts[2];
-  auto work = [&](std::size_t first, std::size_t stride, InpaintResult* count) {
-    for (std::size_t g = first; g < n; g += stride) {
+  auto work = [&](InpaintResult* count) {
+    for (std::size_t k = next++; k < n; k = next++) {
+      const std::size_t g = order[k];
       const std::vector<int>& members = pieces.groups[g];
       std::vector<const PieceArea*> areas;
       for (const PieceArea& a : pieces.areas)
@@ -160,11 +176,11 @@ std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPi
     }
   };
   if (ctx.options->threads > 1 && n > 1) {
-    auto other = std::async(std::launch::async, work, 1, 2, &counts[1]);
-    work(0, 2, &counts[0]);
+    auto other = std::async(std::launch::async, work, &counts[1]);
+    work(&counts[0]);
     other.get();
   } else {
-    work(0, 1, &counts[0]);
+    work(&counts[0]);
   }
   for (const InpaintResult& c : counts) {
     inpainted->filled += c.filled;
