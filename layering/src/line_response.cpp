@@ -197,10 +197,11 @@ LineResponse::LineResponse(const Image& image, double line_width, int x0, int y0
 }
 
 LineResponse::~LineResponse() {
-  // The conversion and the early blur read the image and write this
-  // object's buffers: they must end before those go (also when smooth() was
-  // never called). The early blur waits for the conversion itself, so it is
-  // waited for first.
+  // The conversion, the early blur and the noise read the image or this
+  // object's buffers and write them: they must end before those go (also
+  // when smooth() was never called). The early blur waits for the
+  // conversion itself, so it is waited for first.
+  if (noise_.valid()) noise_.wait();
   if (smoothing_.valid()) smoothing_.wait();
   if (converting_.valid()) converting_.wait();
 }
@@ -283,7 +284,17 @@ void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
     const cv::Mat grey = raw(cv::Rect(x0_, y0_, w_, h_));
     cv::Mat smooth(h_, w_, CV_32F, grey_.get());
     if (early) {
-      noise_sigma_ = noise_of(raw(window));
+      // Only the threshold needs the noise, after every line is measured: a
+      // second core estimates it meanwhile (the measurements leave the
+      // grey levels unchanged).
+      auto noise = [raw_window = raw(window)] {
+        try {
+          return noise_of(raw_window);
+        } catch (const cv::Exception& e) {
+          throw Error(std::string("layering: OpenCV failed while estimating noise: ") + e.what());
+        }
+      };
+      noise_ = std::async(std::launch::async | std::launch::deferred, noise).share();
       return;
     }
     // Smooth at about a quarter line width: tones (screentone dots, JPEG

@@ -80,7 +80,9 @@ class LineResponse {
 
   // Estimated standard deviation of pixel noise (grey levels) from the
   // median absolute deviation of a Laplacian, for a floor of the threshold.
-  double noise_sigma() const { return noise_sigma_; }
+  // (After the early blur it is estimated on a second core while the
+  // caller measures lines, and waited for here.)
+  double noise_sigma() const { return noise_.valid() ? noise_.get() : noise_sigma_; }
 
   // Line width estimated from the image alone: the most common width of dark
   // runs across rows and columns, for maps that carry no outlines.
@@ -105,6 +107,7 @@ class LineResponse {
   EarlyWindow early_;
   std::unique_ptr<float[]> early_grey_;
   std::future<void> smoothing_;
+  std::shared_future<double> noise_;  // noise_sigma() once the early blur was used
   // w_ × h_, row-major.
   std::unique_ptr<float[]> grey_;
   std::vector<float> colour_kernel_;
