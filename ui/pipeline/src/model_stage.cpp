@@ -1,6 +1,7 @@
 #include "hair25d/pipeline/model_stage.h"
 
 #include <algorithm>
+#include <atomic>
 #include <future>
 #include <set>
 #include <sstream>
@@ -181,13 +182,24 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
   };
   const std::size_t count = m.strands.size();
   if (options.threads > 1 && count > 1) {
-    auto other = std::async(std::launch::async, [&] {
-      for (std::size_t i = 1; i < count; i += 2) finish(i);
+    // Two workers each take the next strand, longest outline first, so that
+    // one large strand does not leave the other worker idle at the end.
+    std::vector<std::size_t> work(count);
+    for (std::size_t i = 0; i < count; ++i) work[i] = i;
+    std::stable_sort(work.begin(), work.end(), [&](std::size_t a, std::size_t b) {
+      return m.strands[a].outline.size() > m.strands[b].outline.size();
     });
-    for (std::size_t i = 0; i < count; i += 2) {
-      finish(i);
-      report(progress, "skeleton", static_cast<double>(i + 1) / count);
-    }
+    std::atomic<std::size_t> next_strand{0};
+    std::atomic<std::size_t> finished{0};
+    const auto worker = [&](bool reports) {
+      for (std::size_t k = next_strand++; k < count; k = next_strand++) {
+        finish(work[k]);
+        const std::size_t n = ++finished;
+        if (reports) report(progress, "skeleton", static_cast<double>(n) / count);
+      }
+    };
+    auto other = std::async(std::launch::async, worker, false);
+    worker(true);
     other.get();
   } else {
     for (std::size_t i = 0; i < count; ++i) {
