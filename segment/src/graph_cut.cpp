@@ -224,15 +224,19 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
       if (n > best) best = n, pr.seed[t] = l;
   }
 
-  std::vector<detail::ColourModel> models(pr.nl);
+  // One model per label and one for all hair; each fit is independent, so
+  // they are spread over the cores (index nl is the hair model).
+  std::vector<detail::ColourModel> models(pr.nl + 1);
   std::vector<Eigen::Vector3d> hair_samples;
-  for (int l = 0; l < pr.nl; ++l) {
-    models[l] =
-        detail::ColourModel::fit(samples[l], options.gmm_components, options.colour_sigma_min);
-    if (l > 0) hair_samples.insert(hair_samples.end(), samples[l].begin(), samples[l].end());
-  }
-  const detail::ColourModel hair_model =
-      detail::ColourModel::fit(hair_samples, options.gmm_components, options.colour_sigma_min);
+  for (int l = 1; l < pr.nl; ++l)
+    hair_samples.insert(hair_samples.end(), samples[l].begin(), samples[l].end());
+  cv::parallel_for_(cv::Range(0, pr.nl + 1), [&](const cv::Range& range) {
+    for (int l = range.start; l < range.end; ++l)
+      models[l] = detail::ColourModel::fit(l < pr.nl ? samples[l] : hair_samples,
+                                           options.gmm_components, options.colour_sigma_min);
+  });
+  const detail::ColourModel hair_model = std::move(models.back());
+  models.pop_back();
 
   // Distance to each label's strokes on a coarse grid: the term is smooth over
   // hundreds of pixels, so a few pixels of error do not matter.
@@ -250,50 +254,55 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
       any[l] = 1;
     }
   }
-  for (int l = 0; l < pr.nl; ++l)
-    if (any[l]) cv::distanceTransform(free[l], dist[l], cv::DIST_L2, 3, CV_32F);
+  cv::parallel_for_(cv::Range(0, pr.nl), [&](const cv::Range& range) {
+    for (int l = range.start; l < range.end; ++l)
+      if (any[l]) cv::distanceTransform(free[l], dist[l], cv::DIST_L2, 3, CV_32F);
+  });
   const double sigma_d = options.distance_sigma_fraction * std::sqrt(double(W) * H);
 
   pr.unary.assign(static_cast<std::size_t>(pr.nf) * pr.nl, 0.0);
   const double log_min = -std::log(options.min_probability);
-  for (int t = 0; t < pr.nf; ++t) {
-    const Eigen::Vector2d a = mesh.V.row(mesh.F(t, 0)), b = mesh.V.row(mesh.F(t, 1)),
-                          c = mesh.V.row(mesh.F(t, 2));
-    const double area = 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
-    const Eigen::Vector2d centroid = (a + b + c) / 3.0;
-    Eigen::Vector3d colour;
-    if (colour_n[t] > 0) {
-      colour = colour_sum[t] / colour_n[t];
-    } else if (all_n[t] > 0) {
-      colour = all_sum[t] / all_n[t];
-    } else {
-      const int x = std::clamp(static_cast<int>(centroid.x()), 0, W - 1);
-      const int y = std::clamp(static_cast<int>(centroid.y()), 0, H - 1);
-      const Rgba& p = image.at(x, y);
-      colour = Eigen::Vector3d(p.r, p.g, p.b);
+  // Each triangle's terms are its own: the triangles are spread over the cores.
+  cv::parallel_for_(cv::Range(0, pr.nf), [&](const cv::Range& range) {
+    for (int t = range.start; t < range.end; ++t) {
+      const Eigen::Vector2d a = mesh.V.row(mesh.F(t, 0)), b = mesh.V.row(mesh.F(t, 1)),
+                            c = mesh.V.row(mesh.F(t, 2));
+      const double area = 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+      const Eigen::Vector2d centroid = (a + b + c) / 3.0;
+      Eigen::Vector3d colour;
+      if (colour_n[t] > 0) {
+        colour = colour_sum[t] / colour_n[t];
+      } else if (all_n[t] > 0) {
+        colour = all_sum[t] / all_n[t];
+      } else {
+        const int x = std::clamp(static_cast<int>(centroid.x()), 0, W - 1);
+        const int y = std::clamp(static_cast<int>(centroid.y()), 0, H - 1);
+        const Rgba& p = image.at(x, y);
+        colour = Eigen::Vector3d(p.r, p.g, p.b);
+      }
+      const int gx = std::clamp(static_cast<int>(centroid.x()) / f, 0, gw - 1);
+      const int gy = std::clamp(static_cast<int>(centroid.y()) / f, 0, gh - 1);
+      auto proximity = [&](int l) {
+        if (dist[l].empty()) return 0.0;
+        const double d = dist[l].at<float>(gy, gx) * f;
+        return std::exp(-0.5 * d * d / (sigma_d * sigma_d));
+      };
+      const double hair_sim = options.hair_colour_share * hair_model.similarity(colour);
+      double pf = 0.0;
+      std::vector<double> p(pr.nl, 0.0);
+      for (int l = 1; l < pr.nl; ++l) {
+        p[l] = std::max(models[l].similarity(colour), hair_sim) * proximity(l);
+        pf = std::max(pf, p[l]);
+      }
+      p[0] = 1.0 - pf;
+      if (has_background_strokes && !models[0].empty())
+        p[0] = std::max(p[0], models[0].similarity(colour) * proximity(0));
+      for (int l = 0; l < pr.nl; ++l) {
+        const double cost = std::min(log_min, -std::log(std::max(p[l], 1e-300)));
+        pr.unary[static_cast<std::size_t>(t) * pr.nl + l] = options.unary_weight * area * cost;
+      }
     }
-    const int gx = std::clamp(static_cast<int>(centroid.x()) / f, 0, gw - 1);
-    const int gy = std::clamp(static_cast<int>(centroid.y()) / f, 0, gh - 1);
-    auto proximity = [&](int l) {
-      if (dist[l].empty()) return 0.0;
-      const double d = dist[l].at<float>(gy, gx) * f;
-      return std::exp(-0.5 * d * d / (sigma_d * sigma_d));
-    };
-    const double hair_sim = options.hair_colour_share * hair_model.similarity(colour);
-    double pf = 0.0;
-    std::vector<double> p(pr.nl, 0.0);
-    for (int l = 1; l < pr.nl; ++l) {
-      p[l] = std::max(models[l].similarity(colour), hair_sim) * proximity(l);
-      pf = std::max(pf, p[l]);
-    }
-    p[0] = 1.0 - pf;
-    if (has_background_strokes && !models[0].empty())
-      p[0] = std::max(p[0], models[0].similarity(colour) * proximity(0));
-    for (int l = 0; l < pr.nl; ++l) {
-      const double cost = std::min(log_min, -std::log(std::max(p[l], 1e-300)));
-      pr.unary[static_cast<std::size_t>(t) * pr.nl + l] = options.unary_weight * area * cost;
-    }
-  }
+  });
 
   // A curve edge is free to cut only where a line is drawn: the links that
   // close gaps between lines are guesses, and cutting them costs as much as
