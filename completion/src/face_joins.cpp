@@ -4,6 +4,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "join_curves.h"
+
 namespace hair25d::completion::detail {
 namespace {
 
@@ -32,6 +34,7 @@ double luma(const Rgba& c) { return 0.299 * c.r + 0.587 * c.g + 0.114 * c.b; }
 
 struct FaceRun {
   int region = 0;
+  int begin = 0, end = 0;  // contour indices (unwrapped)
   Polyline points;
   Eigen::Vector3d colour{0, 0, 0};
 };
@@ -209,6 +212,7 @@ std::vector<FaceJoin> face_join_candidates(const Context& ctx, const Face& face,
       if (face_points < kMinRunLength) continue;
       FaceRun run;
       run.region = id;
+      run.begin = b, run.end = e;
       for (int i = b; i <= e; ++i) run.points.emplace_back(c[i % n].x + 0.5, c[i % n].y + 0.5);
       // The face hides the piece: along the run the piece lies on the side
       // away from the face's centre and the face (or hair above the piece)
@@ -295,11 +299,9 @@ std::vector<FaceJoin> face_join_candidates(const Context& ctx, const Face& face,
       join.cost = 0.5 + 0.4 * colour / o.max_colour_distance + 3.0 * (1.0 - cover) +
                   (M_PI - opposite) / M_PI;
       if (join.cost > o.max_join_cost) continue;
-      std::vector<cv::Point2f> both, hull;
-      for (const Vec2& p : a.points) both.emplace_back(p.x(), p.y());
-      for (const Vec2& p : b.points) both.emplace_back(p.x(), p.y());
-      cv::convexHull(both, hull);
-      for (const cv::Point2f& p : hull) join.patch.emplace_back(p.x, p.y);
+      join.begin_a = a.begin, join.end_a = a.end;
+      join.begin_b = b.begin, join.end_b = b.end;
+      join.patch = face_join_patch(ctx, join);
       out.push_back(std::move(join));
     }
   std::sort(out.begin(), out.end(),

@@ -25,8 +25,12 @@ Face find_face(const Context& ctx);
 struct FaceJoin {
   int region_a = 0, region_b = 0;
   Vec2 pa{0, 0}, qa{0, 0}, pb{0, 0}, qb{0, 0};  // ends of the outlines along the face
+  // The same runs as spans of each region's contour (unwrapped, begin <= end).
+  int begin_a = 0, end_a = 0, begin_b = 0, end_b = 0;
   double cost = 0.0;
-  Polyline patch;  // closed polygon; it counts only over the face and occluders
+  // Closed polygon between two C¹ Béziers across the face (join_curves.h);
+  // it counts only over the face and occluders.
+  Polyline patch;
 };
 
 // Candidates, cheapest first. A piece qualifies when it is above no other
