@@ -15,6 +15,7 @@
 #include "line_response.h"
 #include "neighbours.h"
 #include "parallel.h"
+#include "raster_scan.h"
 
 namespace hair25d::layering {
 namespace {
@@ -39,32 +40,6 @@ struct Ray {
 std::pair<int, int> key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
 
 Relation relation_of_sign(double s) { return s >= 0 ? Relation::kAbove : Relation::kBelow; }
-
-// The distinct non-zero labels, sorted, in one pass (LabelMap::labels sorts
-// every pixel). Runs of one label are skipped cheaply.
-std::vector<int> distinct_labels(const LabelMap& map) {
-  std::set<int> seen;
-  int last = 0;
-  const int* data = map.data();
-  const std::size_t n = map.size();
-  constexpr std::size_t kBlock = 16;
-  for (std::size_t i = 0; i < n;) {
-    // Runs of one label are long: skip whole blocks equal to the last label
-    // (the OR of XORs vectorises), then look at pixels one by one.
-    for (; i + kBlock <= n; i += kBlock) {
-      int differs = 0;
-      for (std::size_t k = 0; k < kBlock; ++k) differs |= data[i + k] ^ last;
-      if (differs != 0) break;
-    }
-    for (const std::size_t end = std::min(n, i + kBlock); i < end; ++i) {
-      const int v = data[i];
-      if (v == last) continue;
-      last = v;
-      if (v != 0) seen.insert(v);
-    }
-  }
-  return {seen.begin(), seen.end()};
-}
 
 }  // namespace
 
@@ -113,7 +88,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                 std::to_string(regions.height()) + " but the image is " +
                 std::to_string(image.width()) + "x" + std::to_string(image.height()) +
                 "; they must have the same size");
-  const std::vector<int> ids = distinct_labels(regions);
+  const std::vector<int> ids = detail::distinct_labels(regions);
   if (ids.size() < 2)
     throw Error("layering: the region map has " + std::to_string(ids.size()) +
                 " hair region(s); layering needs at least two");

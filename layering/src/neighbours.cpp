@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <set>
 
@@ -38,27 +37,45 @@ void add_island_neighbours(const BoundaryGraph& graph, double island_perimeter, 
         parent[find(b)] = find(first);
     }
   }
-  std::map<int, double> perimeter;
-  std::map<int, std::set<int>> island_labels;
-  std::set<int> open;  // touch the image border: the paper, not an island
+  // Per island (the root of its boundaries): perimeter, the hair labels
+  // around it (sorted and made unique below) and whether it touches the
+  // image border (then it is the paper, not an island).
+  std::vector<double> perimeter(nb, 0.0);
+  std::vector<std::vector<int>> island_labels(nb);
+  std::vector<char> open(nb, 0), island(nb, 0);
   for (int i = 0; i < nb; ++i) {
     if (!zero_side(i) || bs[i].closed()) continue;
     const int r = find(i);
     perimeter[r] += bs[i].length();
     const int other = bs[i].left == 0 ? bs[i].right : bs[i].left;
-    if (other > 0) island_labels[r].insert(other);
-    if (other == kOutsideLabel) open.insert(r);
+    if (other > 0) {
+      island_labels[r].push_back(other);
+      island[r] = 1;
+    }
+    if (other == kOutsideLabel) open[r] = 1;
   }
+  // Groups of labels that are neighbours of each other, each sorted and
+  // without repeats, one after another in `members` (group g is
+  // [starts[g], starts[g + 1])); their pairs are added in this order.
+  std::vector<int> members;
+  std::vector<std::size_t> starts{0};
+  auto close_group = [&] {
+    const auto first = members.begin() + static_cast<std::ptrdiff_t>(starts.back());
+    std::sort(first, members.end());
+    members.erase(std::unique(first, members.end()), members.end());
+    starts.push_back(members.size());
+  };
   // Junctions where hair regions meet with no boundary of their own between them.
-  std::vector<std::set<int>> groups;
-  for (const auto& [r, ls] : island_labels)
-    if (!open.contains(r) && perimeter[r] < island_perimeter) groups.push_back(ls);
+  for (int r = 0; r < nb; ++r)
+    if (island[r] && !open[r] && perimeter[r] < island_perimeter) {
+      members.insert(members.end(), island_labels[r].begin(), island_labels[r].end());
+      close_group();
+    }
   for (const Junction& j : graph.junctions) {
-    std::set<int> around;
     for (int b : j.boundaries)
       for (int l : {bs[b].left, bs[b].right})
-        if (l > 0) around.insert(l);
-    groups.push_back(std::move(around));
+        if (l > 0) members.push_back(l);
+    close_group();
   }
   // Across a sliver: a strand narrower than a line width or two drawn between
   // two others leaves them a few line widths apart. Look across every hair
@@ -78,16 +95,22 @@ void add_island_neighbours(const BoundaryGraph& graph, double island_perimeter, 
       const int l = label_at(b.points[i] + sliver_reach * normal);
       const int r = label_at(b.points[i] - sliver_reach * normal);
       // Beyond the right region lies r: a neighbour of the left one, and so on.
-      if (r > 0 && r != b.left && r != b.right) groups.push_back({b.left, r});
-      if (l > 0 && l != b.left && l != b.right) groups.push_back({b.right, l});
+      if (r > 0 && r != b.left && r != b.right) {
+        members.insert(members.end(), {std::min(b.left, r), std::max(b.left, r)});
+        starts.push_back(members.size());
+      }
+      if (l > 0 && l != b.left && l != b.right) {
+        members.insert(members.end(), {std::min(b.right, l), std::max(b.right, l)});
+        starts.push_back(members.size());
+      }
     }
   }
   std::set<std::pair<int, int>> related;
   for (const RegionRelation& r : out.relations) related.insert(key(r.a, r.b));
-  for (const std::set<int>& g : groups)
-    for (auto p = g.begin(); p != g.end(); ++p)
-      for (auto q = std::next(p); q != g.end(); ++q) {
-        const auto k = key(*p, *q);
+  for (std::size_t g = 0; g + 1 < starts.size(); ++g)
+    for (std::size_t p = starts[g]; p < starts[g + 1]; ++p)
+      for (std::size_t q = p + 1; q < starts[g + 1]; ++q) {
+        const auto k = key(members[p], members[q]);
         if (!related.insert(k).second) continue;
         const int da = out.depth.at(k.first), db = out.depth.at(k.second);
         RegionRelation r;

@@ -3,8 +3,11 @@
 // few set ones.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
+#include <set>
 #include <vector>
 
 #include "hair25d/core/image.h"
@@ -88,6 +91,50 @@ inline bool label_box(const LabelMap& labels, int* x0, int* y0, int* x1, int* y1
       if (r[x] != 0) *x1 = x;
   }
   return true;
+}
+
+// The distinct non-zero labels of `map`, sorted, in one pass (LabelMap::labels
+// sorts every pixel). Runs of one label are long: blocks of sixteen pixels
+// equal to the last label are skipped by one compare each (SSE2), and a label
+// met again (across a line, the same few regions alternate) is found in a
+// small cache before the set is asked.
+inline std::vector<int> distinct_labels(const LabelMap& map) {
+  std::set<int> seen;
+  std::array<int, 64> cache;  // cache[v & 63] == v: v is in `seen` (or 0)
+  cache.fill(0);
+  int last = 0;
+  const int* data = map.data();
+  const std::size_t n = map.size();
+  constexpr std::size_t kBlock = 16;
+  for (std::size_t i = 0; i < n;) {
+#if defined(__SSE2__)
+    const __m128i same = _mm_set1_epi32(last);
+    auto equal = [&](std::size_t at) {
+      return _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(data + at)), same);
+    };
+    for (; i + kBlock <= n; i += kBlock) {
+      const __m128i all = _mm_and_si128(_mm_and_si128(equal(i), equal(i + 4)),
+                                        _mm_and_si128(equal(i + 8), equal(i + 12)));
+      if (_mm_movemask_epi8(all) != 0xFFFF) break;
+    }
+#else
+    for (; i + kBlock <= n; i += kBlock) {
+      int differs = 0;
+      for (std::size_t k = 0; k < kBlock; ++k) differs |= data[i + k] ^ last;
+      if (differs != 0) break;
+    }
+#endif
+    for (const std::size_t end = std::min(n, i + kBlock); i < end; ++i) {
+      const int v = data[i];
+      if (v == last) continue;
+      last = v;
+      int& slot = cache[static_cast<unsigned>(v) & 63];
+      if (v == 0 || slot == v) continue;
+      slot = v;
+      seen.insert(v);
+    }
+  }
+  return {seen.begin(), seen.end()};
 }
 
 // A fixed-size set of bits: an eighth of the memory of a byte a flag, so the

@@ -4,7 +4,7 @@
 // (what the layering did before), on non-square images with noise, translucent
 // pixels and windows cut by the image's edges, for line widths 1–21; and
 // the outline fill grown in bands of rows on several cores against one
-// growth over the whole map.
+// growth over the whole map; the region ids of a map against LabelMap::labels.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +18,7 @@
 #include "hair25d/layering/boundary_graph.h"
 #include "line_response.h"
 #include "outline_fill.h"
+#include "raster_scan.h"
 
 namespace hair25d::layering {
 namespace {
@@ -264,6 +265,28 @@ TEST(FillBands, PublicFillOnALargeMapEqualsOneGrowth) {
   EXPECT_EQ(pub.line_width, one.line_width);
   EXPECT_EQ(pub.radius, one.radius);
   EXPECT_TRUE(pub.labels == one.labels);
+}
+
+// The region ids the layering reads off the input map (skipping runs of one
+// label, a cache of labels met before) are LabelMap::labels: on strand maps,
+// noise, negative and large labels, more labels than the cache has slots, and
+// maps narrower than a block.
+TEST(DistinctLabels, EqualLabelMapLabels) {
+  std::mt19937 rng(3);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int w = 1 + static_cast<int>(rng() % 90), h = 1 + static_cast<int>(rng() % 70);
+    LabelMap m = strand_map(w, h, 300 + trial, 1 + trial % 4);
+    if (trial % 3 == 1)
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          if (rng() % 5 == 0) m.at(x, y) = static_cast<int>(rng() % 300) - 100;
+    if (trial % 3 == 2) m.at(w - 1, h - 1) = 1 << 30;
+    EXPECT_EQ(detail::distinct_labels(m), m.labels()) << "trial " << trial;
+  }
+  LabelMap aliased(40, 3, 0);  // 5, 69, 133 share a cache slot
+  for (int x = 0; x < 40; ++x) aliased.at(x, x % 3) = std::array{5, 69, 133, 0}[x % 4];
+  EXPECT_EQ(detail::distinct_labels(aliased), (std::vector<int>{5, 69, 133}));
+  EXPECT_TRUE(detail::distinct_labels(LabelMap(17, 5, 0)).empty());
 }
 
 }  // namespace
