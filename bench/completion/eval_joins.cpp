@@ -43,6 +43,8 @@ void score(const AnnotatedCase& c, bool predicted, const completion::Options& op
       if (ch == ' ') ch = '_';
     completion::test::write_join_overlay(std::filesystem::path(overlay) / (file + ".png"), c, r,
                                          name);
+    // The case itself beside its overlay, to look at its regions and pairs.
+    if (name.rfind("seed ", 0) == 0) write_annotated_case(std::filesystem::path(overlay) / file, c);
   }
   const std::vector<double> ious = completion::test::strand_ious(c, r);
   double sum = 0.0;

@@ -104,12 +104,20 @@ BankJoin bank_join(const BankCrossings& ca, const BankCrossings& cb, const Edge&
 namespace hair25d::completion::detail {
 namespace {
 
-// Fewest landing rays (every other outline pixel) each way: a few pixels of
-// a piece that happen to face another through a gap are no cut.
-constexpr int kMinMassRays = 6;
+// Fewest landing rays (every other outline pixel) each way: a pixel or two
+// of a piece that happen to face another through a gap are no cut. 6 before:
+// back hair seen in slivers between strands (and above and below the face)
+// faces its other pieces with 3–5 rays; on generated seeds 101–116 (four
+// shadings) the candidates with 3–5 rays and a colour step <= 10 were all
+// right ones.
+constexpr int kMinMassRays = 3;
 // A piece must reach behind the outline the rays leave from at least this
-// share of the width they cross (a strand end lying on the back hair is thin).
-constexpr double kMinMassDepthRatio = 0.5;
+// share of the width they cross (a strand end lying on the back hair is
+// thin). 0.5 before: right candidates measured 0.30–2.8 (a third of them
+// below 0.5: back hair between the face and a wide side lock), wrong ones
+// with a colour step <= 10 mostly 0.02–0.26 (strand tips on the face), two
+// 0.32 and 0.43 (a bang lying on the face, in the back hair's colour).
+constexpr double kMinMassDepthRatio = 0.3;
 // Largest median RGB step across the cut. Pieces of one strand meet the
 // occluder in the same colour (flat, cel band, gradient and tone continue
 // under a strand); chosen on generated seeds 101-116 of the four shadings,
