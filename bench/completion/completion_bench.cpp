@@ -11,12 +11,14 @@ namespace {
 
 using namespace hair25d;
 
-void run(benchmark::State& state, bool inpaint) {
+// far_candidates < 0: the default.
+void run(benchmark::State& state, bool inpaint, bool background = true, int far_candidates = -1) {
   const AnnotatedCase& c = bench::generated_case(static_cast<int>(state.range(0)));
   const completion::Input in = bench::completion_input(c);
   completion::Options o;
   o.inpaint_strands = inpaint;
-  o.inpaint_background = inpaint;
+  o.inpaint_background = inpaint && background;
+  if (far_candidates >= 0) o.inpaint.far_candidates = far_candidates;
   completion::Result r;
   for (auto _ : state) {
     r = completion::complete_strands(in, o);
@@ -32,8 +34,15 @@ void run(benchmark::State& state, bool inpaint) {
 void BM_CompletionWithoutInpainting(benchmark::State& state) { run(state, false); }
 void BM_CompletionWithInpainting(benchmark::State& state) { run(state, true); }
 
+// Strands inpainted, no background: the search of targets far from every
+// source patch cut to the nearest far_candidates (default) or exact (0).
+void BM_CompletionStrandInpainting(benchmark::State& state) { run(state, true, false); }
+void BM_CompletionStrandInpaintingExactFar(benchmark::State& state) { run(state, true, false, 0); }
+
 BENCHMARK(BM_CompletionWithoutInpainting)->Apply(bench::strand_counts)->UseRealTime();
 BENCHMARK(BM_CompletionWithInpainting)->Apply(bench::strand_counts)->UseRealTime();
+BENCHMARK(BM_CompletionStrandInpainting)->Apply(bench::strand_counts)->UseRealTime();
+BENCHMARK(BM_CompletionStrandInpaintingExactFar)->Apply(bench::strand_counts)->UseRealTime();
 
 }  // namespace
 
