@@ -70,13 +70,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   ctx.labels =
       assign_outline_pixels(image, *input.regions, options.outline_reach, options.dark_luma);
   report(progress, "completion", 0.05, "regions");
-  // The background fill needs only the labels (never changed below): it runs
-  // beside the matching, growing and strands.
-  std::future<Image> background;
-  if (options.inpaint_background && options.threads > 1)
-    background = std::async(std::launch::async, [&] {
-      return detail::fill_background(ctx, &result.background_inpaint);
-    });
   detail::describe_regions(ctx);
 
   UnionFind strands;
@@ -121,6 +114,14 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     result.head_center_estimated = true;
   }
   result.head_center = ctx.head;
+  // The background fill needs the labels, the regions and the head centre
+  // (the face and the head behind the hair), never changed below: it runs
+  // beside the matching, growing and strands.
+  std::future<Image> background;
+  if (options.inpaint_background && options.threads > 1)
+    background = std::async(std::launch::async, [&] {
+      return detail::fill_background(ctx, &result.background_inpaint);
+    });
 
   // Single-occluder edges ("atoms"), and merged runs of them as further
   // candidates for case 1 (a strand may pass under two neighbouring occluders).
