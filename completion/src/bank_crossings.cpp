@@ -62,10 +62,13 @@ BankCrossings cross_occluders(const Context& ctx, const Edge& edge) {
       inside += 1.0;
     out.depth += inside;
     std::set<int> crossed;
+    double unlabelled = 0.0;  // length of the current run of label 0
     for (double s = 1.0; s <= reach; s += 0.7) {
       const Vec2 x = pts[i] + s * normal;
       const int l = ctx.label(x);
       if (l == edge.region && s < 3.0) continue;  // the outline pixels next to the start
+      if (l == 0 && !crossed.empty() && (unlabelled += 0.7) <= kMaxOutlineGap) continue;
+      unlabelled = 0.0;
       if (l == 0 || l == edge.region) break;
       if (ctx.is_above(l, edge.region)) {
         crossed.insert(l);
@@ -188,10 +191,13 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
       // need not touch both pieces, so no relation need say they lie above
       // both.
       int first = 0, last = 0;
+      double unlabelled = 0.0;  // length of the current run of label 0
       for (double s = 1.0; s <= reach; s += 0.7) {
         const Vec2 x = p + s * normal;
         const int l = ctx.label(x);
         if (l == id && s < 3.0) continue;
+        if (l == 0 && first != 0 && (unlabelled += 0.7) <= kMaxOutlineGap) continue;
+        unlabelled = 0.0;
         if (l == id || l == 0) break;
         if (first == 0) {
           if (!ctx.is_above(l, id)) break;

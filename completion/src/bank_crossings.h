@@ -14,6 +14,11 @@ namespace hair25d::completion::detail {
 // A join is considered across the banks of an occluder when at least this
 // share of the rays from each edge lands next to the other edge.
 inline constexpr double kMinBankShare = 0.5;
+// A ray across the occluders goes on through this many pixels of label 0
+// between two hair regions: the light, anti-aliased rim of a drawn line that
+// the outline assignment leaves unlabelled (only dark pixels are assigned).
+// Longer runs are the face or the paper, where a ray stops.
+inline constexpr double kMaxOutlineGap = 3.0;
 // Its cost: base + weight × (1 − share) (+ the colour term of strand joins),
 // so that a clear bank join (share ≈ 1) ranks with good strand joins.
 inline constexpr double kBankBaseCost = 0.5;
