@@ -82,6 +82,14 @@ class Filler {
         }
       if (any || r_ == 1) break;
     }
+    // Integral image of valid centres: a widened window holding none is
+    // skipped without visiting its rows.
+    valid_integral_.assign(integral_.size(), 0);
+    for (int y = 0; y < h_; ++y)
+      for (int x = 0; x < w_; ++x)
+        valid_integral_[idx1(x + 1, y + 1)] = valid_[idx(x, y)] + valid_integral_[idx1(x, y + 1)] +
+                                              valid_integral_[idx1(x + 1, y)] -
+                                              valid_integral_[idx1(x, y)];
     row_start_.assign(h_ + 1, 0);
     for (int y = 0; y < h_; ++y) {
       for (int x = 0; x < w_; ++x)
@@ -147,6 +155,10 @@ class Filler {
     return ink_integral_[idx1(x1, y1)] - ink_integral_[idx1(x0, y1)] - ink_integral_[idx1(x1, y0)] +
            ink_integral_[idx1(x0, y0)];
   }
+  int valid_sum(int x0, int y0, int x1, int y1) const {
+    return valid_integral_[idx1(x1, y1)] - valid_integral_[idx1(x0, y1)] -
+           valid_integral_[idx1(x1, y0)] + valid_integral_[idx1(x0, y0)];
+  }
   int source_sum(int x0, int y0, int x1, int y1) const {
     return integral_[idx1(x1, y1)] - integral_[idx1(x0, y1)] - integral_[idx1(x1, y0)] +
            integral_[idx1(x0, y0)];
@@ -159,19 +171,23 @@ class Filler {
     return is_known(x - 1, y) || is_known(x + 1, y) || is_known(x, y - 1) || is_known(x, y + 1);
   }
 
+  // C(p): the mean confidence over the patch's pixels inside the image
+  // (unknown pixels have confidence 0), summed in raster order.
+  float patch_confidence(int x, int y) const {
+    const int r = r_;
+    const int x0 = std::max(0, x - r), x1 = std::min(w_ - 1, x + r);
+    const int y0 = std::max(0, y - r), y1 = std::min(h_ - 1, y + r);
+    float c = 0;
+    for (int py = y0; py <= y1; ++py) {
+      const float* row = confidence_.data() + idx(0, py);
+      for (int px = x0; px <= x1; ++px) c += row[px];
+    }
+    return c / std::max(1, (x1 - x0 + 1) * (y1 - y0 + 1));
+  }
+
   // P(p) = C(p) D(p) (Criminisi et al. 2004, §3).
   void push(int x, int y) {
-    const int r = r_;
-    float c = 0;
-    int count = 0;
-    for (int dy = -r; dy <= r; ++dy)
-      for (int dx = -r; dx <= r; ++dx) {
-        const int px = x + dx, py = y + dy;
-        if (px < 0 || py < 0 || px >= w_ || py >= h_) continue;
-        ++count;
-        if (known_[idx(px, py)]) c += confidence_[idx(px, py)];
-      }
-    c /= std::max(1, count);
+    float c = patch_confidence(x, y);
     // Front normal from the known indicator, isophote from known grey levels.
     auto k = [&](int px, int py) { return is_known(px, py) ? 1.0f : 0.0f; };
     float nx = k(x + 1, y) - k(x - 1, y), ny = k(x, y + 1) - k(x, y - 1);
@@ -304,13 +320,15 @@ class Filler {
     for (int radius = o_.search_radius;; radius *= 2) {
       const int y0 = std::max(r, y - radius), y1 = std::min(h_ - 1 - r, y + radius);
       const int x0 = std::max(r, x - radius), x1 = std::min(w_ - 1 - r, x + radius);
+      // A window without any valid centre has nothing to visit.
+      const bool empty = x0 > x1 || y0 > y1 || valid_sum(x0, y0, x1 + 1, y1 + 1) == 0;
       if (radius == o_.search_radius) {
         // The window's grid (every step-th pixel from its clamped corner)
         // visited nearest first from the precomputed order of its phase.
         const int phase_x = ((x0 - x) % step + step) % step;
         const int phase_y = ((y0 - y) % step + step) % step;
         for (const Offset& off : nearest_[phase_y * step + phase_x]) {
-          if (off.distance_term > best) break;  // every later one is farther
+          if (empty || off.distance_term > best) break;  // every later one is farther
           const int cx = x + off.dx, cy = y + off.dy;
           if (cx < x0 || cx > x1 || cy < y0 || cy > y1) continue;
           consider(cx, cy, off.distance_term);
@@ -322,8 +340,11 @@ class Filler {
           return static_cast<long>(o_.distance_weight * (dx * dx + dy * dy));
         };
         if (o_.far_candidates > 0) {
-          far_search(x, y, x0, x1, y0, y1, term, best, consider);
-        } else {
+          // The coherent candidates do not depend on the window: the first
+          // widened window tries them (they would fail alike in wider ones).
+          if (radius == 2 * o_.search_radius) coherent_search(x, y, term, consider);
+          if (!empty) far_search(x, y, x0, x1, y0, y1, term, best, consider);
+        } else if (!empty) {
           // Exact: only the valid centres of each row, rows nearest first
           // and each row outward from x, so that once a match is found
           // whatever lies farther than its cost is never visited.
@@ -383,17 +404,11 @@ class Filler {
     int cy, pos, end, dir;
   };
 
-  // The search of a widened window, made cheap: first the coherent
-  // candidates, the sources that continue the copies already made around the
-  // target (Ashikhmin 2001), then the window's valid centres nearest first,
-  // at most far_candidates of them (the lowest cost of a farther one is its
-  // distance term alone, so the search also stops once that exceeds the
-  // best). Exact search over the window would visit every valid centre:
-  // thousands per target deep in a large hole.
+  // The coherent candidates of a target far from every source patch: the
+  // sources that continue the copies already made around it (Ashikhmin 2001).
   template <typename Term, typename Consider>
-  void far_search(int x, int y, int x0, int x1, int y0, int y1, const Term& term, const long& best,
-                  const Consider& consider) const {
-    const int r = r_, step = o_.search_step;
+  void coherent_search(int x, int y, const Term& term, const Consider& consider) const {
+    const int r = r_;
     coherent_.clear();
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx) {
@@ -407,7 +422,18 @@ class Filler {
           coherent_.push_back(c);
       }
     for (int c : coherent_) consider(c % w_, c / w_, term(c % w_ - x, c / w_ - y));
+  }
 
+  // The search of a widened window, made cheap: after the coherent
+  // candidates, the window's valid centres nearest first, at most
+  // far_candidates of them (the lowest cost of a farther one is its distance
+  // term alone, so the search also stops once that exceeds the best). Exact
+  // search over the window would visit every valid centre: thousands per
+  // target deep in a large hole.
+  template <typename Term, typename Consider>
+  void far_search(int x, int y, int x0, int x1, int y0, int y1, const Term& term, const long& best,
+                  const Consider& consider) const {
+    const int step = o_.search_step;
     // Each grid row of the window holds two cursors into its valid centres,
     // one going right from x and one going left; a heap yields the nearest.
     // Rows join the heap only once they could hold the nearest candidate.
@@ -557,8 +583,9 @@ class Filler {
   std::vector<float> confidence_;
   std::vector<int> integral_;
   std::vector<std::uint8_t> valid_;
-  std::vector<int> valid_x_;    // x of every valid centre, row by row
-  std::vector<int> row_start_;  // row y's centres: valid_x_[row_start_[y], row_start_[y + 1])
+  std::vector<int> valid_integral_;  // integral image of valid_
+  std::vector<int> valid_x_;         // x of every valid centre, row by row
+  std::vector<int> row_start_;       // row y's centres: valid_x_[row_start_[y], row_start_[y + 1])
   std::vector<float> grey_;
   std::vector<std::uint8_t> source_bytes_;
   std::vector<std::uint8_t> ink_;  // cel mode only
@@ -570,7 +597,7 @@ class Filler {
   std::vector<std::vector<Offset>> nearest_;  // make_offsets()
   mutable Target target_;                     // best_source's scratch
   std::vector<int> from_;              // the source pixel each filled pixel was copied from, or -1
-  mutable std::vector<int> coherent_;  // far_search's scratch
+  mutable std::vector<int> coherent_;  // coherent_search's scratch
   mutable std::vector<Cursor> cursors_;
 };
 
