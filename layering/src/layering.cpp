@@ -101,7 +101,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
 
   Result out;
   // Grey levels are made on a second core meanwhile (line_response.h).
-  detail::LineResponse lines(image);
+  detail::LineResponse lines(image, &regions);
   OutlineFill fill;
   if (options.fill_outlines) {
     fill = fill_outlines(regions);

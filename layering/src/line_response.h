@@ -27,6 +27,11 @@ struct BoundaryLine {
   double colour_difference = 0.0;
 };
 
+// Grey levels of [x0, x0 + w) × [y0, y0 + h) of `image` into `out` (w × h,
+// row-major): 0.299 r + 0.587 g + 0.114 b summed in double, as float;
+// translucent pixels blended over white paper. What LineResponse measures on.
+void grey_levels(const Image& image, int x0, int y0, int w, int h, float* out);
+
 class LineResponse {
  public:
   // Grey levels of `image` smoothed at a scale from the line width, kept for
@@ -38,8 +43,11 @@ class LineResponse {
   // The same in two steps: the constructor starts converting `image` to grey
   // levels on a second core (the caller meanwhile prepares the boundaries),
   // smooth() then smooths the window once the line width is known. Nothing
-  // may be measured before smooth().
-  explicit LineResponse(const Image& image);
+  // may be measured before smooth(). With `regions` (the map whose filled
+  // boundaries will be measured; it need not outlive the constructor) only
+  // the part of the image near its non-zero labels is converted at first;
+  // the rest is converted when a window reaches it.
+  explicit LineResponse(const Image& image, const LabelMap* regions = nullptr);
   void smooth(double line_width, int x0, int y0, int x1, int y1);
   // Optional, between the two: starts blurring, on a second core, the box of
   // the non-zero labels of `filled` (the map whose boundaries will be
@@ -98,6 +106,10 @@ class LineResponse {
   // holds a translucent pixel; made on a second core (converting_).
   std::unique_ptr<float[]> raw_;
   std::vector<std::uint8_t> image_translucent_;
+  // The part of raw_ converted: [raw_x0_, raw_x1_) × [raw_y0_, raw_y1_).
+  int raw_x0_ = 0, raw_y0_ = 0, raw_x1_ = 0, raw_y1_ = 0;
+  // Converts the whole image unless raw_ holds [x0, x1) × [y0, y1) (clipped).
+  void ensure_raw(int x0, int y0, int x1, int y1);
   std::future<void> converting_;
   // The early blur (prepare): its window and line width, and its result.
   struct EarlyWindow {

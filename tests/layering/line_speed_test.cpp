@@ -4,7 +4,9 @@
 // (what the layering did before), on non-square images with noise, translucent
 // pixels and windows cut by the image's edges, for line widths 1–21; and
 // the outline fill grown in bands of rows on several cores against one
-// growth over the whole map; the region ids of a map against LabelMap::labels.
+// growth over the whole map; the region ids of a map against LabelMap::labels;
+// grey levels converted four pixels at a time against the formula, and
+// converted only near the regions against the whole image.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "boundary_box.h"
@@ -287,6 +290,79 @@ TEST(DistinctLabels, EqualLabelMapLabels) {
   for (int x = 0; x < 40; ++x) aliased.at(x, x % 3) = std::array{5, 69, 133, 0}[x % 4];
   EXPECT_EQ(detail::distinct_labels(aliased), (std::vector<int>{5, 69, 133}));
   EXPECT_TRUE(detail::distinct_labels(LabelMap(17, 5, 0)).empty());
+}
+
+// Four pixels at a time (SSE2) against the formula pixel by pixel, to the
+// bit: odd widths (the tail), windows, translucent rows.
+TEST(GreyLevels, EqualTheFormula) {
+  for (const auto& [w, h, translucent] :
+       {std::tuple{157, 93, false}, std::tuple{3, 5, true}, std::tuple{120, 75, true}}) {
+    Image image = test_image(w, h, 9, translucent);
+    std::mt19937 rng(w);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        Rgba& p = image.at(x, y);
+        p.r = static_cast<std::uint8_t>(rng()), p.g = static_cast<std::uint8_t>(rng());
+        p.b = static_cast<std::uint8_t>(rng());
+      }
+    for (const auto& [x0, y0, ww, hh] :
+         {std::array{0, 0, w, h}, std::array{1, 2, w - 1, h - 2}, std::array{w / 3, h / 2, 2, 1}}) {
+      if (ww <= 0 || hh <= 0) continue;
+      std::vector<float> got(static_cast<std::size_t>(ww) * hh);
+      detail::grey_levels(image, x0, y0, ww, hh, got.data());
+      int differ = 0;
+      for (int y = 0; y < hh; ++y)
+        for (int x = 0; x < ww; ++x) {
+          const Rgba& p = image.at(x0 + x, y0 + y);
+          const double a = p.a / 255.0, lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
+          const float want = static_cast<float>(p.a == 255 ? lum : a * lum + (1.0 - a) * 255.0);
+          differ += got[static_cast<std::size_t>(y) * ww + x] != want;
+        }
+      EXPECT_EQ(differ, 0) << w << "x" << h << " window at " << x0 << "," << y0;
+    }
+  }
+}
+
+// Converting grey levels only near the regions (and the rest when a window
+// reaches it: wide lines, a window far from them) measures to the bit like
+// converting the whole image, with and without the early blur.
+TEST(GreyLevels, ConvertedNearTheRegionsMeasureLikeTheWholeImage) {
+  const Image image = test_image(420, 333, 6, true);
+  LabelMap labels(image.width(), image.height(), 0);
+  for (int y = 120; y < 210; ++y)
+    for (int x = 150 + y / 9; x < 260; ++x) labels.at(x, y) = 1 + (x / 31 + y / 27) % 4;
+  const BoundaryGraph graph = build_boundary_graph(labels);
+  const auto [bx0, by0, bx1, by1] = test::inner_boundary_box(graph, image.width(), image.height());
+  for (const double lw : {2.0, 4.6, 15.0}) {
+    const int m = LineResponse::window_margin(lw);
+    for (const int far : {0, 1}) {
+      // far: a window reaching the image's corner, beyond what was converted.
+      const int x0 = far ? 0 : bx0 - m, y0 = far ? 0 : by0 - m;
+      LineResponse whole(image);
+      whole.prepare(lw, labels);
+      whole.smooth(lw, x0, y0, bx1 + m, by1 + m);
+      LineResponse near(image, &labels);
+      near.prepare(lw, labels);
+      near.smooth(lw, x0, y0, bx1 + m, by1 + m);
+      LineResponse plain(image, &labels);
+      plain.smooth(lw, x0, y0, bx1 + m, by1 + m);
+      EXPECT_EQ(whole.noise_sigma(), near.noise_sigma());
+      EXPECT_EQ(whole.noise_sigma(), plain.noise_sigma());
+      int compared = 0;
+      for (const Boundary& b : graph.boundaries) {
+        if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+        const auto want = whole.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+        for (const LineResponse* got : {&near, &plain}) {
+          const auto m2 = got->measure(b.points, 1.5 * lw, labels, b.left, b.right);
+          EXPECT_EQ(want.contrast, m2.contrast) << "line width " << lw << ", far " << far;
+          EXPECT_EQ(want.contrast_low, m2.contrast_low) << "line width " << lw;
+          EXPECT_EQ(want.colour_difference, m2.colour_difference) << "line width " << lw;
+        }
+        compared += want.contrast != 0.0;
+      }
+      EXPECT_GT(compared, 5) << "line width " << lw;
+    }
+  }
 }
 
 }  // namespace
