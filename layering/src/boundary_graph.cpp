@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <string>
 
@@ -32,6 +33,10 @@ class CrackGrid {
   }
   // The four pixels around corner (x, y): top-left, top-right, bottom-left, bottom-right.
   std::array<int, 4> around(int x, int y) const {
+    if (x > 0 && y > 0 && x < w_ && y < h_) {  // inside: no bounds to check
+      const int* p = labels_.data() + static_cast<std::size_t>(y - 1) * w_ + (x - 1);
+      return {p[0], p[1], p[w_], p[w_ + 1]};
+    }
     return {label(x - 1, y - 1), label(x, y - 1), label(x - 1, y), label(x, y)};
   }
   // Whether the crack edge leaving corner (x, y) in direction d exists.
@@ -109,12 +114,10 @@ bool is_junction(const std::array<int, 4>& q) {
 // labels meeting diagonally) the pixels of the smaller label are joined.
 int continue_direction(const std::array<int, 4>& q, int arrived) {
   const int back = opposite(arrived);
-  int degree = 0;
-  for (int d = 0; d < 4; ++d) degree += CrackGrid::has_edge(q, d) ? 1 : 0;
-  if (degree == 2) {
-    for (int d = 0; d < 4; ++d)
-      if (d != back && CrackGrid::has_edge(q, d)) return d;
-  }
+  // Bit d: the edge in direction d exists (has_edge).
+  const unsigned edges = (q[1] != q[3] ? 1u : 0u) | (q[2] != q[3] ? 2u : 0u) |
+                         (q[0] != q[2] ? 4u : 0u) | (q[0] != q[1] ? 8u : 0u);
+  if (std::popcount(edges) == 2) return std::countr_zero(edges & ~(1u << back));
   // Saddle: q = {A, B, B, A}. Joining the A diagonal (top-left with
   // bottom-right) leaves top-right enclosed by up+right and bottom-left by
   // down+left; joining B pairs up+left and right+down.
@@ -186,11 +189,15 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
 
   Bits visited(grid.edge_count());
   const std::size_t edge_limit = grid.edge_count();
+  // A chain's corners are gathered here, then copied into its boundary at
+  // their final size (growing each boundary's own vector cost more).
+  Polyline chain;
   auto trace = [&](int x0, int y0, int d0) {
     Boundary b;
     grid.sides(x0, y0, d0, &b.left, &b.right);
     b.start = junction_at(x0, y0);
-    b.points.emplace_back(x0, y0);
+    chain.clear();
+    chain.emplace_back(x0, y0);
     int x = x0, y = y0, d = d0;
     for (;;) {
       visited.set(grid.edge_index(x, y, d));
@@ -198,7 +205,7 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
       y += kDy[d];
       const int j = junction_at(x, y);
       if (j >= 0) {
-        b.points.emplace_back(x, y);
+        chain.emplace_back(x, y);
         b.end = j;
         break;
       }
@@ -207,12 +214,13 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
       // Each edge is walked once, so a chain is never longer than the grid
       // has edges: a guard that turns a broken invariant into an error
       // instead of a vector growing until memory runs out.
-      if (b.points.size() > edge_limit)
+      if (chain.size() > edge_limit)
         throw Error("layering: boundary trace from corner (" + std::to_string(x0) + ", " +
                     std::to_string(y0) + ") exceeded " + std::to_string(edge_limit) +
                     " edges without closing; the crack-grid walk is inconsistent");
-      b.points.emplace_back(x, y);
+      chain.emplace_back(x, y);
     }
+    b.points.assign(chain.begin(), chain.end());
     const int id = static_cast<int>(graph.boundaries.size());
     if (b.start >= 0) {
       graph.junctions[b.start].boundaries.push_back(id);
