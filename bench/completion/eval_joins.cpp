@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <string>
 
 #include "../../tests/completion/annotated_eval.h"
@@ -24,6 +25,31 @@ struct Total {
   int strands = 0;
 };
 
+const char* relation_name(Relation r) {
+  return r == Relation::kAbove ? "above" : r == Relation::kBelow ? "below" : "equal";
+}
+
+// The predicted relations that disagree with the annotation (or that it
+// does not judge), to see which of layering's errors a lost join follows.
+void print_relation_errors(const AnnotatedCase& c, const std::vector<RegionRelation>& predicted,
+                           const std::string& name) {
+  std::map<std::pair<int, int>, Relation> truth;
+  auto flip = [](Relation r) {
+    return r == Relation::kAbove ? Relation::kBelow : r == Relation::kBelow ? Relation::kAbove : r;
+  };
+  for (const AnnotatedPair& p : c.pairs) {
+    truth[{p.a, p.b}] = p.relation;
+    truth[{p.b, p.a}] = flip(p.relation);
+  }
+  for (const RegionRelation& r : predicted) {
+    auto it = truth.find({r.a, r.b});
+    if (it != truth.end() && it->second == r.relation) continue;
+    std::printf("%s: relation %d %s %d (score %.2f), annotated %s\n", name.c_str(), r.a,
+                relation_name(r.relation), r.b, r.score,
+                it == truth.end() ? "not judged" : relation_name(it->second));
+  }
+}
+
 void score(const AnnotatedCase& c, bool predicted, const completion::Options& options,
            const std::string& name, const std::string& overlay, Total* total) {
   completion::Input in = completion::test::input_from_case(c);
@@ -31,6 +57,7 @@ void score(const AnnotatedCase& c, bool predicted, const completion::Options& op
     in.relations.clear();  // a failed layering leaves no relations, not the annotation's
     try {
       in.relations = layering::layer_regions(c.image, c.regions).relations;
+      if (!overlay.empty()) print_relation_errors(c, in.relations, name);
     } catch (const std::exception& e) {
       std::printf("%s: layering failed (%s); no relations\n", name.c_str(), e.what());
     }
@@ -80,7 +107,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"flat", "two-tone", "gradient", "screentone", "mixed"}));
   app.add_option("--overlay", overlay,
                  "Folder for one PNG a case: joins right (green) and wrong (red), the "
-                 "annotation's strands missed (thick yellow); wrong and missed pairs printed");
+                 "annotation's strands missed (thick yellow); wrong and missed pairs printed, "
+                 "and with --relations predicted the relations that disagree with the annotation");
   completion::Options options;
   options.inpaint_strands = false;  // colours are not scored
   options.inpaint_background = false;
