@@ -305,26 +305,42 @@ void LineResponse::prepare(double line_width, const LabelMap& filled) {
     // The blur reads a kernel's radius beyond the box.
     const int kr = kernel_radius(grey_sigma(lw));
     ensure_raw(x0 - kr, y0 - kr, x1 + kr, y1 + kr);
-    auto grey =
+    early_grey_ =
         std::make_unique_for_overwrite<float[]>(static_cast<std::size_t>(x1 - x0) * (y1 - y0));
-    try {
-      const cv::Mat raw(image.height(), image.width(), CV_32F, raw_.get());
-      cv::Mat smooth(y1 - y0, x1 - x0, CV_32F, grey.get());
-      const double sigma = grey_sigma(lw);
-      cv::GaussianBlur(raw(cv::Rect(x0, y0, x1 - x0, y1 - y0)), smooth, cv::Size(0, 0), sigma,
-                       sigma, cv::BORDER_REPLICATE);
-    } catch (const cv::Exception& e) {
-      throw Error(std::string("layering: OpenCV failed while smoothing grey levels: ") + e.what());
-    }
     early_ = {x0, y0, x1 - x0, y1 - y0, lw};
-    early_grey_ = std::move(grey);
+    early_ready_.store(true, std::memory_order_release);
+    blur_early_bands();
   };
   smoothing_ = std::async(std::launch::async | std::launch::deferred, blur);
 }
 
+void LineResponse::blur_early_bands() {
+  // A band's blur reads the rows around it from the image, as the blur of
+  // the whole box does inside it: the values are those of one call.
+  const Image& image = *image_;
+  const cv::Mat raw(image.height(), image.width(), CV_32F, raw_.get());
+  cv::Mat smooth(early_.h, early_.w, CV_32F, early_grey_.get());
+  const double sigma = grey_sigma(early_.line_width);
+  for (int b = next_early_band_++; b < kEarlyBands; b = next_early_band_++) {
+    const int r0 = early_.h * b / kEarlyBands, r1 = early_.h * (b + 1) / kEarlyBands;
+    if (r1 <= r0) continue;
+    try {
+      cv::Mat dst = smooth.rowRange(r0, r1);
+      cv::GaussianBlur(raw(cv::Rect(early_.x0, early_.y0 + r0, early_.w, r1 - r0)), dst,
+                       cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
+    } catch (const cv::Exception& e) {
+      throw Error(std::string("layering: OpenCV failed while smoothing grey levels: ") + e.what());
+    }
+  }
+}
+
 void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
-  // Rethrow what the conversion or the early blur threw.
-  if (smoothing_.valid()) smoothing_.get();
+  // Blur the early bands still left here, then rethrow what the conversion
+  // or the early blur threw.
+  if (smoothing_.valid()) {
+    if (early_ready_.load(std::memory_order_acquire)) blur_early_bands();
+    smoothing_.get();
+  }
   if (converting_.valid()) converting_.get();
   const Image& image = *image_;
   line_width_ = std::max(1.0, line_width);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <future>
 #include <memory>
@@ -118,6 +119,13 @@ class LineResponse {
   };
   EarlyWindow early_;
   std::unique_ptr<float[]> early_grey_;
+  // The early blur runs in bands of rows; the second core takes them one by
+  // one, and smooth() takes those still left when it is called. early_ and
+  // early_grey_ are set before early_ready_ (then bands may be taken).
+  static constexpr int kEarlyBands = 4;
+  std::atomic<int> next_early_band_{0};
+  std::atomic<bool> early_ready_{false};
+  void blur_early_bands();
   std::future<void> smoothing_;
   std::shared_future<double> noise_;  // noise_sigma() once the early blur was used
   // w_ × h_, row-major.
