@@ -90,10 +90,12 @@ TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
 // flat and cel-shaded drawings, four seeds each. Floors at the measured
 // level (docs/completion.md); the targets (precision 0.95, recall 0.85) are
 // not met on these crowded drawings.
-// With joins across the face the generated drawings lose precision (0.786
-// -> 0.694, recall 0.493 -> 0.507): their side and under strands lie along
-// the face, above nothing, in the back hair's colour, and are joined to it;
-// both are checked.
+// With joins across the face the generated drawings lose precision (0.773
+// -> 0.680, recall 0.507 both): their side and under strands lie along the
+// face, above nothing, in the back hair's colour, and are joined to it;
+// both are checked. (0.680 is 34 of 50 pairs: one more wrong pair than
+// before the mass joins' rays crossed light line rims — two tails lying on
+// the paper, above no region, pass for back hair; see docs/completion.md.)
 TEST(GeneratedCases, JoinsMatchTheGeneratedStrands) {
   for (const bool face_joins : {false, true}) {
     test::PairScore total;
@@ -123,8 +125,43 @@ TEST(GeneratedCases, JoinsMatchTheGeneratedStrands) {
         face_joins ? "on" : "off", total.predicted, total.truth, total.correct, total.precision(),
         total.recall());
     EXPECT_GE(total.precision(), face_joins ? 0.68 : 0.75);
-    EXPECT_GE(total.recall(), 0.48);
+    EXPECT_GE(total.recall(), 0.49);
   }
+}
+
+// Back hair cut into pieces by strands and by the face (mass joins across
+// fans of strands, bank joins, face joins): flat and gradient drawings,
+// seeds 101-104, relations from the generator's pairs. Measured 0.953 /
+// 0.665 (56 + 65 right pairs of 91 + 91, 3 + 3 wrong); with the mass joins'
+// old rules (6 rays, 0.5 widths deep, rays stopped by any unlabelled pixel)
+// 0.926 / 0.412, so the recall floor fails if the back hair's slivers stay
+// apart again.
+TEST(GeneratedCases, BackHairPiecesAreJoined) {
+  test::PairScore total;
+  for (generator::Shading shading : {generator::Shading::kFlat, generator::Shading::kGradient})
+    for (std::uint64_t seed = 101; seed <= 104; ++seed) {
+      generator::Options g;
+      g.width = 800;
+      g.height = 640;
+      g.strand_count = 20;
+      g.seed = seed;
+      g.shading = shading;
+      g.strand_masks = false;
+      const AnnotatedCase c = generator::generate_case(g);
+      Options o;
+      o.inpaint_strands = false;
+      o.inpaint_background = false;
+      const test::PairScore s = test::score_pairs(c, complete_strands(test::input_from_case(c), o));
+      total.predicted += s.predicted;
+      total.truth += s.truth;
+      total.correct += s.correct;
+    }
+  std::printf(
+      "generated (flat and gradient, seeds 101-104): pairs predicted %d, true %d, correct %d: "
+      "precision %.3f recall %.3f\n",
+      total.predicted, total.truth, total.correct, total.precision(), total.recall());
+  EXPECT_GE(total.precision(), 0.9);
+  EXPECT_GE(total.recall(), 0.6);
 }
 
 }  // namespace

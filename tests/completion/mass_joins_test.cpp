@@ -85,6 +85,37 @@ TEST(MassJoins, BackHairUnderAFanOfStrandsIsJoinedAcrossIt) {
   }
 }
 
+// A light stripe of label 0 (luma >= dark_luma, so the outline assignment
+// leaves it unlabelled: the anti-aliased rim of a drawn line) `width` px
+// wide down the fan, between strands 4 and 5.
+void light_rim(Drawing& d, int width) {
+  for (int y = 0; y < d.image.height(); ++y)
+    for (int x = 170; x < 170 + width; ++x) {
+      if (d.regions.at(x, y) == 0 && d.image.at(x, y).r > 100) continue;  // paper
+      d.image.at(x, y) = Rgba{190, 185, 180, 255};
+      d.regions.at(x, y) = 0;
+    }
+}
+
+TEST(MassJoins, RaysCrossALightLineRimBetweenTheStrands) {
+  Drawing d = back_hair_under_fan(kBack);
+  light_rim(d, 2);
+  const Result r = run(d);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1, 2}));
+}
+
+TEST(MassJoins, RaysStopAtAWideUnlabelledGap) {
+  // 8 px of unlabelled light pixels: the paper or the face, not a line's rim.
+  Drawing d = back_hair_under_fan(kBack);
+  light_rim(d, 8);
+  const Result r = run(d);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1}));
+}
+
 TEST(MassJoins, PiecesOfAnotherShadeAreNotJoined) {
   // 24 levels darker a channel: a neighbouring lock, not the same piece.
   const Drawing d = back_hair_under_fan(Rgba{96, 56, 26, 255});
