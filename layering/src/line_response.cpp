@@ -234,25 +234,25 @@ int LineResponse::window_margin(double line_width) {
 LineResponse::LineResponse(const Image& image, const LabelMap* regions) : image_(&image) {
   const int w = image.width(), h = image.height();
   raw_ = std::make_unique_for_overwrite<float[]>(static_cast<std::size_t>(w) * h);
-  // Grey levels are needed in the window of the filled boundaries and a
-  // kernel's reach around it: near the regions, within the outline fill's
-  // reach and the window's margin at the line widths of most drawings
-  // (wider lines, or no regions, convert the rest when a window needs it).
-  int x0 = 0, y0 = 0, x1 = w, y1 = h;
-  int bx0, by0, bx1, by1;
-  if (regions && regions->width() == w && regions->height() == h &&
-      detail::label_box(*regions, &bx0, &by0, &bx1, &by1)) {
-    constexpr int kNear = 56;  // outline fill 7 + margin 28 + kernel 6 at 4.6 px lines, and more
-    x0 = std::max(0, bx0 - kNear), y0 = std::max(0, by0 - kNear);
-    x1 = std::min(w, bx1 + 1 + kNear), y1 = std::min(h, by1 + 1 + kNear);
-  }
   // The grey levels need nothing but the image: a second core converts them
   // while the caller fills outlines and traces boundaries. It writes only
   // raw_, its box and image_translucent_, which nothing reads before
   // prepare()'s blur or smooth() waits.
-  auto convert = [this, x0, y0, x1, y1] {
+  auto convert = [this, regions, w, h] {
+    // Grey levels are needed in the window of the filled boundaries and a
+    // kernel's reach around it: near the regions, within the outline fill's
+    // reach and the window's margin at the line widths of most drawings
+    // (wider lines, or no regions, convert the rest when a window needs it).
+    int x0 = 0, y0 = 0, x1 = w, y1 = h;
+    int bx0, by0, bx1, by1;
+    if (regions && regions->width() == w && regions->height() == h &&
+        detail::label_box(*regions, &bx0, &by0, &bx1, &by1)) {
+      constexpr int kNear = 56;  // outline fill 7 + margin 28 + kernel 6 at 4.6 px lines, and more
+      x0 = std::max(0, bx0 - kNear), y0 = std::max(0, by0 - kNear);
+      x1 = std::min(w, bx1 + 1 + kNear), y1 = std::min(h, by1 + 1 + kNear);
+    }
     image_translucent_ = translucent_rows_of(*image_);
-    cv::Mat raw(image_->height(), image_->width(), CV_32F, raw_.get());
+    cv::Mat raw(h, w, CV_32F, raw_.get());
     grey_into(*image_, 0, 0, cv::Rect(x0, y0, x1 - x0, y1 - y0), raw);
     raw_x0_ = x0, raw_y0_ = y0, raw_x1_ = x1, raw_y1_ = y1;
   };

@@ -45,7 +45,7 @@ class LineResponse {
   // levels on a second core (the caller meanwhile prepares the boundaries),
   // smooth() then smooths the window once the line width is known. Nothing
   // may be measured before smooth(). With `regions` (the map whose filled
-  // boundaries will be measured; it need not outlive the constructor) only
+  // boundaries will be measured; unchanged until prepare() or smooth()) only
   // the part of the image near its non-zero labels is converted at first;
   // the rest is converted when a window reaches it.
   explicit LineResponse(const Image& image, const LabelMap* regions = nullptr);

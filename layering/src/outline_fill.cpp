@@ -167,9 +167,9 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   const double reach = options.max_distance > 0 ? options.max_distance : kMaxReach;
   const int limit = static_cast<int>(std::ceil(std::min(reach * kUnit, 60000.0)));
   OutlineFill out;
-  out.labels = labels;
   int bx0, by0, bx1, by1;
   if (!detail::label_box(labels, &bx0, &by0, &bx1, &by1)) {
+    out.labels = labels;
     out.radius = options.max_distance > 0 ? options.max_distance : 0.0;
     out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
     return out;
@@ -187,9 +187,16 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   const int bands = std::clamp(std::min(max_bands, box.h / std::max(1, min_band_rows)), 1, 64);
   std::vector<Growth> growth(bands);
   std::vector<std::vector<int>> meets(bands);
+  // The copy of the map the pixels are written into is one more item, on
+  // whichever core is free (alone on small maps).
+  if (bands == 1) out.labels = labels;
   detail::parallel_for(
-      bands,
+      bands == 1 ? 1 : bands + 1,
       [&](int b) {
+        if (b == bands) {
+          out.labels = labels;
+          return;
+        }
         const int own0 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * b / bands);
         const int own1 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * (b + 1) / bands);
         growth[b] = grow(labels, box, std::max(box.y0, own0 - reach_rows),
