@@ -13,6 +13,7 @@
 
 #include "background_internal.h"
 #include "hair25d/core/error.h"
+#include "head_fill.h"
 #include "inpaint_internal.h"
 #include "raster.h"
 #include "strand_assembly.h"
@@ -188,6 +189,32 @@ BackgroundResult fill_background(const Image& image, const LabelMap& hole,
 }
 
 namespace detail {
+namespace {
+
+// Pixels less opaque than this are the sheet (or its anti-aliased rim), not
+// a dark colour of the drawing.
+constexpr int kOpaque = 128;
+
+// The colour of the drawing's lines next to the hole (the face's outline,
+// the clothes'): the median by luma of the ink just outside it.
+Rgba head_line_colour(const Image& image, const cv::Mat& holes, const Options& o) {
+  cv::Mat around;
+  cv::dilate(holes, around, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(7, 7)));
+  std::vector<Rgba> ink;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const Rgba& c = image.at(x, y);
+      if (around.at<std::uint8_t>(y, x) && !holes.at<std::uint8_t>(y, x) && c.a >= 240 &&
+          luma(c) < o.background.inpaint.ink_luma)
+        ink.push_back(c);
+    }
+  if (ink.empty()) return {40, 30, 30, 255};
+  std::nth_element(ink.begin(), ink.begin() + ink.size() / 2, ink.end(),
+                   [](const Rgba& a, const Rgba& b) { return luma(a) < luma(b); });
+  return ink[ink.size() / 2];
+}
+
+}  // namespace
 
 Image fill_background(const Context& ctx, InpaintResult* inpainted) {
   const Options& o = *ctx.options;
@@ -196,18 +223,55 @@ Image fill_background(const Context& ctx, InpaintResult* inpainted) {
   // Hair plus a 2-pixel margin: the anti-aliased rim of the outline is not
   // dark enough to be assigned to a region but is still hair.
   cv::Mat hair = view(ctx.labels) != 0;
-  cv::Mat near;
-  cv::dilate(hair, near, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(17, 17)));
-  cv::dilate(hair, hair, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
-  // Where outlines converge (sharp tips) the drawn line is wider than the
-  // outline reach: dark specks close to the hair are hair too. Dark pieces
-  // reaching farther are other things' lines (a hair clip's, the face's) and
-  // stay, so that their colours stay closed off from the hole.
   cv::Mat dark(h, w, CV_8U, cv::Scalar(0));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       dark.at<std::uint8_t>(y, x) =
-          !hair.at<std::uint8_t>(y, x) && luma(image.at(x, y)) < o.dark_luma ? 255 : 0;
+          image.at(x, y).a >= kOpaque && luma(image.at(x, y)) < o.dark_luma ? 255 : 0;
+  // The face's eyes and brows are no hair even where they are thick and
+  // touch the bangs: inside the head nothing is taken for hair but regions.
+  const Head head = find_head(ctx, o.background.inpaint);
+  // Hair the segmentation left along the hair's edge (dark locks, the
+  // shaded rim of black hair) goes with it: dark areas at least 5 px thick
+  // that touch the hair. Lines are thinner and stay (the face's, glasses).
+  {
+    cv::Mat thick, grown, parts;
+    cv::morphologyEx(dark, thick, cv::MORPH_OPEN,
+                     cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
+    cv::dilate(hair, grown, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
+    const int n = cv::connectedComponents(thick | grown, parts, 8, CV_32S);
+    std::vector<std::uint8_t> touches(static_cast<std::size_t>(n), 0);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (hair.at<std::uint8_t>(y, x)) touches[static_cast<std::size_t>(parts.at<int>(y, x))] = 1;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (thick.at<std::uint8_t>(y, x) &&
+            touches[static_cast<std::size_t>(parts.at<int>(y, x))] &&
+            (head.mask.empty() || !head.mask.at<std::uint8_t>(y, x)))
+          hair.at<std::uint8_t>(y, x) = 255;
+  }
+  // The hair's drawn outline goes with the hair: the dark pixels reached
+  // from it through dark pixels within a line's width (wider where outlines
+  // converge at tips, and the hair's own dark strokes along its edge).
+  const cv::Mat step = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
+  cv::Mat outline = hair.clone();
+  for (int k = 0; k < 2 * o.outline_reach; ++k) {
+    cv::Mat grown;
+    cv::dilate(outline, grown, step);
+    outline = grown & (dark | hair);
+  }
+  // ... with its anti-aliased rim, too light to be dark.
+  cv::dilate(outline, outline, step);
+  cv::Mat near;
+  cv::dilate(hair, near, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(17, 17)));
+  cv::dilate(hair, hair, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
+  hair |= outline;
+  // Where outlines converge (sharp tips) the drawn line is wider than the
+  // outline reach: dark specks close to the hair are hair too. Dark pieces
+  // reaching farther are other things' lines (a hair clip's, the face's) and
+  // stay, so that their colours stay closed off from the hole.
+  dark &= ~hair;
   cv::Mat pieces;
   const int count = cv::connectedComponents(dark, pieces, 8, CV_32S);
   std::vector<std::uint8_t> beyond(static_cast<std::size_t>(count), 0);
@@ -215,16 +279,37 @@ Image fill_background(const Context& ctx, InpaintResult* inpainted) {
     for (int x = 0; x < w; ++x)
       if (dark.at<std::uint8_t>(y, x) && !near.at<std::uint8_t>(y, x))
         beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
-  LabelMap hole(w, h);
+  cv::Mat holes(h, w, CV_8U, cv::Scalar(0));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      hole.at(x, y) =
+      holes.at<std::uint8_t>(y, x) =
           hair.at<std::uint8_t>(y, x) ||
           (dark.at<std::uint8_t>(y, x) && !beyond[static_cast<std::size_t>(pieces.at<int>(y, x))]);
-  BackgroundResult r = completion::fill_background(image, hole, o.background);
-  inpainted->filled = r.filled;
-  inpainted->patches = r.texture.patches;
-  inpainted->unfilled = r.unreached;
+  // The head: under the hair it is skin, filled from the face first; the
+  // rest of the hole is filled around it, the head's outline drawn where it
+  // meets the rest, so that no other colour runs into the head and the skin
+  // does not run out of it.
+  Image work = image;
+  InpaintResult skin;
+  if (!head.mask.empty()) {
+    skin = fill_head(work, holes, head, o.background.inpaint, o.background.texture_threshold);
+    cv::Mat rest = holes & (head.mask == 0);
+    cv::Mat rim;
+    cv::dilate(head.mask, rim, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
+    rim &= rest;
+    const Rgba line = head_line_colour(image, holes, o);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (rim.at<std::uint8_t>(y, x)) work.at(x, y) = line;
+    holes = rest & ~rim;
+  }
+  LabelMap hole(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) hole.at(x, y) = holes.at<std::uint8_t>(y, x) != 0;
+  BackgroundResult r = completion::fill_background(work, hole, o.background);
+  inpainted->filled = r.filled + skin.filled;
+  inpainted->patches = r.texture.patches + skin.patches;
+  inpainted->unfilled = r.unreached + skin.unfilled;
   return std::move(r.image);
 }
 

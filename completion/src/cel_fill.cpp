@@ -150,8 +150,8 @@ void propagate(int w, int h, const Mask& pass, const std::vector<int>& seeds,
         if (materials != nullptr) {
           nt = travelled[static_cast<std::size_t>(i)] + step;
           const int o = origin[static_cast<std::size_t>(i)];
-          const int m = o >= 0 ? materials->label[static_cast<std::size_t>(o)] : 0;
-          if (m > 0 && nt > materials->reach[static_cast<std::size_t>(m)])
+          const int mat = o >= 0 ? materials->label[static_cast<std::size_t>(o)] : 0;
+          if (mat > 0 && nt > materials->reach[static_cast<std::size_t>(mat)])
             nd = d + step * kBeyondReach;
         }
         if (nd >= dist[static_cast<std::size_t>(j)]) continue;
@@ -202,6 +202,11 @@ Materials find_materials(const Mask& hole, const Mask& ink, int w, int h) {
   constexpr int kRimReach = 6;       // px: a rim pixel this near the hole borders it
   constexpr double kOnHair = 0.6;    // share of the rim bordering the hole
   constexpr float kMinReach = 3.0f;  // px
+  // A material smaller than this share of the hole (a hair clip, an ear, a
+  // collar's tip) cannot be what lies behind much of it: it too continues
+  // only as far as it is thick. On wikipe-tan a clip's grey filled the hair
+  // beside the head; the paper and the body, large, reach on.
+  constexpr double kSmall = 0.25;
   const std::size_t n = static_cast<std::size_t>(w) * h;
   cv::Mat known(h, w, CV_8U);
   for (std::size_t i = 0; i < n; ++i) known.data[i] = !hole[i] && !ink[i] ? 255 : 0;
@@ -229,11 +234,18 @@ Materials find_materials(const Mask& hole, const Mask& ink, int w, int h) {
       ++rim[k];
       if (near_hole.data[i]) ++rim_near[k];
     }
+  std::vector<long> area(k_count, 0);
+  long holes = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    ++area[static_cast<std::size_t>(lab[i])];
+    holes += hole[i] != 0;
+  }
   Materials m;
   m.label.assign(lab, lab + n);
   m.reach.assign(k_count, INT_MAX);
   for (std::size_t k = 1; k < k_count; ++k)
-    if (rim[k] > 0 && rim_near[k] >= kOnHair * rim[k])
+    if ((rim[k] > 0 && rim_near[k] >= kOnHair * rim[k]) ||
+        (rim_near[k] > 0 && static_cast<double>(area[k]) < kSmall * static_cast<double>(holes)))
       m.reach[k] = static_cast<int>(std::lround(5.0f * std::max(kMinReach, thick[k])));
   return m;
 }

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
+#include "synthetic.h"
 
 namespace hair25d::completion {
 namespace {
@@ -277,6 +279,113 @@ TEST(Background, BadInputThrows) {
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_NE(why.find("patch_radius"), std::string::npos) << why;
   EXPECT_THROW(fill_background(f.drawing, f.hole, o), Error);
+}
+
+// ---------------------------------------------------------------------------
+// The background of the whole stage (complete_strands): the head behind the
+// hair. A 320 × 250 transparent sheet, a face (skin disc, 3 px ink outline,
+// two dark eyes, no region) and a cap of dark hair (region 1, 2 px black
+// outline) over the top of the head, reaching past the face on both sides.
+namespace head {
+
+constexpr double kCx = 160, kCy = 140, kR = 62;
+constexpr Rgba kSheet{0, 0, 0, 0};
+constexpr Rgba kCapHair{70, 45, 35, 255};
+
+bool in_cap(double x, double y) { return std::hypot(x - kCx, y - (kCy - 8)) < 84 && y < kCy - 18; }
+
+test::Drawing drawing() {
+  test::Drawing d{Image(320, 250, kSheet), LabelMap(320, 250, 0), {}};
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const double r = std::hypot(x + 0.5 - kCx, y + 0.5 - kCy);
+      if (r < kR) d.image.at(x, y) = r > kR - 3 ? kInk : kSkin;
+    }
+  for (const double ex : {kCx - 24, kCx + 24})
+    for (int y = 0; y < 250; ++y)
+      for (int x = 0; x < 320; ++x)
+        if (std::hypot(x + 0.5 - ex, y + 0.5 - (kCy + 5)) < 7) d.image.at(x, y) = kInk;
+  test::paint(d, in_cap, kCapHair, 1);
+  return d;
+}
+
+Result run(const test::Drawing& d) {
+  Options o;
+  o.inpaint_strands = false;
+  return complete_strands(test::input_of(d, Vec2(kCx, kCy)), o);
+}
+
+}  // namespace head
+
+TEST(HeadBehindHair, NoTransparentPixelInsideTheHead) {
+  const test::Drawing d = head::drawing();
+  const Result r = head::run(d);
+  int transparent = 0, inside = 0;
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      if (std::hypot(x + 0.5 - head::kCx, y + 0.5 - head::kCy) >= head::kR - 1) continue;
+      ++inside;
+      transparent += r.background.at(x, y).a < 255;
+    }
+  EXPECT_GT(inside, 11000);
+  EXPECT_EQ(transparent, 0);
+}
+
+TEST(HeadBehindHair, HiddenForeheadAndSkullAreSkin) {
+  const test::Drawing d = head::drawing();
+  const Result r = head::run(d);
+  int hidden = 0, skin = 0;
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      // Under the cap, well inside the face's circle.
+      if (!head::in_cap(x + 0.5, y + 0.5)) continue;
+      if (std::hypot(x + 0.5 - head::kCx, y + 0.5 - head::kCy) >= head::kR - 8) continue;
+      ++hidden;
+      skin += colour_distance(r.background.at(x, y), kSkin) <= 12;
+    }
+  EXPECT_GT(hidden, 1500);
+  EXPECT_GE(skin, hidden * 98 / 100);
+}
+
+// The cap's drawn outline goes with the cap: no dark pixel is left where it
+// was (away from the face's own outline), and the filled area holds
+// hardly any dark pixel; known pixels (the sheet, the eyes, the face away
+// from the cap) are untouched.
+TEST(HeadBehindHair, HairOutlineGoesWithTheHairKnownPixelsStay) {
+  const test::Drawing d = head::drawing();
+  const Result r = head::run(d);
+  int outline = 0, outline_dark = 0, filled = 0, filled_dark = 0, far_changed = 0;
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const double face_r = std::hypot(x + 0.5 - head::kCx, y + 0.5 - head::kCy);
+      bool near_cap = false;
+      for (int dy = -14; dy <= 14 && !near_cap; ++dy)
+        for (int dx = -14; dx <= 14; ++dx)
+          if (d.regions.contains(x + dx, y + dy) && d.regions.at(x + dx, y + dy) == 1) {
+            near_cap = true;
+            break;
+          }
+      const Rgba c = r.background.at(x, y);
+      if (!near_cap) {
+        far_changed += !(c == d.image.at(x, y));
+        continue;
+      }
+      const bool drawn_outline = d.regions.at(x, y) == 0 && d.image.at(x, y).a == 255 &&
+                                 luma(d.image.at(x, y)) < 100 && std::abs(face_r - head::kR) > 5;
+      if (drawn_outline) {
+        ++outline;
+        outline_dark += c.a == 255 && luma(c) < 100;
+      }
+      // The face's outline redrawn under the cap is no fragment.
+      if ((d.regions.at(x, y) == 1 || drawn_outline) && std::abs(face_r - head::kR) > 5) {
+        ++filled;
+        filled_dark += c.a == 255 && luma(c) < 100;
+      }
+    }
+  EXPECT_GT(outline, 300);
+  EXPECT_LE(outline_dark, outline / 50) << "the cap's outline is left";
+  EXPECT_LE(filled_dark, filled / 50);
+  EXPECT_EQ(far_changed, 0);
 }
 
 }  // namespace

@@ -1,0 +1,222 @@
+#include "head_fill.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "face_joins.h"
+#include "inpaint_internal.h"
+#include "raster.h"
+
+namespace hair25d::completion::detail {
+namespace {
+
+// A face pixel is skin when within this RGB distance of the face's median.
+constexpr double kSkinDistance = 48.0;
+// Fewer skin pixels than this: no head (nothing to copy from).
+constexpr int kMinSkin = 200;
+// The face's width is taken at this quantile of its rows' widths (a few
+// rows through a stray skin piece are not its width).
+constexpr double kWidthQuantile = 0.95;
+// The skull is a little wider than the face shows where hair along the
+// face's sides hides its edge (hair within kSideReach px of the widest rows'
+// ends); as wide where the face's own outline bounds it.
+constexpr double kSkullScale = 1.2;
+constexpr int kSideReach = 4;
+// Sigma (px) of the smoothing of the coarse skin fill: it removes the
+// seams between the nearest skin pixels, not the skin's own shading.
+constexpr double kSmoothSigma = 5.0;
+// The face's shading next to the hole fades into its median colour over
+// this many px (a shadow under the bangs, a highlight, do not fill the skull).
+constexpr double kShadingReach = 16.0;
+
+double distance(const Rgba& a, const Rgba& b) {
+  const double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+  return std::sqrt(dr * dr + dg * dg + db * db);
+}
+
+// Mean |luma − its 3×3 median| over the skin pixels (0 on flat or softly
+// shaded skin).
+double skin_texture(const Image& image, const cv::Mat& skin) {
+  cv::Mat grey(image.height(), image.width(), CV_8U), med;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) grey.at<std::uint8_t>(y, x) = luma(image.at(x, y));
+  cv::medianBlur(grey, med, 3);
+  double sum = 0.0;
+  int count = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      if (skin.at<std::uint8_t>(y, x)) {
+        sum += std::abs(grey.at<std::uint8_t>(y, x) - med.at<std::uint8_t>(y, x));
+        ++count;
+      }
+  return count > 0 ? sum / count : 0.0;
+}
+
+}  // namespace
+
+Head find_head(const Context& ctx, const InpaintOptions& options) {
+  Head head;
+  const Face face = find_face(ctx);
+  if (face.pixels == 0) return head;
+  head.face = face.mask;
+  const Image& image = *ctx.image;
+  const int w = image.width(), h = image.height();
+  const std::vector<std::uint8_t> ink = ink_mask(image, options);
+  // Median colour of the face's opaque, ink-free pixels.
+  std::vector<int> r, g, b;
+  std::vector<cv::Point> points;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!face.mask.at<std::uint8_t>(y, x)) continue;
+      points.emplace_back(x, y);
+      const Rgba& c = image.at(x, y);
+      if (ink[static_cast<std::size_t>(y) * w + x] || c.a < 240) continue;
+      r.push_back(c.r), g.push_back(c.g), b.push_back(c.b);
+    }
+  if (static_cast<int>(r.size()) < kMinSkin) return head;
+  auto median = [](std::vector<int>& v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return static_cast<std::uint8_t>(v[v.size() / 2]);
+  };
+  head.colour = {median(r), median(g), median(b), 255};
+  head.skin = cv::Mat(h, w, CV_8U, cv::Scalar(0));
+  for (const cv::Point& p : points) {
+    const Rgba& c = image.at(p.x, p.y);
+    if (ink[static_cast<std::size_t>(p.y) * w + p.x] || c.a < 240) continue;
+    if (distance(c, head.colour) > kSkinDistance) continue;
+    head.skin.at<std::uint8_t>(p) = 1;
+    ++head.skin_pixels;
+  }
+  // Not the anti-aliased rims of lines and hair (blends of skin and ink
+  // that pass the colour test): the skin at least 2 px inside.
+  cv::Mat inner;
+  cv::erode(head.skin, inner, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
+  head.skin_pixels = cv::countNonZero(inner);
+  head.skin = inner;
+  if (head.skin_pixels < kMinSkin) return head;
+  // The skull: a disc round the head centre as wide as the face at its
+  // widest (the cheeks; rows through the neck are narrower, and the face's
+  // far side, the chin or the neck, lies well below the skull's rim). With
+  // the face's own hull it is the head.
+  std::vector<int> lo(h, w), hi(h, -1);
+  for (const cv::Point& p : points)
+    lo[p.y] = std::min(lo[p.y], p.x), hi[p.y] = std::max(hi[p.y], p.x);
+  std::vector<int> widths;
+  for (int y = 0; y < h; ++y)
+    if (hi[y] >= lo[y]) widths.push_back(hi[y] - lo[y] + 1);
+  if (widths.empty()) return head;
+  std::sort(widths.begin(), widths.end());
+  const int widest = widths[static_cast<std::size_t>(kWidthQuantile * (widths.size() - 1))];
+  // Where hair lies along the face's sides at its widest rows, the skull
+  // reaches under it: wider than the face shows.
+  int ends = 0, under_hair = 0;
+  for (int y = 0; y < h; ++y) {
+    if (hi[y] < lo[y] || hi[y] - lo[y] + 1 < widest) continue;
+    for (const int x : {lo[y] - kSideReach, hi[y] + kSideReach}) {
+      ++ends;
+      under_hair += ctx.label(x, y) != 0;
+    }
+  }
+  const double share = ends > 0 ? static_cast<double>(under_hair) / ends : 0.0;
+  const double radius = (1.0 + (kSkullScale - 1.0) * share) * 0.5 * widest;
+  std::vector<cv::Point> hull;
+  cv::convexHull(points, hull);
+  head.mask = cv::Mat(h, w, CV_8U, cv::Scalar(0));
+  cv::fillConvexPoly(head.mask, hull, cv::Scalar(1));
+  cv::circle(head.mask,
+             cv::Point(static_cast<int>(std::lround(ctx.head.x())),
+                       static_cast<int>(std::lround(ctx.head.y()))),
+             static_cast<int>(std::lround(radius)), cv::Scalar(1), cv::FILLED);
+  return head;
+}
+
+InpaintResult fill_head(Image& image, const cv::Mat& hole, const Head& head,
+                        const InpaintOptions& options, double texture_threshold) {
+  InpaintResult result;
+  if (head.mask.empty()) return result;
+  const int w = image.width(), h = image.height();
+  cv::Mat target = hole & head.mask;
+  const cv::Rect found = cv::boundingRect(target);
+  if (found.area() == 0) return result;
+  // Work on the target's box plus room for patches and nearby skin.
+  const int pad = options.patch_radius + options.search_radius;
+  const cv::Rect box =
+      cv::Rect(found.x - pad, found.y - pad, found.width + 2 * pad, found.height + 2 * pad) &
+      cv::Rect(0, 0, w, h);
+  const cv::Mat t = target(box), skin = head.skin(box);
+  // Coarse fill: the colour of the nearest skin pixel (anywhere on the face
+  // within the box; with none there, the skin's median), then smoothed.
+  cv::Mat not_skin = skin == 0, dist, labels;
+  Image sub(box.width, box.height);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) sub.at(x, y) = image.at(x + box.x, y + box.y);
+  Image guide = sub;
+  if (cv::countNonZero(skin) > 0) {
+    cv::distanceTransform(not_skin, dist, labels, cv::DIST_L2, cv::DIST_MASK_5,
+                          cv::DIST_LABEL_PIXEL);
+    std::vector<Rgba> colour_of(static_cast<std::size_t>(box.area()) + 1, head.colour);
+    for (int y = 0; y < box.height; ++y)
+      for (int x = 0; x < box.width; ++x)
+        if (skin.at<std::uint8_t>(y, x)) colour_of[labels.at<int>(y, x)] = sub.at(x, y);
+    // Near the face its shading continues; deeper in, the plain skin.
+    for (int y = 0; y < box.height; ++y)
+      for (int x = 0; x < box.width; ++x) {
+        if (!t.at<std::uint8_t>(y, x)) continue;
+        const Rgba& c = colour_of[labels.at<int>(y, x)];
+        const double f = std::min(1.0, dist.at<float>(y, x) / kShadingReach);
+        auto mix = [&](std::uint8_t a, std::uint8_t b) {
+          return static_cast<std::uint8_t>(std::lround((1 - f) * a + f * b));
+        };
+        guide.at(x, y) = {mix(c.r, head.colour.r), mix(c.g, head.colour.g), mix(c.b, head.colour.b),
+                          255};
+      }
+  } else {
+    for (int y = 0; y < box.height; ++y)
+      for (int x = 0; x < box.width; ++x)
+        if (t.at<std::uint8_t>(y, x)) guide.at(x, y) = head.colour;
+  }
+  // Smooth over the target and the skin only (normalised: other colours
+  // next to the head do not bleed in).
+  cv::Mat weight(box.height, box.width, CV_32F), colour(box.height, box.width, CV_32FC3);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) {
+      const bool use = t.at<std::uint8_t>(y, x) || skin.at<std::uint8_t>(y, x);
+      const Rgba& c = guide.at(x, y);
+      weight.at<float>(y, x) = use ? 1.0f : 0.0f;
+      colour.at<cv::Vec3f>(y, x) = use ? cv::Vec3f(c.r, c.g, c.b) : cv::Vec3f(0, 0, 0);
+    }
+  cv::GaussianBlur(weight, weight, {0, 0}, kSmoothSigma);
+  cv::GaussianBlur(colour, colour, {0, 0}, kSmoothSigma);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) {
+      if (!t.at<std::uint8_t>(y, x)) continue;
+      const float wgt = std::max(weight.at<float>(y, x), 1e-6f);
+      const cv::Vec3f c = colour.at<cv::Vec3f>(y, x) / wgt;
+      guide.at(x, y) = {cv::saturate_cast<std::uint8_t>(c[0]),
+                        cv::saturate_cast<std::uint8_t>(c[1]),
+                        cv::saturate_cast<std::uint8_t>(c[2]), 255};
+    }
+  // Exemplar pass from skin only, guided by the smooth fill.
+  LabelMap fill(box.width, box.height), source(box.width, box.height);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) {
+      fill.at(x, y) = t.at<std::uint8_t>(y, x);
+      source.at(x, y) = skin.at<std::uint8_t>(y, x);
+      if (fill.at(x, y)) sub.at(x, y) = guide.at(x, y);
+    }
+  // Exemplar patches from skin only where the skin is textured (screentone,
+  // hatching, painted grain); soft cel shading takes the smooth fill, which
+  // copied patches would only break into blotches.
+  if (skin_texture(sub, skin) > texture_threshold)
+    result = run_exemplar(sub, fill, source, options, &guide);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x)
+      if (t.at<std::uint8_t>(y, x)) image.at(x + box.x, y + box.y) = sub.at(x, y);
+  result.filled = cv::countNonZero(t);
+  result.unfilled = 0;  // unmatched pixels keep the smooth fill
+  return result;
+}
+
+}  // namespace hair25d::completion::detail
