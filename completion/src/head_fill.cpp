@@ -24,6 +24,9 @@ constexpr double kWidthQuantile = 0.95;
 // ends); as wide where the face's own outline bounds it.
 constexpr double kSkullScale = 1.2;
 constexpr int kSideReach = 4;
+// The face belongs to the head up to this many skull radii from the head
+// centre (the chin lies within 1.3–1.7 on the samples).
+constexpr double kFaceReach = 1.5;
 // Sigma (px) of the smoothing of the coarse skin fill: it removes the
 // seams between the nearest skin pixels, not the skin's own shading.
 constexpr double kSmoothSigma = 5.0;
@@ -121,10 +124,15 @@ Head find_head(const Context& ctx, const InpaintOptions& options) {
   }
   const double share = ends > 0 ? static_cast<double>(under_hair) / ends : 0.0;
   const double radius = (1.0 + (kSkullScale - 1.0) * share) * 0.5 * widest;
-  std::vector<cv::Point> hull;
-  cv::convexHull(points, hull);
+  // The face's hull, without what runs on below the jaw (an open outline
+  // lets the face run into the neck and the chest).
+  std::vector<cv::Point> near, hull;
+  for (const cv::Point& p : points)
+    if (std::hypot(p.x + 0.5 - ctx.head.x(), p.y + 0.5 - ctx.head.y()) <= kFaceReach * radius)
+      near.push_back(p);
+  if (near.size() >= 3) cv::convexHull(near, hull);
   head.mask = cv::Mat(h, w, CV_8U, cv::Scalar(0));
-  cv::fillConvexPoly(head.mask, hull, cv::Scalar(1));
+  if (!hull.empty()) cv::fillConvexPoly(head.mask, hull, cv::Scalar(1));
   cv::circle(head.mask,
              cv::Point(static_cast<int>(std::lround(ctx.head.x())),
                        static_cast<int>(std::lround(ctx.head.y()))),
