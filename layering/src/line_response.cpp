@@ -7,6 +7,7 @@
 #include <future>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#include <type_traits>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -146,6 +147,24 @@ struct GreyView {
 
   // Bilinear, pixel centres at +0.5, clamped to the window. Inlined: called
   // a few dozen times per point measured.
+  // The same where (x, y) is known to lie well inside the window.
+  [[gnu::always_inline]] double sample_inside(double x, double y) const {
+    x = x - 0.5 - x0;
+    y = y - 0.5 - y0;
+    const int xi = static_cast<int>(x), yi = static_cast<int>(y);
+    const double fx = x - xi, fy = y - yi;
+    const float* p = grey + yi * w + xi;
+    return (1 - fy) * ((1 - fx) * static_cast<double>(p[0]) + fx * static_cast<double>(p[1])) +
+           fy * ((1 - fx) * static_cast<double>(p[w]) + fx * static_cast<double>(p[w + 1]));
+  }
+  // Whether the segment from (x + dx, y + dy) to (x − dx, y − dy) lies well
+  // inside the window: then so does every sample along it.
+  bool holds(double x, double y, double dx, double dy) const {
+    const double ax = std::min(x - dx, x + dx) - 0.5 - x0, bx = std::max(x - dx, x + dx) - 0.5 - x0;
+    const double ay = std::min(y - dy, y + dy) - 0.5 - y0, by = std::max(y - dy, y + dy) - 0.5 - y0;
+    return ax >= 1.0 && ay >= 1.0 && bx < xmax - 1.0 && by < ymax - 1.0;
+  }
+
   [[gnu::always_inline]] double sample(double x, double y) const {
     x = x - 0.5 - x0;
     y = y - 0.5 - y0;
@@ -172,6 +191,17 @@ struct GreyView {
 struct LabelView {
   const int* labels;
   int w, h;
+  // The same where (x, y) is known to lie in the map (so x, y >= 0: the
+  // truncation is the floor).
+  int at_inside(double x, double y) const {
+    return labels[static_cast<std::size_t>(static_cast<int>(y)) * w + static_cast<int>(x)];
+  }
+  // Whether the segment from (x + dx, y + dy) to (x − dx, y − dy) lies well
+  // inside the map.
+  bool holds(double x, double y, double dx, double dy) const {
+    return std::min(x - dx, x + dx) >= 1.0 && std::min(y - dy, y + dy) >= 1.0 &&
+           std::max(x - dx, x + dx) < w - 1.0 && std::max(y - dy, y + dy) < h - 1.0;
+  }
   // The label of the pixel holding (x, y), kOutside beyond the map.
   int at(double x, double y) const {
     const int xi = floor_int(x), yi = floor_int(y);
@@ -523,6 +553,7 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
   // before the next line of a thin strand.
   const double paint_near = r.paint_near;
   const double paint_far = r.paint_far;
+  const double farthest = std::max({half, reach, paint_far}) + 1.0;
   double along = 0.0;
   // Every other point is plenty for a median, except on short boundaries.
   const int stride = n > 40 ? 2 : 1;
@@ -534,38 +565,62 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
     // On the screen the left of travel t is (t.y, −t.x).
     const Vec2 to_left = Vec2(t.y(), -t.x()).normalized();
     const double px = pts[i].x(), py = pts[i].y(), nx = to_left.x(), ny = to_left.y();
-    double centre = 1e9;
-    for (double s = -half; s <= half + 1e-9; s += 0.5)
-      centre = std::min(centre, grey.sample(px + s * nx, py + s * ny));
-    double paper_left = -1.0, paper_right = -1.0;
-    for (double s = 1.0; s <= reach; s += 1.0) {
-      const double lx = px + s * nx, ly = py + s * ny;
-      const double rx = px - s * nx, ry = py - s * ny;
-      if (label.at(lx, ly) == left) paper_left = std::max(paper_left, grey.sample(lx, ly));
-      if (label.at(rx, ry) == right) paper_right = std::max(paper_right, grey.sample(rx, ry));
-    }
-    if (paper_left < 0 || paper_right < 0) continue;
-    values.push_back(std::min(paper_left, paper_right) - centre);
-    std::array<double, 3> paint_left{}, paint_right{};
-    bool found_left = false, found_right = false;
-    for (double s = paint_near; s <= paint_far + 1e-9 && !(found_left && found_right); s += 1.0) {
-      const double lx = px + s * nx, ly = py + s * ny;
-      const double rx = px - s * nx, ry = py - s * ny;
-      if (!found_left && label.at(lx, ly) == left) {
-        paint_left = sample_colour(lx, ly);
-        found_left = true;
+    // Every sample below lies within `farthest` of the point along the
+    // normal; where that segment is well inside the window and the map (almost
+    // always) the bounds need no checks, and coordinates are >= 0, so
+    // truncation is the floor: the same values, fewer instructions.
+    const bool inside = grey.holds(px, py, farthest * nx, farthest * ny) &&
+                        label.holds(px, py, farthest * nx, farthest * ny);
+    auto point = [&](auto fast) {
+      auto sample = [&](double x, double y) {
+        if constexpr (decltype(fast)::value)
+          return grey.sample_inside(x, y);
+        else
+          return grey.sample(x, y);
+      };
+      auto label_at = [&](double x, double y) {
+        if constexpr (decltype(fast)::value)
+          return label.at_inside(x, y);
+        else
+          return label.at(x, y);
+      };
+      double centre = 1e9;
+      for (double s = -half; s <= half + 1e-9; s += 0.5)
+        centre = std::min(centre, sample(px + s * nx, py + s * ny));
+      double paper_left = -1.0, paper_right = -1.0;
+      for (double s = 1.0; s <= reach; s += 1.0) {
+        const double lx = px + s * nx, ly = py + s * ny;
+        const double rx = px - s * nx, ry = py - s * ny;
+        if (label_at(lx, ly) == left) paper_left = std::max(paper_left, sample(lx, ly));
+        if (label_at(rx, ry) == right) paper_right = std::max(paper_right, sample(rx, ry));
       }
-      if (!found_right && label.at(rx, ry) == right) {
-        paint_right = sample_colour(rx, ry);
-        found_right = true;
+      if (paper_left < 0 || paper_right < 0) return;
+      values.push_back(std::min(paper_left, paper_right) - centre);
+      std::array<double, 3> paint_left{}, paint_right{};
+      bool found_left = false, found_right = false;
+      for (double s = paint_near; s <= paint_far + 1e-9 && !(found_left && found_right); s += 1.0) {
+        const double lx = px + s * nx, ly = py + s * ny;
+        const double rx = px - s * nx, ry = py - s * ny;
+        if (!found_left && label_at(lx, ly) == left) {
+          paint_left = sample_colour(lx, ly);
+          found_left = true;
+        }
+        if (!found_right && label_at(rx, ry) == right) {
+          paint_right = sample_colour(rx, ry);
+          found_right = true;
+        }
       }
-    }
-    if (found_left && found_right) {
-      double d2 = 0.0;
-      for (int c = 0; c < 3; ++c)
-        d2 += (paint_left[c] - paint_right[c]) * (paint_left[c] - paint_right[c]);
-      colours.push_back(std::sqrt(d2 / 3.0));
-    }
+      if (found_left && found_right) {
+        double d2 = 0.0;
+        for (int c = 0; c < 3; ++c)
+          d2 += (paint_left[c] - paint_right[c]) * (paint_left[c] - paint_right[c]);
+        colours.push_back(std::sqrt(d2 / 3.0));
+      }
+    };
+    if (inside)
+      point(std::true_type{});
+    else
+      point(std::false_type{});
   }
   if (!values.empty()) {
     std::vector<double> low = values;
