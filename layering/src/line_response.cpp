@@ -569,7 +569,7 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
     // normal; where that segment is well inside the window and the map (almost
     // always) the bounds need no checks, and coordinates are >= 0, so
     // truncation is the floor: the same values, fewer instructions.
-    const bool inside = grey.holds(px, py, farthest * nx, farthest * ny) &&
+    const bool inside = !check_every_sample_ && grey.holds(px, py, farthest * nx, farthest * ny) &&
                         label.holds(px, py, farthest * nx, farthest * ny);
     auto point = [&](auto fast) {
       auto sample = [&](double x, double y) {

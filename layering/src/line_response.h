@@ -82,6 +82,10 @@ class LineResponse {
   BoundaryLine measure(const Polyline& curve, double skip, const LabelMap& labels, int left,
                        int right) const;
 
+  // With `on`, measure() checks the bounds of every sample, as it does near
+  // the window's and the map's edges (for tests: the same values).
+  void check_every_sample(bool on) { check_every_sample_ = on; }
+
   // The image's colour at pixel (x, y) smoothed at half a line width (a
   // Gaussian, OpenCV's kernel, edges of the window repeated); pixels outside
   // the window are clamped to it. Translucent pixels are blended over white.
@@ -102,6 +106,7 @@ class LineResponse {
   int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
   double line_width_ = 1.0;
   double noise_sigma_ = 0.0;
+  bool check_every_sample_ = false;
   const Image* image_ = nullptr;  // colours are smoothed from it where sampled
   // Grey levels of the whole image, unsmoothed, and per image row whether it
   // holds a translucent pixel; made on a second core (converting_).

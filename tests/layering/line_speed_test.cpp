@@ -159,6 +159,33 @@ TEST(LineSpeed, EarlyBlurMeasuresLikeTheWindowBlur) {
   }
 }
 
+// Points whose samples all lie well inside the window and the map are
+// measured without bounds checks: the same values as checking every sample,
+// on boundaries inside, along and across the window's and the image's edges.
+TEST(LineSpeed, UncheckedSamplesMeasureLikeCheckedOnes) {
+  const Image image = test_image(297, 211, 8, true);
+  LabelMap labels(image.width(), image.height(), 0);
+  for (int y = 0; y < 211; ++y)
+    for (int x = y / 7; x < 297; ++x) labels.at(x, y) = 1 + (x / 37 + y / 29) % 5;
+  const BoundaryGraph graph = build_boundary_graph(labels);
+  for (const double lw : {1.0, 4.6, 9.0}) {
+    LineResponse fast(image, lw, 20, 10, 260, 190);
+    LineResponse checked(image, lw, 20, 10, 260, 190);
+    checked.check_every_sample(true);
+    int compared = 0;
+    for (const Boundary& b : graph.boundaries) {
+      if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+      const auto want = checked.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+      const auto got = fast.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+      EXPECT_EQ(want.contrast, got.contrast) << "line width " << lw;
+      EXPECT_EQ(want.contrast_low, got.contrast_low) << "line width " << lw;
+      EXPECT_EQ(want.colour_difference, got.colour_difference) << "line width " << lw;
+      compared += want.contrast != 0.0;
+    }
+    EXPECT_GT(compared, 10) << "line width " << lw;
+  }
+}
+
 // The comparison itself must be able to fail: a colour smoothed at another
 // scale is far from the reference.
 TEST(LineSpeed, TheReferenceTellsAnotherSmoothingApart) {
