@@ -7,56 +7,79 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <system_error>
 #include <thread>
-#include <vector>
 
 namespace hair25d::layering::detail {
 
 // Calls f(i) once for every i in [0, n), on the calling thread and up to
 // max_threads − 1 more (items handed out one at a time, as costs vary with
-// boundary length), one thread per `items_per_thread` items at most. The first exception thrown by
-// f is rethrown here after all threads have stopped; items not yet started are then skipped.
+// boundary length), one thread per `items_per_thread` items at most. The
+// first exception thrown by f is rethrown here after all items under way
+// have ended; items not yet started are then skipped.
+//
+// The caller waits only for items a helper has taken, never for a helper to
+// start: on a busy machine a new thread may get a core late, and by then the
+// caller has often done every item. Helpers are detached; one that starts
+// after the call returned finds no item left and touches only the counters
+// it shares (never f).
 template <class F>
 void parallel_for(int n, F&& f, int max_threads = 0, int items_per_thread = 8) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // Threads cost tens of microseconds to start: not worth it for a handful
   // of small items.
-  const int threads =
-      std::min({max_threads > 0 ? max_threads : cores, cores,
-                (n + std::max(1, items_per_thread) - 1) / std::max(1, items_per_thread)});
+  const int per = std::max(1, items_per_thread);
+  const int threads = std::min({max_threads > 0 ? max_threads : cores, cores, (n + per - 1) / per});
   if (threads <= 1) {
     for (int i = 0; i < n; ++i) f(i);
     return;
   }
-  std::atomic<int> next{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  auto work = [&] {
-    for (int i = next++; i < n && !failed; i = next++) {
-      try {
-        f(i);
-      } catch (...) {
-        const std::lock_guard lock(error_mutex);
-        if (!error) error = std::current_exception();
-        failed = true;
-      }
+  struct Shared {
+    explicit Shared(int count) : n(count) {}
+    const int n;
+    std::atomic<int> next{0};
+    std::atomic<int> busy{0};  // helpers between announcing and ending an item
+    std::atomic<bool> failed{false};
+    std::mutex error_mutex;
+    std::exception_ptr error;
+  };
+  auto run = [](Shared& s, int i, auto& body) {
+    try {
+      body(i);
+    } catch (...) {
+      const std::lock_guard lock(s.error_mutex);
+      if (!s.error) s.error = std::current_exception();
+      s.failed = true;
     }
   };
-  std::vector<std::jthread> helpers;
-  helpers.reserve(threads - 1);
+  auto shared = std::make_shared<Shared>(n);
+  auto* body = &f;
+  auto helper = [shared, body, run] {
+    for (;;) {
+      // Announced before an item is taken, so the caller, once every item is
+      // taken, waits for this one.
+      ++shared->busy;
+      const int i = shared->next++;
+      const bool take = i < shared->n && !shared->failed;
+      if (take) run(*shared, i, *body);
+      --shared->busy;
+      shared->busy.notify_all();
+      if (!take) return;
+    }
+  };
   for (int t = 1; t < threads; ++t) {
     try {
-      helpers.emplace_back(work);
+      std::thread(helper).detach();
     } catch (const std::system_error&) {
       break;  // no more threads to be had: the ones running take every item
     }
   }
-  work();
-  helpers.clear();  // joins
-  if (error) std::rethrow_exception(error);
+  for (int i = shared->next++; i < n && !shared->failed; i = shared->next++) run(*shared, i, f);
+  // Every item is taken: wait for those under way on helpers.
+  for (int b = shared->busy.load(); b != 0; b = shared->busy.load()) shared->busy.wait(b);
+  if (shared->error) std::rethrow_exception(shared->error);
 }
 
 }  // namespace hair25d::layering::detail

@@ -6,14 +6,19 @@
 // the outline fill grown in bands of rows on several cores against one
 // growth over the whole map; the region ids of a map against LabelMap::labels;
 // grey levels converted four pixels at a time against the formula, and
-// converted only near the regions against the whole image.
+// converted only near the regions against the whole image; parallel_for
+// against a plain loop.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
+#include <stdexcept>
+#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -21,6 +26,7 @@
 #include "hair25d/layering/boundary_graph.h"
 #include "line_response.h"
 #include "outline_fill.h"
+#include "parallel.h"
 #include "raster_scan.h"
 
 namespace hair25d::layering {
@@ -183,6 +189,53 @@ TEST(LineSpeed, UncheckedSamplesMeasureLikeCheckedOnes) {
       compared += want.contrast != 0.0;
     }
     EXPECT_GT(compared, 10) << "line width " << lw;
+  }
+}
+
+// Every item once, on any number of threads; the call returns only when
+// every item has ended (items of uneven cost, some slow).
+TEST(ParallelFor, CallsEveryItemOnceAndWaitsForThem) {
+  for (const int n : {0, 1, 2, 7, 8, 9, 64, 257})
+    for (const auto& [threads, per] :
+         {std::pair{0, 8}, std::pair{0, 1}, std::pair{2, 1}, std::pair{1, 1}, std::pair{16, 1}}) {
+      std::vector<std::atomic<int>> calls(n);
+      std::vector<int> done(n, 0);
+      detail::parallel_for(
+          n,
+          [&](int i) {
+            if (i % 5 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+            ++calls[i];
+            done[i] = i + 1;
+          },
+          threads, per);
+      for (int i = 0; i < n; ++i) {
+        ASSERT_EQ(calls[i].load(), 1) << "n " << n << ", item " << i;
+        ASSERT_EQ(done[i], i + 1) << "n " << n << ", item " << i;
+      }
+    }
+}
+
+// The first exception is rethrown after the items under way end; no item
+// runs once the call has returned.
+TEST(ParallelFor, RethrowsAndStopsTakingItems) {
+  for (int trial = 0; trial < 20; ++trial) {
+    std::atomic<int> started{0}, running{0};
+    EXPECT_THROW(detail::parallel_for(
+                     200,
+                     [&](int i) {
+                       ++started;
+                       ++running;
+                       std::this_thread::sleep_for(std::chrono::microseconds(50));
+                       --running;
+                       if (i == 3) throw std::runtime_error("item 3");
+                     },
+                     0, 1),
+                 std::runtime_error);
+    EXPECT_EQ(running.load(), 0);
+    const int after = started.load();
+    EXPECT_LT(after, 200);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    EXPECT_EQ(started.load(), after);
   }
 }
 
