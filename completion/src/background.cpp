@@ -194,6 +194,8 @@ namespace {
 // Pixels less opaque than this are the sheet (or its anti-aliased rim), not
 // a dark colour of the drawing.
 constexpr int kOpaque = 128;
+// RGB distance from a hair region's mean colour of hair the segmentation left.
+constexpr double kHairColour = 60.0;
 
 // The colour of the drawing's lines next to the hole (the face's outline,
 // the clothes'): the median by luma of the ink just outside it.
@@ -232,11 +234,25 @@ Image fill_background(const Context& ctx, InpaintResult* inpainted) {
   // touch the bangs: inside the head nothing is taken for hair but regions.
   const Head head = find_head(ctx, o.background.inpaint);
   // Hair the segmentation left along the hair's edge (dark locks, the
-  // shaded rim of black hair) goes with it: dark areas at least 5 px thick
-  // that touch the hair. Lines are thinner and stay (the face's, glasses).
+  // shaded rim of black hair) goes with it: dark areas of a hair region's
+  // colour, at least 5 px thick, that touch the hair. Lines are thinner and
+  // stay (the face's, glasses); so do dark clothes of another colour (a
+  // sailor collar and its tie under light blue twin tails).
   {
+    cv::Mat hair_coloured(h, w, CV_8U, cv::Scalar(0));
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        if (!dark.at<std::uint8_t>(y, x)) continue;
+        const Rgba& c = image.at(x, y);
+        const Eigen::Vector3d v(c.r, c.g, c.b);
+        for (const auto& [id, info] : ctx.regions)
+          if ((v - info.colour).norm() <= kHairColour) {
+            hair_coloured.at<std::uint8_t>(y, x) = 255;
+            break;
+          }
+      }
     cv::Mat thick, grown, parts;
-    cv::morphologyEx(dark, thick, cv::MORPH_OPEN,
+    cv::morphologyEx(hair_coloured, thick, cv::MORPH_OPEN,
                      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
     cv::dilate(hair, grown, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
     const int n = cv::connectedComponents(thick | grown, parts, 8, CV_32S);
