@@ -117,7 +117,9 @@ int continue_direction(const std::array<int, 4>& q, int arrived) {
   // Bit d: the edge in direction d exists (has_edge).
   const unsigned edges = (q[1] != q[3] ? 1u : 0u) | (q[2] != q[3] ? 2u : 0u) |
                          (q[0] != q[2] ? 4u : 0u) | (q[0] != q[1] ? 8u : 0u);
-  if (std::popcount(edges) == 2) return std::countr_zero(edges & ~(1u << back));
+  // Edges per mask (a table: without -mpopcnt std::popcount is a call).
+  static constexpr std::array<int, 16> kDegree = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+  if (kDegree[edges] == 2) return std::countr_zero(edges & ~(1u << back));
   // Saddle: q = {A, B, B, A}. Joining the A diagonal (top-left with
   // bottom-right) leaves top-right enclosed by up+right and bottom-left by
   // down+left; joining B pairs up+left and right+down.
