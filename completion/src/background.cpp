@@ -218,7 +218,7 @@ Rgba head_line_colour(const Image& image, const cv::Mat& holes, const Options& o
 
 }  // namespace
 
-Image fill_background(const Context& ctx, InpaintResult* inpainted) {
+Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpainted) {
   const Options& o = *ctx.options;
   const Image& image = *ctx.image;
   const int w = image.width(), h = image.height();
@@ -232,7 +232,7 @@ Image fill_background(const Context& ctx, InpaintResult* inpainted) {
           image.at(x, y).a >= kOpaque && luma(image.at(x, y)) < o.dark_luma ? 255 : 0;
   // The face's eyes and brows are no hair even where they are thick and
   // touch the bangs: inside the head nothing is taken for hair but regions.
-  const Head head = find_head(ctx, o.background.inpaint);
+  const Head head = find_head(ctx, face, o.background.inpaint);
   // Hair the segmentation left along the hair's edge (dark locks, the
   // shaded rim of black hair) goes with it: dark areas of a hair region's
   // colour, at least 5 px thick, that touch the hair. Lines are thinner and

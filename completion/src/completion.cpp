@@ -117,10 +117,14 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // The background fill needs the labels, the regions and the head centre
   // (the face and the head behind the hair), never changed below: it runs
   // beside the matching, growing and strands.
+  // The face: hidden back hair is joined across it, and the background
+  // fills the head behind the hair from it.
+  const detail::Face drawn_face =
+      options.face_joins || options.inpaint_background ? detail::find_face(ctx) : detail::Face{};
   std::future<Image> background;
   if (options.inpaint_background && options.threads > 1)
     background = std::async(std::launch::async, [&] {
-      return detail::fill_background(ctx, &result.background_inpaint);
+      return detail::fill_background(ctx, drawn_face, &result.background_inpaint);
     });
 
   // Single-occluder edges ("atoms"), and merged runs of them as further
@@ -173,7 +177,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // The face hides the back hair as a strand does (it is no region): case-1
   // joins of back hair may run behind it, and face joins (below) join pieces
   // seen on opposite sides of it.
-  const detail::Face face = options.face_joins ? detail::find_face(ctx) : detail::Face{};
+  const detail::Face face = options.face_joins ? drawn_face : detail::Face{};
   const std::vector<detail::Join> joins = detail::match_edges(ctx, candidates, face.mask, try_join);
   std::set<int> joined_atoms;
   for (const detail::Join& j : joins) {
@@ -250,7 +254,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   if (background.valid())
     result.background = background.get();
   else if (options.inpaint_background)
-    result.background = detail::fill_background(ctx, &result.background_inpaint);
+    result.background = detail::fill_background(ctx, drawn_face, &result.background_inpaint);
   else
     result.background = image;
   result.edges = std::move(reports);

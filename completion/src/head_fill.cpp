@@ -59,9 +59,8 @@ double skin_texture(const Image& image, const cv::Mat& skin) {
 
 }  // namespace
 
-Head find_head(const Context& ctx, const InpaintOptions& options) {
+Head find_head(const Context& ctx, const Face& face, const InpaintOptions& options) {
   Head head;
-  const Face face = find_face(ctx);
   if (face.pixels == 0) return head;
   head.face = face.mask;
   const Image& image = *ctx.image;

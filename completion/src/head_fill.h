@@ -6,6 +6,7 @@
 #include <opencv2/core.hpp>
 
 #include "context.h"
+#include "face_joins.h"
 #include "hair25d/completion/inpaint.h"
 
 namespace hair25d::completion::detail {
@@ -22,9 +23,9 @@ struct Head {
   int skin_pixels = 0;
 };
 
-// The head of the drawing, or one with an empty mask when no face is found
-// (find_face) or it shows too little skin.
-Head find_head(const Context& ctx, const InpaintOptions& options);
+// The head of the drawing round `face` (find_face's), or one with an empty
+// mask when the face is empty or shows too little skin.
+Head find_head(const Context& ctx, const Face& face, const InpaintOptions& options);
 
 // Fills the pixels of `image` where `hole` (CV_8U, image size) and the head
 // meet with skin: the nearest skin pixels' colours fading into the skin's

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "context.h"
+#include "face_joins.h"
 
 namespace hair25d::completion::detail {
 
@@ -26,6 +27,7 @@ std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPi
                                               std::vector<EdgeReport>* reports,
                                               InpaintResult* inpainted);
 
-Image fill_background(const Context& ctx, InpaintResult* inpainted);
+// `face`: find_face's (may be empty: no head is filled then).
+Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpainted);
 
 }  // namespace hair25d::completion::detail
