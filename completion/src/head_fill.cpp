@@ -62,7 +62,6 @@ double skin_texture(const Image& image, const cv::Mat& skin) {
 Head find_head(const Context& ctx, const Face& face, const InpaintOptions& options) {
   Head head;
   if (face.pixels == 0) return head;
-  head.face = face.mask;
   const Image& image = *ctx.image;
   const int w = image.width(), h = image.height();
   const std::vector<std::uint8_t> ink = ink_mask(image, options);

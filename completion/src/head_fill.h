@@ -18,7 +18,6 @@ struct Head {
   // CV_8U, image size: 1 on skin the drawing shows (the face, not ink, of
   // the face's colour): the exemplars of the hidden forehead and skull.
   cv::Mat skin;
-  cv::Mat face;   // CV_8U, image size: find_face's mask (eyes and lines on it included)
   Rgba colour{};  // the skin's median colour
   int skin_pixels = 0;
 };
