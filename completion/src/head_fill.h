@@ -12,8 +12,9 @@
 namespace hair25d::completion::detail {
 
 struct Head {
-  // CV_8U, image size: 1 inside the head — the convex hull of the face and
-  // of the skull, a disc round the head centre through the face's far side.
+  // CV_8U, image size: 1 inside the head — the skull (a disc round the head
+  // centre as wide as the face, a little wider where hair hides the face's
+  // sides) and the convex hull of the face within 1.5 skull radii.
   cv::Mat mask;
   // CV_8U, image size: 1 on skin the drawing shows (the face, not ink, of
   // the face's colour): the exemplars of the hidden forehead and skull.
