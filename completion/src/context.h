@@ -33,6 +33,7 @@ struct Edge {
   Polyline piece_p, piece_q;              // visible outline moving towards p / towards q
   std::set<int> occluders;
   Eigen::Vector3d colour{0, 0, 0};  // the region's colour next to the edge
+  double colour_spread = 0.0;       // RGB standard deviation around `colour`
   double width = 0.0;               // |p − q|
   // Neither end has visible outline beside it though the region has some
   // elsewhere (the side of a wide piece running between two occluders): its

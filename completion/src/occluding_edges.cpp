@@ -122,6 +122,7 @@ Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<i
   }
   // The region's colour next to the edge (drawn pixels only, not outlines).
   Eigen::Vector3d sum(0, 0, 0);
+  double squares = 0.0;
   int count = 0;
   for (std::size_t i = 0; i < e.points.size(); i += 2) {
     const int cx = static_cast<int>(e.points[i].x()), cy = static_cast<int>(e.points[i].y());
@@ -130,11 +131,15 @@ Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<i
         const int x = cx + dx, y = cy + dy;
         if (!ctx.original->contains(x, y) || ctx.original->at(x, y) != region.id) continue;
         const Rgba& px = ctx.image->at(x, y);
-        sum += Eigen::Vector3d(px.r, px.g, px.b);
+        const Eigen::Vector3d v(px.r, px.g, px.b);
+        sum += v;
+        squares += v.squaredNorm();
         ++count;
       }
   }
   e.colour = count > 0 ? Eigen::Vector3d(sum / count) : region.colour;
+  e.colour_spread =
+      count > 0 ? std::sqrt(std::max(0.0, squares / count - e.colour.squaredNorm())) : 0.0;
   return e;
 }
 
