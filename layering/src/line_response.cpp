@@ -323,8 +323,12 @@ void LineResponse::prepare(double line_width, const LabelMap& filled) {
   // the margin holds smooth()'s window. Blurring it here, on a second core
   // while the caller traces the boundaries, gives the same values there: a
   // window's blur reads the pixels beyond it from the image.
+  // No blur is under way (smoothing_ is not valid): a new one starts from
+  // its first band.
+  next_early_band_ = 0;
+  early_ready_ = false;
   auto blur = [this, lw = std::max(1.0, line_width), &filled] {
-    converting_.get();
+    if (converting_.valid()) converting_.get();  // (not after a first smooth())
     int bx0, by0, bx1, by1;
     if (!detail::label_box(filled, &bx0, &by0, &bx1, &by1)) return;
     const Image& image = *image_;

@@ -165,6 +165,35 @@ TEST(LineSpeed, EarlyBlurMeasuresLikeTheWindowBlur) {
   }
 }
 
+// A second prepare() and smooth() on one LineResponse blur again (every
+// band) and measure like the first.
+TEST(LineSpeed, PreparedTwiceMeasuresLikeOnce) {
+  const Image image = test_image(260, 301, 10, false);
+  LabelMap labels(image.width(), image.height(), 0);
+  for (int y = 30; y < 280; ++y)
+    for (int x = 20 + y / 11; x < 240; ++x) labels.at(x, y) = 1 + (x / 33 + y / 41) % 3;
+  const BoundaryGraph graph = build_boundary_graph(labels);
+  const auto [x0, y0, x1, y1] = test::inner_boundary_box(graph, image.width(), image.height());
+  const double lw = 3.0;
+  const int m = LineResponse::window_margin(lw);
+  const LineResponse plain(image, lw, x0 - m, y0 - m, x1 + m, y1 + m);
+  LineResponse twice(image, &labels);
+  for (int round = 0; round < 2; ++round) {
+    twice.prepare(round == 0 ? lw + 2 : lw, labels);
+    twice.smooth(lw, x0 - m, y0 - m, x1 + m, y1 + m);
+  }
+  int compared = 0;
+  for (const Boundary& b : graph.boundaries) {
+    if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+    const auto want = plain.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+    const auto got = twice.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+    EXPECT_EQ(want.contrast, got.contrast);
+    EXPECT_EQ(want.colour_difference, got.colour_difference);
+    compared += want.contrast != 0.0;
+  }
+  EXPECT_GT(compared, 5);
+}
+
 // Points whose samples all lie well inside the window and the map are
 // measured without bounds checks: the same values as checking every sample,
 // on boundaries inside, along and across the window's and the image's edges.
