@@ -39,6 +39,31 @@ bool InpaintOptions::is_valid(std::string* error) const {
 
 namespace {
 
+// Summed-area table of a w × h mask: the count of set pixels in any box in
+// four reads (which candidate patches are whole sources, which windows hold
+// a valid centre, how much ink a patch has).
+class SummedArea {
+ public:
+  template <typename T>
+  void build(const std::vector<T>& mask, int w, int h) {
+    w1_ = w + 1;
+    s_.assign(static_cast<std::size_t>(w1_) * (h + 1), 0);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        s_[at(x + 1, y + 1)] = (mask[static_cast<std::size_t>(y) * w + x] != 0) + s_[at(x, y + 1)] +
+                               s_[at(x + 1, y)] - s_[at(x, y)];
+  }
+  // Set pixels in [x0, x1) × [y0, y1).
+  int sum(int x0, int y0, int x1, int y1) const {
+    return s_[at(x1, y1)] - s_[at(x0, y1)] - s_[at(x1, y0)] + s_[at(x0, y0)];
+  }
+
+ private:
+  std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * w1_ + x; }
+  int w1_ = 1;
+  std::vector<int> s_;
+};
+
 // The state of one fill: the working crop, what is known, confidences.
 class Filler {
  public:
@@ -62,11 +87,7 @@ class Filler {
     }
     // Integral image of source pixels: a candidate patch is usable when all
     // its pixels are sources (only original pixels are copied, as Criminisi).
-    integral_.assign(static_cast<std::size_t>(w_ + 1) * (h_ + 1), 0);
-    for (int y = 0; y < h_; ++y)
-      for (int x = 0; x < w_; ++x)
-        integral_[idx1(x + 1, y + 1)] = is_source[idx(x, y)] + integral_[idx1(x, y + 1)] +
-                                        integral_[idx1(x + 1, y)] - integral_[idx1(x, y)];
+    sources_.build(is_source, w_, h_);
     // Thin shapes hold no whole patch of the asked size: use the largest
     // size that has at least one whole source patch.
     for (r_ = o_.patch_radius; r_ >= 1; --r_) {
@@ -84,12 +105,7 @@ class Filler {
     }
     // Integral image of valid centres: a widened window holding none is
     // skipped without visiting its rows.
-    valid_integral_.assign(integral_.size(), 0);
-    for (int y = 0; y < h_; ++y)
-      for (int x = 0; x < w_; ++x)
-        valid_integral_[idx1(x + 1, y + 1)] = valid_[idx(x, y)] + valid_integral_[idx1(x, y + 1)] +
-                                              valid_integral_[idx1(x + 1, y)] -
-                                              valid_integral_[idx1(x, y)];
+    valid_area_.build(valid_, w_, h_);
     row_start_.assign(h_ + 1, 0);
     for (int y = 0; y < h_; ++y) {
       for (int x = 0; x < w_; ++x)
@@ -109,12 +125,7 @@ class Filler {
       ink_ = detail::ink_mask(image_, o_);
       for (std::size_t i = 0; i < n; ++i)
         if (!known_[i]) ink_[i] = 0;
-      ink_integral_.assign(integral_.size(), 0);
-      for (int y = 0; y < h_; ++y)
-        for (int x = 0; x < w_; ++x)
-          ink_integral_[idx1(x + 1, y + 1)] = ink_[idx(x, y)] + ink_integral_[idx1(x, y + 1)] +
-                                              ink_integral_[idx1(x + 1, y)] -
-                                              ink_integral_[idx1(x, y)];
+      ink_area_.build(ink_, w_, h_);
     }
   }
 
@@ -150,19 +161,9 @@ class Filler {
   };
 
   std::size_t idx(int x, int y) const { return static_cast<std::size_t>(y) * w_ + x; }
-  std::size_t idx1(int x, int y) const { return static_cast<std::size_t>(y) * (w_ + 1) + x; }
-  int ink_sum(int x0, int y0, int x1, int y1) const {
-    return ink_integral_[idx1(x1, y1)] - ink_integral_[idx1(x0, y1)] - ink_integral_[idx1(x1, y0)] +
-           ink_integral_[idx1(x0, y0)];
-  }
-  int valid_sum(int x0, int y0, int x1, int y1) const {
-    return valid_integral_[idx1(x1, y1)] - valid_integral_[idx1(x0, y1)] -
-           valid_integral_[idx1(x1, y0)] + valid_integral_[idx1(x0, y0)];
-  }
-  int source_sum(int x0, int y0, int x1, int y1) const {
-    return integral_[idx1(x1, y1)] - integral_[idx1(x0, y1)] - integral_[idx1(x1, y0)] +
-           integral_[idx1(x0, y0)];
-  }
+  int ink_sum(int x0, int y0, int x1, int y1) const { return ink_area_.sum(x0, y0, x1, y1); }
+  int valid_sum(int x0, int y0, int x1, int y1) const { return valid_area_.sum(x0, y0, x1, y1); }
+  int source_sum(int x0, int y0, int x1, int y1) const { return sources_.sum(x0, y0, x1, y1); }
   bool is_known(int x, int y) const {
     return x >= 0 && y >= 0 && x < w_ && y < h_ && known_[idx(x, y)];
   }
@@ -581,15 +582,15 @@ class Filler {
   int r_ = 1;  // patch radius in use
   std::vector<std::uint8_t> known_;
   std::vector<float> confidence_;
-  std::vector<int> integral_;
+  SummedArea sources_;  // of source pixels
   std::vector<std::uint8_t> valid_;
-  std::vector<int> valid_integral_;  // integral image of valid_
-  std::vector<int> valid_x_;         // x of every valid centre, row by row
-  std::vector<int> row_start_;       // row y's centres: valid_x_[row_start_[y], row_start_[y + 1])
+  SummedArea valid_area_;       // of valid_
+  std::vector<int> valid_x_;    // x of every valid centre, row by row
+  std::vector<int> row_start_;  // row y's centres: valid_x_[row_start_[y], row_start_[y + 1])
   std::vector<float> grey_;
   std::vector<std::uint8_t> source_bytes_;
   std::vector<std::uint8_t> ink_;  // cel mode only
-  std::vector<int> ink_integral_;
+  SummedArea ink_area_;
   std::vector<unsigned> stamp_ = {};
   unsigned stamp_counter_ = 0;
   std::priority_queue<Item> heap_;

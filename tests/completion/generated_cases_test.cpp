@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 #include <map>
 #include <set>
 
@@ -86,6 +87,34 @@ TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
   }
 }
 
+// Same-strand pair scores summed over 800 × 640 drawings of 20 strands,
+// relations from the generator's pairs, no inpainting (joins only).
+test::PairScore score_generated(std::initializer_list<generator::Shading> shadings,
+                                std::uint64_t first_seed, std::uint64_t last_seed,
+                                bool face_joins) {
+  test::PairScore total;
+  for (generator::Shading shading : shadings)
+    for (std::uint64_t seed = first_seed; seed <= last_seed; ++seed) {
+      generator::Options g;
+      g.width = 800;
+      g.height = 640;
+      g.strand_count = 20;
+      g.seed = seed;
+      g.shading = shading;
+      g.strand_masks = false;
+      const AnnotatedCase c = generator::generate_case(g);
+      Options o;
+      o.face_joins = face_joins;
+      o.inpaint_strands = false;
+      o.inpaint_background = false;
+      const test::PairScore s = test::score_pairs(c, complete_strands(test::input_from_case(c), o));
+      total.predicted += s.predicted;
+      total.truth += s.truth;
+      total.correct += s.correct;
+    }
+  return total;
+}
+
 // Case-1 joins against the generator's strands, relations from its pairs:
 // flat and cel-shaded drawings, four seeds each. Floors at the measured
 // level (docs/completion.md); the targets (precision 0.95, recall 0.85) are
@@ -97,27 +126,8 @@ TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
 // 0.680, so the precision floors fail without it.
 TEST(GeneratedCases, JoinsMatchTheGeneratedStrands) {
   for (const bool face_joins : {false, true}) {
-    test::PairScore total;
-    for (generator::Shading shading : {generator::Shading::kFlat, generator::Shading::kTwoTone})
-      for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-        generator::Options g;
-        g.width = 800;
-        g.height = 640;
-        g.strand_count = 20;
-        g.seed = seed;
-        g.shading = shading;
-        g.strand_masks = false;
-        const AnnotatedCase c = generator::generate_case(g);
-        const Input in = test::input_from_case(c);
-        Options o;
-        o.face_joins = face_joins;
-        o.inpaint_strands = false;
-        o.inpaint_background = false;
-        const test::PairScore s = test::score_pairs(c, complete_strands(in, o));
-        total.predicted += s.predicted;
-        total.truth += s.truth;
-        total.correct += s.correct;
-      }
+    const test::PairScore total = score_generated(
+        {generator::Shading::kFlat, generator::Shading::kTwoTone}, 1, 4, face_joins);
     std::printf(
         "generated (flat and two-tone, seeds 1-4, face joins %s): pairs predicted %d, true %d, "
         "correct %d: precision %.3f recall %.3f\n",
@@ -136,25 +146,8 @@ TEST(GeneratedCases, JoinsMatchTheGeneratedStrands) {
 // 0.412, so the recall floor fails if the back hair's slivers stay apart
 // again.
 TEST(GeneratedCases, BackHairPiecesAreJoined) {
-  test::PairScore total;
-  for (generator::Shading shading : {generator::Shading::kFlat, generator::Shading::kGradient})
-    for (std::uint64_t seed = 101; seed <= 104; ++seed) {
-      generator::Options g;
-      g.width = 800;
-      g.height = 640;
-      g.strand_count = 20;
-      g.seed = seed;
-      g.shading = shading;
-      g.strand_masks = false;
-      const AnnotatedCase c = generator::generate_case(g);
-      Options o;
-      o.inpaint_strands = false;
-      o.inpaint_background = false;
-      const test::PairScore s = test::score_pairs(c, complete_strands(test::input_from_case(c), o));
-      total.predicted += s.predicted;
-      total.truth += s.truth;
-      total.correct += s.correct;
-    }
+  const test::PairScore total =
+      score_generated({generator::Shading::kFlat, generator::Shading::kGradient}, 101, 104, true);
   std::printf(
       "generated (flat and gradient, seeds 101-104): pairs predicted %d, true %d, correct %d: "
       "precision %.3f recall %.3f\n",
