@@ -34,11 +34,6 @@ constexpr double kSmoothSigma = 5.0;
 // this many px (a shadow under the bangs, a highlight, do not fill the skull).
 constexpr double kShadingReach = 16.0;
 
-double distance(const Rgba& a, const Rgba& b) {
-  const double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-  return std::sqrt(dr * dr + dg * dg + db * db);
-}
-
 // Mean |luma − its 3×3 median| over the skin pixels (0 on flat or softly
 // shaded skin).
 double skin_texture(const Image& image, const cv::Mat& skin) {
@@ -86,7 +81,7 @@ Head find_head(const Context& ctx, const Face& face, const InpaintOptions& optio
   for (const cv::Point& p : points) {
     const Rgba& c = image.at(p.x, p.y);
     if (ink[static_cast<std::size_t>(p.y) * w + p.x] || c.a < 240) continue;
-    if (distance(c, head.colour) > kSkinDistance) continue;
+    if (colour_distance(c, head.colour) > kSkinDistance) continue;
     head.skin.at<std::uint8_t>(p) = 1;
     ++head.skin_pixels;
   }

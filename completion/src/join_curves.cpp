@@ -1,17 +1,13 @@
 #include "join_curves.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
 #include "hair25d/completion/bezier.h"
+#include "raster.h"
 
 namespace hair25d::completion::detail {
 namespace {
-
-int wrap(int i, int n) { return ((i % n) + n) % n; }
-
-Vec2 centre(const cv::Point& p) { return {p.x + 0.5, p.y + 0.5}; }
 
 // The run's points, contour indices begin..end (unwrapped).
 Polyline run_points(const std::vector<cv::Point>& contour, int begin, int end) {
@@ -34,19 +30,10 @@ bool outline_tangent(const std::vector<cv::Point>& contour, int end, int step, i
   while (free < most && (usable.empty() || usable[wrap(end + step * (free + 1), n)] != 0)) ++free;
   const int skip = std::min(3, free / 3);
   if (free - skip < 3) return false;
-  Vec2 mean = Vec2::Zero();
-  for (int k = skip; k <= free; ++k) mean += centre(contour[wrap(end + step * k, n)]);
-  mean /= (free - skip + 1);
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (int k = skip; k <= free; ++k) {
-    const Vec2 d = centre(contour[wrap(end + step * k, n)]) - mean;
-    cov += d * d.transpose();
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-  Vec2 axis = eig.eigenvectors().col(1);
-  const Vec2 towards = centre(contour[wrap(end, n)]) - centre(contour[wrap(end + step * free, n)]);
-  if (axis.dot(towards) < 0) axis = -axis;
-  *direction = axis;
+  Polyline piece;
+  for (int k = skip; k <= free; ++k) piece.push_back(centre(contour[wrap(end + step * k, n)]));
+  *direction = principal_axis(
+      piece, centre(contour[wrap(end, n)]) - centre(contour[wrap(end + step * free, n)]));
   return true;
 }
 

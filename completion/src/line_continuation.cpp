@@ -14,11 +14,6 @@
 namespace hair25d::completion::detail {
 namespace {
 
-double colour_distance(const Rgba& a, const Rgba& b) {
-  const double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-  return std::sqrt(dr * dr + dg * dg + db * db);
-}
-
 Vec2 rotate(const Vec2& v, double a) {
   const double c = std::cos(a), s = std::sin(a);
   return {v.x() * c - v.y() * s, v.x() * s + v.y() * c};

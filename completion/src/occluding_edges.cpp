@@ -1,4 +1,3 @@
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
@@ -8,10 +7,6 @@
 
 namespace hair25d::completion::detail {
 namespace {
-
-Vec2 centre(const cv::Point& p) { return {p.x + 0.5, p.y + 0.5}; }
-
-int wrap(int i, int n) { return ((i % n) + n) % n; }
 
 // Per contour point: the nearest occluder within reach, 0 if none, with a
 // majority filter so junction pixels do not split runs.
@@ -86,19 +81,10 @@ Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<i
   auto fit_direction = [&](int from, int step, int free, Vec2* dir) {
     const int skip = std::min(3, free / 3), last = std::min(arm + skip, free);
     if (last - skip < 4) return false;
-    Vec2 mean = Vec2::Zero();
-    for (int k = skip; k <= last; ++k) mean += at(from - step * k);
-    mean /= (last - skip + 1);
-    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-    for (int k = skip; k <= last; ++k) {
-      const Vec2 d = at(from - step * k) - mean;
-      cov += d * d.transpose();
-    }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-    Vec2 axis = eig.eigenvectors().col(1);
+    Polyline piece;
+    for (int k = skip; k <= last; ++k) piece.push_back(at(from - step * k));
     // Oriented towards the end, i.e. into the hidden part.
-    if (axis.dot(at(from) - at(from - step * last)) < 0) axis = -axis;
-    *dir = axis;
+    *dir = principal_axis(piece, at(from) - at(from - step * last));
     return true;
   };
   const bool has_p = fit_direction(begin, 1, free_before, &e.tangent_p);

@@ -1,6 +1,8 @@
 // OpenCV views of the core rasters and small raster helpers (private).
 #pragma once
 
+#include <Eigen/Eigenvalues>
+#include <cmath>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -30,6 +32,31 @@ inline void require_image_size(const std::string& where, const std::string& what
 }
 
 inline int luma(const Rgba& c) { return (299 * c.r + 587 * c.g + 114 * c.b) / 1000; }
+
+// Euclidean distance of two colours in RGB (alpha ignored).
+inline double colour_distance(const Rgba& a, const Rgba& b) {
+  const double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+  return std::sqrt(dr * dr + dg * dg + db * db);
+}
+
+// Index i of a closed contour of n points, wrapped into [0, n).
+inline int wrap(int i, int n) { return ((i % n) + n) % n; }
+
+// A contour point's pixel centre.
+inline Vec2 centre(const cv::Point& p) { return {p.x + 0.5, p.y + 0.5}; }
+
+// The direction of the line fitted to `points` by total least squares (their
+// principal axis), pointing the way of `towards`. At least two points.
+inline Vec2 principal_axis(const Polyline& points, const Vec2& towards) {
+  Vec2 mean = Vec2::Zero();
+  for (const Vec2& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const Vec2& p : points) cov += (p - mean) * (p - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+  Vec2 axis = eig.eigenvectors().col(1);
+  return axis.dot(towards) < 0 ? Vec2(-axis) : axis;
+}
 
 // Fills a closed polygon (pixel centres at integer + 0.5) into `mask` (CV_8U)
 // with `value`, offset by -origin.
