@@ -216,6 +216,43 @@ Rgba head_line_colour(const Image& image, const cv::Mat& holes, const Options& o
   return ink[ink.size() / 2];
 }
 
+// The colours the hair regions are painted in: a histogram of the regions'
+// own pixels (not the outline pixels given to them) in 8-level bins. A
+// colour is typical when the bins within one step of its own hold at least
+// kTypicalShare of those pixels: black on black hair, not the dark red of an
+// iris that is as far from the hair's mean colour as the black of its tips.
+class HairColours {
+ public:
+  static constexpr int kBin = 8, kSide = 256 / kBin;
+  static constexpr double kTypicalShare = 0.005;
+
+  explicit HairColours(const Context& ctx) : count_(kSide * kSide * kSide, 0) {
+    const LabelMap& regions = *ctx.original;
+    for (int y = 0; y < regions.height(); ++y)
+      for (int x = 0; x < regions.width(); ++x)
+        if (regions.at(x, y) != 0) {
+          ++count_[bin(ctx.image->at(x, y))];
+          ++total_;
+        }
+  }
+  bool typical(const Rgba& c) const {
+    long near = 0;
+    const int r = c.r / kBin, g = c.g / kBin, b = c.b / kBin;
+    for (int i = std::max(0, r - 1); i <= std::min(kSide - 1, r + 1); ++i)
+      for (int j = std::max(0, g - 1); j <= std::min(kSide - 1, g + 1); ++j)
+        for (int k = std::max(0, b - 1); k <= std::min(kSide - 1, b + 1); ++k)
+          near += count_[static_cast<std::size_t>((i * kSide + j) * kSide + k)];
+    return total_ > 0 && static_cast<double>(near) >= kTypicalShare * static_cast<double>(total_);
+  }
+
+ private:
+  static std::size_t bin(const Rgba& c) {
+    return static_cast<std::size_t>(((c.r / kBin) * kSide + c.g / kBin) * kSide + c.b / kBin);
+  }
+  std::vector<long> count_;
+  long total_ = 0;
+};
+
 }  // namespace
 
 Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpainted) {
@@ -238,18 +275,25 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   // colour, at least 5 px thick, that touch the hair. Lines are thinner and
   // stay (the face's, glasses); so do dark clothes of another colour (a
   // sailor collar and its tie under light blue twin tails).
+  // Inside the head the colour must also be one the hair is painted in:
+  // an iris or a blush as dark as the hair is no hair.
+  cv::Mat hair_coloured(h, w, CV_8U, cv::Scalar(0));
   {
-    cv::Mat hair_coloured(h, w, CV_8U, cv::Scalar(0));
+    const HairColours painted(ctx);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         if (!dark.at<std::uint8_t>(y, x)) continue;
         const Rgba& c = image.at(x, y);
         const Eigen::Vector3d v(c.r, c.g, c.b);
+        bool near_mean = false;
         for (const auto& [id, info] : ctx.regions)
           if ((v - info.colour).norm() <= kHairColour) {
-            hair_coloured.at<std::uint8_t>(y, x) = 255;
+            near_mean = true;
             break;
           }
+        if (near_mean &&
+            (head.mask.empty() || !head.mask.at<std::uint8_t>(y, x) || painted.typical(c)))
+          hair_coloured.at<std::uint8_t>(y, x) = 255;
       }
     cv::Mat thick, grown, parts;
     cv::morphologyEx(hair_coloured, thick, cv::MORPH_OPEN,
@@ -263,19 +307,39 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
         if (thick.at<std::uint8_t>(y, x) &&
-            touches[static_cast<std::size_t>(parts.at<int>(y, x))] &&
-            (head.mask.empty() || !head.mask.at<std::uint8_t>(y, x)))
+            touches[static_cast<std::size_t>(parts.at<int>(y, x))] && true)
           hair.at<std::uint8_t>(y, x) = 255;
+  }
+  // The face's thick dark features that the hair's outline pixels took
+  // where the bangs touch them (an eye's upper lash line: thick, dark, not
+  // of the hair's colour) stay: the hair's outline is thinner.
+  cv::Mat features;
+  if (!head.mask.empty()) {
+    cv::Mat candidate(h, w, CV_8U, cv::Scalar(0));
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        candidate.at<std::uint8_t>(y, x) =
+            dark.at<std::uint8_t>(y, x) && !hair_coloured.at<std::uint8_t>(y, x) &&
+                    head.mask.at<std::uint8_t>(y, x) && ctx.original->at(x, y) == 0
+                ? 255
+                : 0;
+    cv::morphologyEx(candidate, features, cv::MORPH_OPEN,
+                     cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
   }
   // The hair's drawn outline goes with the hair: the dark pixels reached
   // from it through dark pixels within a line's width (wider where outlines
   // converge at tips, and the hair's own dark strokes along its edge).
   const cv::Mat step = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
   cv::Mat outline = hair.clone();
+  // Inside the head the face's own lines (lashes, brows, an iris darker
+  // than dark_luma) touch the bangs: there it grows only through pixels of
+  // the hair's colour (the bangs' tips and outline, not a blue eye).
+  cv::Mat reachable = dark | hair;
+  if (!head.mask.empty()) reachable &= (head.mask == 0) | hair | hair_coloured;
   for (int k = 0; k < 2 * o.outline_reach; ++k) {
     cv::Mat grown;
     cv::dilate(outline, grown, step);
-    outline = grown & (dark | hair);
+    outline = grown & reachable;
   }
   // ... with its anti-aliased rim, too light to be dark.
   cv::dilate(outline, outline, step);
@@ -283,24 +347,36 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   cv::dilate(hair, near, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(17, 17)));
   cv::dilate(hair, hair, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
   hair |= outline;
+  // On the face, a lock's point beyond the outline growth (the growth there
+  // follows the hair's colour only) is measured from the grown hair.
+  cv::Mat near_grown;
+  if (!head.mask.empty())
+    cv::dilate(hair, near_grown, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(17, 17)));
   // Where outlines converge (sharp tips) the drawn line is wider than the
   // outline reach: dark specks close to the hair are hair too. Dark pieces
   // reaching farther are other things' lines (a hair clip's, the face's) and
-  // stay, so that their colours stay closed off from the hole.
+  // stay, so that their colours stay closed off from the hole. On the face,
+  // a piece with a pixel of another colour than the hair's stays however
+  // near (an eye under the bangs).
   dark &= ~hair;
   cv::Mat pieces;
   const int count = cv::connectedComponents(dark, pieces, 8, CV_32S);
   std::vector<std::uint8_t> beyond(static_cast<std::size_t>(count), 0);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      if (dark.at<std::uint8_t>(y, x) && !near.at<std::uint8_t>(y, x))
-        beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
+      if (dark.at<std::uint8_t>(y, x)) {
+        const bool face = !head.mask.empty() && head.mask.at<std::uint8_t>(y, x);
+        const bool own = hair_coloured.at<std::uint8_t>(y, x);
+        if (face ? !own || !near_grown.at<std::uint8_t>(y, x) : !near.at<std::uint8_t>(y, x))
+          beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
+      }
   cv::Mat holes(h, w, CV_8U, cv::Scalar(0));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       holes.at<std::uint8_t>(y, x) =
           hair.at<std::uint8_t>(y, x) ||
           (dark.at<std::uint8_t>(y, x) && !beyond[static_cast<std::size_t>(pieces.at<int>(y, x))]);
+  if (!features.empty()) holes &= ~features;
   // The head: under the hair it is skin, filled from the face first; the
   // rest of the hole is filled around it, the head's outline drawn where it
   // meets the rest, so that no other colour runs into the head and the skin

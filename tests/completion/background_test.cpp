@@ -388,5 +388,89 @@ TEST(HeadBehindHair, HairOutlineGoesWithTheHairKnownPixelsStay) {
   EXPECT_EQ(far_changed, 0);
 }
 
+// The face's features where the hair touches them, and hair the
+// segmentation left on the face. The cap comes down to row 122 (black
+// outline on its last two rows); two eyes of radius 7 touch it from below,
+// within 8 px of the hair all over (before, the hair's outline growth and
+// the "dark specks near the hair" rule took them: on sylvie both eyes went).
+// With `tip`, an unlabelled lock of the cap's own colour (8 px wide,
+// tapering over 26 px) hangs from the cap between the eyes (on lucy two
+// such tips stayed over the brow); the irises are then dark red, as near
+// the hair's mean colour as the tip but a colour the hair is not painted in.
+namespace features {
+
+constexpr double kCapBottom = 122;
+constexpr double kEyeY = 128.5, kEyeR = 7;
+constexpr double kEyeX[2] = {head::kCx - 26, head::kCx + 26};
+constexpr Rgba kBlueIris{40, 50, 120, 255};
+constexpr Rgba kRedIris{110, 40, 40, 255};
+
+bool in_eye(double x, double y) {
+  for (const double ex : kEyeX)
+    if (std::hypot(x - ex, y - kEyeY) < kEyeR) return true;
+  return false;
+}
+
+bool in_tip(double x, double y) {
+  const double t = (y - (kCapBottom - 3)) / 26.0;  // 0 at its root, 1 at its point
+  return t >= 0 && t < 1 && std::abs(x - head::kCx) < 4.0 * (1 - t);
+}
+
+test::Drawing drawing(bool tip) {
+  test::Drawing d{Image(320, 250, head::kSheet), LabelMap(320, 250, 0), {}};
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const double r = std::hypot(x + 0.5 - head::kCx, y + 0.5 - head::kCy);
+      if (r < head::kR) d.image.at(x, y) = r > head::kR - 3 ? kInk : kSkin;
+    }
+  test::paint(
+      d,
+      [](double x, double y) {
+        return std::hypot(x - head::kCx, y - (head::kCy - 8)) < 84 && y < kCapBottom;
+      },
+      head::kCapHair, 1);
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      if (in_eye(x + 0.5, y + 0.5)) d.image.at(x, y) = tip ? kRedIris : kBlueIris;
+      if (tip && in_tip(x + 0.5, y + 0.5)) d.image.at(x, y) = head::kCapHair;
+    }
+  return d;
+}
+
+// Eye pixels the background keeps as drawn, of all eye pixels.
+double eyes_kept(const test::Drawing& d, const Result& r) {
+  int eye = 0, kept = 0;
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x)
+      if (in_eye(x + 0.5, y + 0.5) && d.regions.at(x, y) == 0) {
+        ++eye;
+        kept += r.background.at(x, y) == d.image.at(x, y);
+      }
+  return eye > 0 ? static_cast<double>(kept) / eye : 0.0;
+}
+
+}  // namespace features
+
+TEST(HeadBehindHair, EyesTouchingTheHairStay) {
+  const test::Drawing d = features::drawing(false);
+  const Result r = head::run(d);
+  EXPECT_GE(features::eyes_kept(d, r), 0.85);
+}
+
+TEST(HeadBehindHair, LockTipOnTheFaceGoesIrisOfAnotherColourStays) {
+  const test::Drawing d = features::drawing(true);
+  const Result r = head::run(d);
+  int tip = 0, tip_dark = 0;
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x)
+      if (features::in_tip(x + 0.5, y + 0.5) && y + 0.5 >= features::kCapBottom) {
+        ++tip;
+        tip_dark += luma(r.background.at(x, y)) < 120;
+      }
+  EXPECT_GT(tip, 70);
+  EXPECT_EQ(tip_dark, 0) << "the lock's tip is left on the forehead";
+  EXPECT_GE(features::eyes_kept(d, r), 0.85);
+}
+
 }  // namespace
 }  // namespace hair25d::completion
