@@ -13,16 +13,48 @@ namespace hair25d {
 
 namespace fs = std::filesystem;
 
-fs::path temporary_sibling(const fs::path& target) {
+namespace {
+
+// "out/" names the folder "out": without this its temporary would land inside
+// it (an empty filename) and the rename would fail.
+fs::path without_trailing_slash(const fs::path& target) {
+  return target.has_filename() || !target.has_parent_path() ? target : target.parent_path();
+}
+
+// Left in every folder written here, so that a later run knows the folder is
+// an output (a model without textures has no strands/, the next one may).
+constexpr const char* kOutputMark = ".hair25d-output";
+
+// The first entry of `old` that `fresh` does not have, or "" when every one
+// does or `old` carries the output mark. Anything else is somebody's file
+// that replacing the folder would delete.
+std::string foreign_entry(const fs::path& old, const fs::path& fresh) {
+  std::error_code ec;
+  if (fs::exists(old / kOutputMark, ec)) return "";
+  for (const auto& entry : fs::directory_iterator(old)) {
+    if (!fs::exists(fresh / entry.path().filename(), ec)) return entry.path().filename().string();
+  }
+  return "";
+}
+
+}  // namespace
+
+fs::path temporary_sibling(const fs::path& target_in) {
+  const fs::path target = without_trailing_slash(target_in);
   // A per-process counter keeps two temporaries of one process apart; the pid
   // keeps two processes apart.
   static std::atomic<unsigned> counter{0};
-  const std::string name = "." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) +
-                           "-" + std::to_string(counter++) + target.extension().string();
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "." + string.
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  name += target.extension().string();
   return target.parent_path() / name;
 }
 
-void write_atomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
+void write_atomically(const fs::path& target_in,
+                      const std::function<void(const fs::path&)>& write) {
+  const fs::path target = without_trailing_slash(target_in);
   const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::error_code ec;
   if (!fs::is_directory(parent, ec)) {
@@ -38,6 +70,18 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
   } catch (...) {
     fs::remove(tmp, ec);
     throw;
+  }
+}
+
+void check_output_file(const fs::path& target, const std::string& what) {
+  std::error_code ec;
+  if (fs::is_directory(target, ec)) {
+    throw Error(what + " " + target.string() + ": is a folder; expected a file name");
+  }
+  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  if (!fs::is_directory(parent, ec)) {
+    throw Error(what + " " + target.string() + ": the folder " + parent.string() +
+                " does not exist");
   }
 }
 
@@ -62,8 +106,9 @@ std::string read_text_file(const fs::path& path) {
   return text.str();
 }
 
-void write_folder_atomically(const fs::path& target,
+void write_folder_atomically(const fs::path& target_in,
                              const std::function<void(const fs::path&)>& fill) {
+  const fs::path target = without_trailing_slash(target_in);
   std::error_code ec;
   if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
     throw Error(target.string() + ": exists and is not a folder; refusing to replace it");
@@ -76,10 +121,20 @@ void write_folder_atomically(const fs::path& target,
   try {
     fs::create_directory(tmp);
     fill(tmp);
+    std::ofstream(tmp / kOutputMark)
+        << "written by hair25d; the folder is replaced on the next run\n";
     // rename() cannot replace a non-empty folder: move the old one aside first,
     // so that at every moment either the old or the new complete folder exists.
     const bool had_old = fs::exists(target);
-    if (had_old) fs::rename(target, old);
+    if (had_old) {
+      const std::string foreign = foreign_entry(target, tmp);
+      if (!foreign.empty()) {
+        throw Error(target.string() + ": the folder holds " + foreign +
+                    ", which this command does not write; refusing to replace it (give a new "
+                    "or empty folder, or an earlier output of this command)");
+      }
+      fs::rename(target, old);
+    }
     fs::rename(tmp, target);
     if (had_old) fs::remove_all(old, ec);
   } catch (const fs::filesystem_error& e) {

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <set>
 
 #include "hair25d/core/error.h"
@@ -20,6 +23,57 @@ cv::Scalar tint_of(int label) {
 cv::Point to_cv(const Vec2& p) {
   return cv::Point(static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())));
 }
+
+bool has_label_near(const LabelMap& labels, const Vec2& p, int radius, int label) {
+  const int cx = static_cast<int>(std::lround(p.x())), cy = static_cast<int>(std::lround(p.y()));
+  for (int y = cy - radius; y <= cy + radius; ++y)
+    for (int x = cx - radius; x <= cx + radius; ++x)
+      if (labels.contains(x, y) && labels.at(x, y) == label) return true;
+  return false;
+}
+
+// Where two regions come closest, for relations that carry no anchor of their
+// own (neighbours across a sliver, pairs the user fixed, pairs the tool missed):
+// the middle of the closest pair of their edge pixels, normal from a to b.
+class MeetingPoints {
+ public:
+  explicit MeetingPoints(const LabelMap& labels) {
+    for (int y = 0; y < labels.height(); ++y)
+      for (int x = 0; x < labels.width(); ++x) {
+        const int l = labels.at(x, y);
+        if (l <= 0) continue;
+        const bool edge = x == 0 || y == 0 || x + 1 == labels.width() || y + 1 == labels.height() ||
+                          labels.at(x - 1, y) != l || labels.at(x + 1, y) != l ||
+                          labels.at(x, y - 1) != l || labels.at(x, y + 1) != l;
+        if (edge) edges_[l].emplace_back(x, y);
+      }
+  }
+
+  std::optional<RelationAnchor> between(int a, int b) const {
+    const auto ia = edges_.find(a), ib = edges_.find(b);
+    if (ia == edges_.end() || ib == edges_.end()) return std::nullopt;
+    const std::vector<Vec2> pa = sample(ia->second), pb = sample(ib->second);
+    double best = std::numeric_limits<double>::infinity();
+    Vec2 from = Vec2::Zero(), to = Vec2::Zero();
+    for (const Vec2& p : pa)
+      for (const Vec2& q : pb)
+        if (const double d = (p - q).squaredNorm(); d < best) best = d, from = p, to = q;
+    const Vec2 d = to - from;
+    return RelationAnchor{0.5 * (from + to),
+                          d.squaredNorm() > 0 ? Vec2(d.normalized()) : Vec2(1, 0)};
+  }
+
+ private:
+  // At most ~500 pixels per region: the closest pair is then found within a
+  // few pixels for any region, at a bounded cost per pair.
+  static std::vector<Vec2> sample(const std::vector<Vec2>& all) {
+    const std::size_t step = std::max<std::size_t>(1, all.size() / 500);
+    std::vector<Vec2> out;
+    for (std::size_t i = 0; i < all.size(); i += step) out.push_back(all[i]);
+    return out;
+  }
+  std::map<int, std::vector<Vec2>> edges_;
+};
 
 }  // namespace
 
@@ -71,9 +125,19 @@ Image render_overlay(const Image& image, const Result& result,
     std::set<std::pair<int, int>> bad;
     for (auto [a, b] : wrong) bad.emplace(std::min(a, b), std::max(a, b));
     const double size = std::max(10.0, 3.0 * result.line_width);
-    for (std::size_t k = 0; k < result.relations.size() && k < result.anchors.size(); ++k) {
+    const int near = static_cast<int>(std::ceil(std::max(3.0, 2.0 * result.line_width)));
+    const MeetingPoints meeting(labels);
+    std::set<std::pair<int, int>> drawn;
+    for (std::size_t k = 0; k < result.relations.size(); ++k) {
       const RegionRelation& r = result.relations[k];
-      const RelationAnchor& an = result.anchors[k];
+      drawn.emplace(std::min(r.a, r.b), std::max(r.a, r.b));
+      RelationAnchor an = k < result.anchors.size() ? result.anchors[k] : RelationAnchor{};
+      if (!has_label_near(labels, an.point, near, r.a) ||
+          !has_label_near(labels, an.point, near, r.b)) {
+        const std::optional<RelationAnchor> found = meeting.between(r.a, r.b);
+        if (!found) continue;
+        an = *found;
+      }
       const bool is_bad = bad.contains({std::min(r.a, r.b), std::max(r.a, r.b)});
       const cv::Scalar colour = r.overridden   ? cv::Scalar(200, 0, 200)
                                 : r.user_fixed ? cv::Scalar(200, 120, 0)
@@ -97,6 +161,20 @@ Image render_overlay(const Image& image, const Result& result,
                    std::max(2, thick), cv::LINE_AA);
       cv::putText(canvas, std::to_string(r.a) + "/" + std::to_string(r.b),
                   to_cv(an.point + Vec2(0.7 * size, -0.3 * size)), cv::FONT_HERSHEY_PLAIN,
+                  std::max(0.8, size / 20.0), cv::Scalar(90, 30, 90), 1, cv::LINE_AA);
+    }
+    // Wrong pairs the tool did not relate at all: a red "?" where they meet.
+    for (const auto& [a, b] : bad) {
+      if (drawn.contains({a, b})) continue;
+      const std::optional<RelationAnchor> at = meeting.between(a, b);
+      if (!at) continue;
+      cv::circle(canvas, to_cv(at->point), static_cast<int>(size), cv::Scalar(0, 0, 255),
+                 std::max(2, thick), cv::LINE_AA);
+      cv::putText(canvas, "?", to_cv(at->point + Vec2(-0.3 * size, 0.4 * size)),
+                  cv::FONT_HERSHEY_PLAIN, std::max(0.8, size / 12.0), cv::Scalar(0, 0, 255),
+                  std::max(1, thick), cv::LINE_AA);
+      cv::putText(canvas, std::to_string(a) + "/" + std::to_string(b),
+                  to_cv(at->point + Vec2(0.7 * size, -0.3 * size)), cv::FONT_HERSHEY_PLAIN,
                   std::max(0.8, size / 20.0), cv::Scalar(90, 30, 90), 1, cv::LINE_AA);
     }
     Image out(image.width(), image.height());

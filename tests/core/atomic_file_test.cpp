@@ -55,6 +55,54 @@ TEST(AtomicFile, FolderIsReplacedOnlyWhenTheNewOneIsComplete) {
   EXPECT_THROW(write_folder_atomically(dir / "file", [](const fs::path&) {}), Error);
 }
 
+TEST(AtomicFile, FolderHoldingSomebodysFilesIsNeverReplaced) {
+  testing::TempDir dir;
+  fs::create_directory(dir / "precious");
+  std::ofstream(dir / "precious" / "notes.txt") << "mine";
+  try {
+    write_folder_atomically(dir / "precious",
+                            [](const fs::path& tmp) { std::ofstream(tmp / "model.json") << "{}"; });
+    FAIL() << "replaced a folder holding notes.txt";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("notes.txt"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_text_file(dir / "precious" / "notes.txt"), "mine");
+  EXPECT_FALSE(fs::exists(dir / "precious" / "model.json"));
+  EXPECT_EQ(count_entries(dir.path()), 1);  // no temporary left beside it
+}
+
+TEST(AtomicFile, EarlierOutputOfTheSameCommandIsReplaced) {
+  testing::TempDir dir;
+  const auto fill = [](const std::string& text) {
+    return [text](const fs::path& tmp) {
+      std::ofstream(tmp / "model.json") << text;
+      fs::create_directory(tmp / "strands");
+    };
+  };
+  write_folder_atomically(dir / "m", fill("old"));
+  std::ofstream(dir / "m" / "strands" / "s9.png") << "from a run with more strands";
+  write_folder_atomically(dir / "m", fill("new"));
+  EXPECT_EQ(read_text_file(dir / "m" / "model.json"), "new");
+  EXPECT_FALSE(fs::exists(dir / "m" / "strands" / "s9.png"));
+  // The next output may lack a name the earlier one had (no textures, no strands/).
+  write_folder_atomically(dir / "m",
+                          [](const fs::path& tmp) { std::ofstream(tmp / "model.json") << "bare"; });
+  EXPECT_EQ(read_text_file(dir / "m" / "model.json"), "bare");
+  EXPECT_FALSE(fs::exists(dir / "m" / "strands"));
+  fs::create_directory(dir / "empty");
+  write_folder_atomically(dir / "empty", fill("x"));
+  EXPECT_EQ(read_text_file(dir / "empty" / "model.json"), "x");
+}
+
+TEST(AtomicFile, TrailingSlashNamesTheFolderItself) {
+  testing::TempDir dir;
+  write_folder_atomically(dir.path() / "out/",
+                          [](const fs::path& tmp) { std::ofstream(tmp / "a.txt") << "a"; });
+  EXPECT_EQ(read_text_file(dir / "out" / "a.txt"), "a");
+  EXPECT_TRUE(fs::exists(dir / "out" / "a.txt"));
+  EXPECT_EQ(count_entries(dir.path()), 1);
+}
+
 TEST(AtomicFile, ReadingMissingOrFolderIsAnError) {
   testing::TempDir dir;
   EXPECT_THROW(read_text_file(dir / "none"), Error);

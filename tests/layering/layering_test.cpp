@@ -185,6 +185,45 @@ TEST(LayerRegions, OverlayHasTheImageSize) {
   EXPECT_THROW(render_overlay(Image(5, 4), r), Error);
 }
 
+int red_pixels_near(const Image& img, int cx, int cy, int radius) {
+  int n = 0;
+  for (int y = cy - radius; y <= cy + radius; ++y)
+    for (int x = cx - radius; x <= cx + radius; ++x) {
+      const Rgba& p = img.at(x, y);
+      n += p.r > 200 && p.g < 80 && p.b < 80;
+    }
+  return n;
+}
+
+TEST(LayerRegions, OverlayMarksPairsWithoutABoundaryWhereTheRegionsMeet) {
+  // 2 and 4 are the two pieces of the vertical strand either side of 3: they
+  // share no boundary, so a relation between them carries no anchor of its own.
+  const Scene s = crossing();
+  Options o;
+  o.fixed.push_back({2, 4, Relation::kAbove, 0.0, true, false});
+  const Result r = layer_regions(s.image, s.regions, o);
+  Result bare = r;
+  bare.relations.clear();
+  bare.anchors.clear();
+  const Image plain = render_overlay(s.image, bare);
+  const Image marked = render_overlay(s.image, r, {{4, 2}});
+  // Drawn between the pieces (they come closest about (85, 70)), not at the
+  // image corner.
+  EXPECT_GT(red_pixels_near(marked, 85, 70, 14), 10);
+  for (int y = 0; y < 12; ++y)
+    for (int x = 0; x < 12; ++x) EXPECT_EQ(marked.at(x, y), plain.at(x, y)) << x << "," << y;
+  // A wrong pair the result does not relate at all is still shown there.
+  Result missing = r;
+  for (std::size_t k = missing.relations.size(); k-- > 0;)
+    if (std::min(missing.relations[k].a, missing.relations[k].b) == 2 &&
+        std::max(missing.relations[k].a, missing.relations[k].b) == 4) {
+      missing.relations.erase(missing.relations.begin() + k);
+      missing.anchors.erase(missing.anchors.begin() + k);
+    }
+  EXPECT_GT(red_pixels_near(render_overlay(s.image, missing, {{2, 4}}), 85, 70, 14), 10);
+  EXPECT_EQ(red_pixels_near(render_overlay(s.image, missing), 85, 70, 14), 0);
+}
+
 TEST(LayerRegions, RejectsASingleRegion) {
   const Scene s = paint(60, 40, {{5, 5, 50, 30, 1, {200, 170, 120, 255}}}, 2, 0);
   try {

@@ -227,6 +227,7 @@ TEST(ModelStage, SingleRegionAndBadInput) {
   ASSERT_EQ(run.model.strands.size(), 1u);
   expect_consistent(run, regions);
   EXPECT_THROW(run_model(img, LabelMap(10, 10), std::nullopt), Error);
+  EXPECT_THROW(run_model(img, LabelMap(120, 80), std::nullopt), Error);  // no hair at all
   ModelOptions bad;
   bad.cover_reach = -1;
   EXPECT_THROW(run_model(img, regions, std::nullopt, bad), Error);

@@ -34,10 +34,19 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
   cmd->callback([args, &common] {
     pipeline::LayeringEvalOptions options;
     options.from_strokes = args->from_strokes;
-    options.overlays_dir = args->overlays_dir;
+    if (!args->json_path.empty()) check_output_file(args->json_path, "--json");
     TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
-    const pipeline::LayeringEvalReport report =
-        pipeline::evaluate_layering(args->cases_dir, options, &progress);
+    pipeline::LayeringEvalReport report;
+    if (args->overlays_dir.empty()) {
+      report = pipeline::evaluate_layering(args->cases_dir, options, &progress);
+    } else {
+      // The overlays go to a temporary folder renamed into place only when
+      // every case has been scored: a failure leaves no partial set.
+      write_folder_atomically(args->overlays_dir, [&](const std::filesystem::path& tmp) {
+        options.overlays_dir = tmp;
+        report = pipeline::evaluate_layering(args->cases_dir, options, &progress);
+      });
+    }
     if (!args->json_path.empty())
       write_text_atomically(args->json_path, pipeline::layering_report_json(report));
     std::fputs(pipeline::format_layering_table(report).c_str(), stdout);

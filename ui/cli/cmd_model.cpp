@@ -1,3 +1,4 @@
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,8 @@
 #include "hair25d/core/image_io.h"
 #include "hair25d/core/strokes.h"
 #include "hair25d/pipeline/model_stage.h"
+#include "hair25d/pipeline/segment_stage.h"
+#include "hair_colour.h"
 
 namespace hair25d::cli {
 
@@ -20,6 +23,8 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
     std::string regions;
     std::string out;
     std::vector<double> head;
+    std::string hair_colour;
+    double tolerance = 40.0;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -32,17 +37,36 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
   auto* regions = cmd->add_option(
       "--regions", args->regions,
       "regions.png: hair region ids (0 = background and outlines) instead of segmenting");
-  strokes->excludes(regions);
-  regions->excludes(strokes);
+  auto* colour = cmd->add_option(
+      "--hair-colour", args->hair_colour,
+      "Without strokes or regions: the regions of this colour (#RRGGBB) are the hair, one "
+      "strand each");
+  cmd->add_option("--colour-tolerance", args->tolerance,
+                  "RGB distance (0-255) a region's mean colour may be from --hair-colour")
+      ->check(CLI::Range(0.0, 442.0));
+  strokes->excludes(regions)->excludes(colour);
+  regions->excludes(strokes)->excludes(colour);
+  colour->excludes(strokes)->excludes(regions);
   cmd->add_option("--head", args->head, "Head centre X Y in pixels (overrides strokes.json)")
       ->expected(2);
-  cmd->add_option("-o,--output", args->out, "The model folder to write (replaced if it exists)")
+  cmd->add_option("-o,--output", args->out,
+                  "The model folder to write (an earlier model there is replaced; a folder of "
+                  "other files is refused)")
       ->required();
   cmd->callback([args, &common] {
     using Clock = std::chrono::steady_clock;
     const auto seconds_since = [](Clock::time_point t) {
       return std::chrono::duration<double>(Clock::now() - t).count();
     };
+    if (args->strokes.empty() && args->regions.empty() && args->hair_colour.empty()) {
+      // Automatic regions take every enclosed area for a strand: the paper,
+      // the face and the clothes would be completed and animated as hair.
+      throw CLI::ValidationError("model",
+                                 "say which regions are hair: --strokes S.json, --regions R.png or "
+                                 "--hair-colour #RRGGBB");
+    }
+    std::optional<std::array<std::uint8_t, 3>> hair_colour;
+    if (!args->hair_colour.empty()) hair_colour = parse_hair_colour(args->hair_colour);
     auto start = Clock::now();
     const Image image = load_image(args->image);
     const double load_seconds = seconds_since(start);
@@ -57,14 +81,21 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
                     std::to_string(regions.height()) + ", the image " +
                     std::to_string(image.width()) + "x" + std::to_string(image.height()) +
                     "; they must be the same size");
+      if (regions.labels().empty())
+        throw Error(args->regions +
+                    ": no hair region: every pixel is 0 (hair regions are 1, 2, ...)");
       run = pipeline::run_model(image, regions, head, {}, &progress);
+    } else if (hair_colour) {
+      start = Clock::now();
+      const pipeline::SegmentRun seg =
+          pipeline::run_segment_by_colour(image, *hair_colour, args->tolerance, &progress);
+      const double segment_seconds = seconds_since(start);
+      run = pipeline::run_model(image, seg.regions, head, {}, &progress);
+      run.seconds["segment"] = segment_seconds;
     } else {
-      std::optional<Strokes> s;
-      if (!args->strokes.empty()) {
-        s = read_strokes(args->strokes);
-        if (head) s->head_center = head;
-      }
-      run = pipeline::run_model(image, s ? &*s : nullptr, {}, &progress);
+      Strokes s = read_strokes(args->strokes);
+      if (head) s.head_center = head;
+      run = pipeline::run_model(image, &s, {}, &progress);
     }
     start = Clock::now();
     pipeline::write_model_run(args->out, run);

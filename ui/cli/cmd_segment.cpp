@@ -10,6 +10,7 @@
 #include "hair25d/core/image_io.h"
 #include "hair25d/core/strokes.h"
 #include "hair25d/pipeline/segment_stage.h"
+#include "hair_colour.h"
 
 namespace hair25d::cli {
 
@@ -45,16 +46,8 @@ void add_segment_command(CLI::App& app, const CommonOptions& common) {
     TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
     pipeline::SegmentRun run;
     if (!args->hair_colour.empty()) {
-      unsigned r = 0, g = 0, b = 0;
-      char tail = 0;
-      if (args->hair_colour.size() != 7 ||
-          std::sscanf(args->hair_colour.c_str(), "#%2x%2x%2x%c", &r, &g, &b, &tail) != 3)
-        throw Error("--hair-colour \"" + args->hair_colour + "\": expected #RRGGBB, e.g. #8a5a3c");
-      run = pipeline::run_segment_by_colour(
-          image,
-          {static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g),
-           static_cast<std::uint8_t>(b)},
-          args->tolerance, &progress);
+      run = pipeline::run_segment_by_colour(image, parse_hair_colour(args->hair_colour),
+                                            args->tolerance, &progress);
     } else {
       run = pipeline::run_segment(image, strokes ? &*strokes : nullptr, &progress);
     }

@@ -2,6 +2,7 @@
 // line on stderr saying what and where), 2 wrong usage.
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
 #include "commands.h"
 #include "hair25d/core/error.h"
@@ -27,6 +28,11 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const hair25d::Error& e) {
     std::fprintf(stderr, "hair25d: %s\n", e.what());
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the library did not check itself: still say which and why.
+    std::fprintf(stderr, "hair25d: %s: %s\n", e.path1().string().c_str(),
+                 e.code().message().c_str());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hair25d: internal error: %s\n", e.what());

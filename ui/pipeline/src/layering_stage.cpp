@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <system_error>
 
 #include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
@@ -25,25 +27,33 @@ LayeringCaseResult evaluate_one(const AnnotatedCase& c, const LayeringEvalOption
     throw Error("eval-layering: case '" + c.name + "' (" + c.folder.string() +
                 ") has no strokes.json; --from-strokes needs one per case");
   LabelMap regions = c.regions;
+  std::optional<layering::Result> result;
   try {
     if (options.from_strokes) regions = run_segment(c.image, &*c.strokes, nullptr, false).regions;
     const auto start = std::chrono::steady_clock::now();
-    layering::Result result = layering::layer_regions(c.image, regions, options.layering);
+    result = layering::layer_regions(c.image, regions, options.layering);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    out.score = layering::score_relations(c, result.relations);
+    out.score = layering::score_relations(c, result->relations);
     out.score.seconds = seconds;
-    if (!options.overlays_dir.empty()) {
-      std::filesystem::create_directories(options.overlays_dir);
-      save_image(options.overlays_dir / (c.name + ".png"),
-                 layering::render_overlay(c.image, result, wrong_pairs(out.score)));
-    }
   } catch (const Error& e) {
     // A case the layering refuses still counts: all its pairs are wrong.
     out.error = e.what();
     out.score = layering::score_relations(c, {});
   }
   out.score.regions = static_cast<int>(regions.labels().size());
+  // Outside the try: an overlay that cannot be written is the user's problem
+  // to hear about, not a case that scored zero.
+  if (result && !options.overlays_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(options.overlays_dir, ec);
+    if (ec) {
+      throw Error(options.overlays_dir.string() +
+                  ": cannot create the overlays folder: " + ec.message());
+    }
+    save_image(options.overlays_dir / (c.name + ".png"),
+               layering::render_overlay(c.image, *result, wrong_pairs(out.score)));
+  }
   return out;
 }
 

@@ -225,6 +225,8 @@ ModelRun run_model(const Image& image, const LabelMap& regions, std::optional<Ve
                    const ModelOptions& options, Progress* progress) {
   std::string why;
   if (!options.is_valid(&why)) throw Error(why);
+  if (regions.labels().empty())
+    throw Error("model: the regions hold no hair region (every label is 0); nothing to model");
   const auto start = Clock::now();
   std::vector<RegionRelation> relations;
   std::map<int, int> depth;

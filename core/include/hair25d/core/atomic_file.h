@@ -17,6 +17,11 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& target);
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path&)>& write);
 
+// Throws hair25d::Error naming `target` (and `what`, e.g. "--json") when a file
+// could not be written there: its folder is missing or it names a folder.
+// Called before long work so that a bad output path fails first, not last.
+void check_output_file(const std::filesystem::path& target, const std::string& what);
+
 // Writes text to a file atomically.
 void write_text_atomically(const std::filesystem::path& target, const std::string& text);
 
@@ -24,7 +29,10 @@ void write_text_atomically(const std::filesystem::path& target, const std::strin
 std::string read_text_file(const std::filesystem::path& path);
 
 // Replaces folder `target` by a folder filled by fill(tmp_folder): the old
-// folder (if any) is removed only after the new one is complete.
+// folder (if any) is removed only after the new one is complete. An existing
+// folder is replaced only when it is empty, was written by this function (it
+// leaves a hidden mark) or holds nothing but names the new one holds too;
+// otherwise it is left untouched and hair25d::Error names the foreign entry.
 void write_folder_atomically(const std::filesystem::path& target,
                              const std::function<void(const std::filesystem::path&)>& fill);
 

@@ -12,7 +12,9 @@
 namespace hair25d::layering {
 
 // Draws over a copy of `image` (same size as the result's labels, else
-// hair25d::Error). `wrong` lists (a, b) pairs, in either order, to mark.
+// hair25d::Error). `wrong` lists (a, b) pairs, in either order, to mark: a
+// red ring on the relation, or a red "?" where the two regions come closest
+// when the result does not relate them at all.
 Image render_overlay(const Image& image, const Result& result,
                      const std::vector<std::pair<int, int>>& wrong = {});
 

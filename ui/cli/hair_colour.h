@@ -1,0 +1,14 @@
+// --hair-colour #RRGGBB: the colour that tells hair regions from the rest when
+// a drawing comes without strokes (segment and model share it).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace hair25d::cli {
+
+// Parses "#RRGGBB"; throws hair25d::Error naming the value and the rule.
+std::array<std::uint8_t, 3> parse_hair_colour(const std::string& text);
+
+}  // namespace hair25d::cli
