@@ -17,6 +17,13 @@ void write_join_overlay(const std::filesystem::path& path, const AnnotatedCase& 
     for (int x = 0; x < w; ++x) {
       const Rgba& p = c.image.at(x, y);
       out.at<cv::Vec3b>(y, x) = cv::Vec3b(128 + p.b / 2, 128 + p.g / 2, 128 + p.r / 2);
+      // Each region tinted its own colour, to tell slivers apart.
+      if (const int l = c.regions.at(x, y); l != 0) {
+        const unsigned hash = static_cast<unsigned>(l) * 2654435761u;
+        const cv::Vec3b tint(hash >> 24, (hash >> 16) & 255, (hash >> 8) & 255);
+        cv::Vec3b& o = out.at<cv::Vec3b>(y, x);
+        for (int k = 0; k < 3; ++k) o[k] = static_cast<uchar>((o[k] + tint[k]) / 2);
+      }
     }
   std::map<int, cv::Point2d> centre;
   std::map<int, int> count;
@@ -71,12 +78,22 @@ void write_join_overlay(const std::filesystem::path& path, const AnnotatedCase& 
     cv::circle(out, a, 3, cv::Scalar(255, 0, 0), -1);
     if (!right) std::printf("%s: wrong %d-%d\n", name.c_str(), e.region, e.joined_region);
   }
-  for (const auto& [l, p] : centre)
-    cv::putText(out, std::to_string(l), p, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
-  Image img(w, h);
+  // Cropped to the hair and doubled, so that slivers and their ids can be read.
+  cv::Rect box;
+  for (const auto& [l, p] : centre) box |= cv::Rect(cv::Point(p), cv::Size(1, 1));
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const cv::Vec3b v = out.at<cv::Vec3b>(y, x);
+    for (int x = 0; x < w; ++x)
+      if (c.regions.at(x, y) != 0) box |= cv::Rect(x, y, 1, 1);
+  box = cv::Rect(box.x - 10, box.y - 10, box.width + 20, box.height + 20) & cv::Rect(0, 0, w, h);
+  cv::Mat zoom;
+  cv::resize(out(box), zoom, cv::Size(), 2.0, 2.0, cv::INTER_LINEAR);
+  for (const auto& [l, p] : centre)
+    cv::putText(zoom, std::to_string(l), (p - cv::Point2d(box.tl())) * 2.0,
+                cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 2);
+  Image img(zoom.cols, zoom.rows);
+  for (int y = 0; y < zoom.rows; ++y)
+    for (int x = 0; x < zoom.cols; ++x) {
+      const cv::Vec3b v = zoom.at<cv::Vec3b>(y, x);
       img.at(x, y) = Rgba{v[2], v[1], v[0], 255};
     }
   save_image(path, img);

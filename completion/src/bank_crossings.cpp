@@ -128,18 +128,34 @@ constexpr double kMinMassDepthRatio = 0.3;
 // ones 11.9-163; the annotated cases make no region-level join either way.
 constexpr double kMaxMassColourStep = 10.0;
 
+// Per RGB of texture spread in the windows (the two windows' RGB standard
+// deviations summed) beyond kTextureFloor, the step may be this much larger:
+// an 11 x 11 window's mean over screentone dots moves with the dots' phase,
+// so one tone measures 10-35 RGB apart on the two sides of a strand. On
+// generated seeds 101-116 screentone windows spread 250-340 and the right
+// candidates stepped 12-35 (wrong ones 78-240); flat, cel and gradient
+// windows spread 0-50, the annotated cases' 19-65 (line rims, shading
+// strokes) — there a looser step joined a wrong pair (case1 8-14: 11.6 RGB,
+// spread 45), so below the floor the tolerance stays kMaxMassColourStep.
+constexpr double kMassSpreadShare = 0.1;
+constexpr double kTextureFloor = 60.0;
+
 struct MassRay {
   int index = 0;  // along the outline
   Vec2 from{0, 0}, to{0, 0};
   double depth = 0.0;
   Eigen::Vector3d colour_from{0, 0, 0}, colour_to{0, 0, 0};
+  double spread = 0.0;  // the two windows' RGB standard deviations, summed
 };
 
 // Mean colour of a region's drawn pixels (not outlines) within 3 px of a
-// point a few pixels inside it along `inward`.
-Eigen::Vector3d colour_near(const Context& ctx, int region, const Vec2& at, const Vec2& inward) {
+// point a few pixels inside it along `inward`; `spread` (if given) gets
+// their RGB standard deviation.
+Eigen::Vector3d colour_near(const Context& ctx, int region, const Vec2& at, const Vec2& inward,
+                            double* spread = nullptr) {
   const Vec2 c = at + 6.0 * inward;
   Eigen::Vector3d sum(0, 0, 0);
+  double squares = 0.0;
   int count = 0;
   for (int dy = -5; dy <= 5; ++dy)
     for (int dx = -5; dx <= 5; ++dx) {
@@ -147,14 +163,29 @@ Eigen::Vector3d colour_near(const Context& ctx, int region, const Vec2& at, cons
       const int y = static_cast<int>(std::floor(c.y())) + dy;
       if (!ctx.original->contains(x, y) || ctx.original->at(x, y) != region) continue;
       const Rgba& px = ctx.image->at(x, y);
-      sum += Eigen::Vector3d(px.r, px.g, px.b);
+      const Eigen::Vector3d v(px.r, px.g, px.b);
+      sum += v;
+      squares += v.squaredNorm();
       ++count;
     }
-  return count > 0 ? Eigen::Vector3d(sum / count) : ctx.regions.at(region).colour;
+  if (count == 0) {
+    if (spread) *spread = 0.0;
+    return ctx.regions.at(region).colour;
+  }
+  const Eigen::Vector3d mean = sum / count;
+  if (spread) *spread = std::sqrt(std::max(0.0, squares / count - mean.squaredNorm()));
+  return mean;
 }
 
 // Median over rays of the colour step across the cut: shading (gradients,
 // cel bands, tone) changes little across a strand but much across a head.
+double median_spread(const std::vector<MassRay>& list) {
+  std::vector<double> v;
+  for (const MassRay& r : list) v.push_back(r.spread);
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
 double median_colour_step(const std::vector<MassRay>& list) {
   std::vector<double> steps;
   for (const MassRay& r : list) steps.push_back((r.colour_from - r.colour_to).norm());
@@ -210,8 +241,10 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
         if (!ctx.is_above(last, l)) break;
         double depth = 0.0;
         while (depth < 200.0 && ctx.label(p - (depth + 1.0) * normal) == id) depth += 1.0;
-        rays[id][l].push_back(
-            {i, p, x, depth, colour_near(ctx, id, p, -normal), colour_near(ctx, l, x, normal)});
+        double spread_from = 0.0, spread_to = 0.0;
+        const Eigen::Vector3d from = colour_near(ctx, id, p, -normal, &spread_from);
+        const Eigen::Vector3d to = colour_near(ctx, l, x, normal, &spread_to);
+        rays[id][l].push_back({i, p, x, depth, from, to, spread_from + spread_to});
         break;
       }
     }
@@ -227,7 +260,9 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
       if (fewer < kMinMassRays) continue;
       double j_colour = 0.0;
       j_colour = std::max(median_colour_step(ab), median_colour_step(ba));
-      if (j_colour > kMaxMassColourStep) continue;
+      const double spread = std::max(median_spread(ab), median_spread(ba));
+      if (j_colour > kMaxMassColourStep + kMassSpreadShare * std::max(0.0, spread - kTextureFloor))
+        continue;
       // Both pieces wide behind the cut, compared with the strands crossed.
       auto wide = [](const std::vector<MassRay>& list) {
         double across = 0.0, depth = 0.0;
