@@ -216,42 +216,18 @@ Rgba head_line_colour(const Image& image, const cv::Mat& holes, const Options& o
   return ink[ink.size() / 2];
 }
 
-// The colours the hair regions are painted in: a histogram of the regions'
-// own pixels (not the outline pixels given to them) in 8-level bins. A
-// colour is typical when the bins within one step of its own hold at least
-// kTypicalShare of those pixels: black on black hair, not the dark red of an
+// The colours the hair regions are painted in (their own pixels, not the
+// outline pixels given to them): black on black hair, not the dark red of an
 // iris that is as far from the hair's mean colour as the black of its tips.
-class HairColours {
- public:
-  static constexpr int kBin = 8, kSide = 256 / kBin;
-  static constexpr double kTypicalShare = 0.005;
-
-  explicit HairColours(const Context& ctx) : count_(kSide * kSide * kSide, 0) {
-    const LabelMap& regions = *ctx.original;
-    for (int y = 0; y < regions.height(); ++y)
-      for (int x = 0; x < regions.width(); ++x)
-        if (regions.at(x, y) != 0) {
-          ++count_[bin(ctx.image->at(x, y))];
-          ++total_;
-        }
-  }
-  bool typical(const Rgba& c) const {
-    long near = 0;
-    const int r = c.r / kBin, g = c.g / kBin, b = c.b / kBin;
-    for (int i = std::max(0, r - 1); i <= std::min(kSide - 1, r + 1); ++i)
-      for (int j = std::max(0, g - 1); j <= std::min(kSide - 1, g + 1); ++j)
-        for (int k = std::max(0, b - 1); k <= std::min(kSide - 1, b + 1); ++k)
-          near += count_[static_cast<std::size_t>((i * kSide + j) * kSide + k)];
-    return total_ > 0 && static_cast<double>(near) >= kTypicalShare * static_cast<double>(total_);
-  }
-
- private:
-  static std::size_t bin(const Rgba& c) {
-    return static_cast<std::size_t>(((c.r / kBin) * kSide + c.g / kBin) * kSide + c.b / kBin);
-  }
-  std::vector<long> count_;
-  long total_ = 0;
-};
+CommonColours hair_colours(const Context& ctx) {
+  constexpr double kTypicalShare = 0.005;
+  CommonColours colours(kTypicalShare);
+  const LabelMap& regions = *ctx.original;
+  for (int y = 0; y < regions.height(); ++y)
+    for (int x = 0; x < regions.width(); ++x)
+      if (regions.at(x, y) != 0) colours.add(ctx.image->at(x, y));
+  return colours;
+}
 
 }  // namespace
 
@@ -279,7 +255,7 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   // an iris or a blush as dark as the hair is no hair.
   cv::Mat hair_coloured(h, w, CV_8U, cv::Scalar(0));
   {
-    const HairColours painted(ctx);
+    const CommonColours painted = hair_colours(ctx);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         if (!dark.at<std::uint8_t>(y, x)) continue;
@@ -292,7 +268,7 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
             break;
           }
         if (near_mean &&
-            (head.mask.empty() || !head.mask.at<std::uint8_t>(y, x) || painted.typical(c)))
+            (head.mask.empty() || !head.mask.at<std::uint8_t>(y, x) || painted.common(c)))
           hair_coloured.at<std::uint8_t>(y, x) = 255;
       }
     cv::Mat thick, grown, parts;

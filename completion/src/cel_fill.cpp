@@ -14,14 +14,52 @@
 
 namespace hair25d::completion::detail {
 
+bool CommonColours::common(const Rgba& c) const {
+  long near = 0;
+  const int r = c.r / kBin, g = c.g / kBin, b = c.b / kBin;
+  for (int i = std::max(0, r - 1); i <= std::min(kSide - 1, r + 1); ++i)
+    for (int j = std::max(0, g - 1); j <= std::min(kSide - 1, g + 1); ++j)
+      for (int k = std::max(0, b - 1); k <= std::min(kSide - 1, b + 1); ++k)
+        near += count_[static_cast<std::size_t>((i * kSide + j) * kSide + k)];
+  return total_ > 0 && static_cast<double>(near) >= share_ * static_cast<double>(total_);
+}
+
+namespace {
+
+bool usable_source(const LabelMap& fill, const LabelMap& source, int x, int y) {
+  return fill.at(x, y) == 0 && (source.empty() || source.at(x, y) != 0);
+}
+
+}  // namespace
+
+InpaintOptions source_ink_options(const Image& image, const LabelMap& fill, const LabelMap& source,
+                                  const InpaintOptions& options) {
+  std::vector<int> lumas;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      if (usable_source(fill, source, x, y) && image.at(x, y).a >= 128)
+        lumas.push_back(luma(image.at(x, y)));
+  InpaintOptions o = options;
+  if (lumas.empty()) return o;
+  std::nth_element(lumas.begin(), lumas.begin() + lumas.size() / 2, lumas.end());
+  o.ink_luma = std::min(o.ink_luma, lumas[lumas.size() / 2] / 2);
+  return o;
+}
+
 Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& source,
                   const InpaintOptions& options) {
+  // A source colour is a flat one when at least this share of the sources
+  // is painted in it (hair a segmentation gave a few pixels of the face,
+  // the dress or a highlight's rim does not fill its hidden part with them).
+  constexpr double kCommonShare = 0.01;
   const int w = image.width(), h = image.height();
   const std::vector<std::uint8_t> ink = ink_mask(image, options);
   auto idx = [w](int x, int y) { return static_cast<std::size_t>(y) * w + x; };
-  auto usable = [&](int x, int y) {
-    return fill.at(x, y) == 0 && (source.empty() || source.at(x, y) != 0);
-  };
+  auto usable = [&](int x, int y) { return usable_source(fill, source, x, y); };
+  CommonColours colours(kCommonShare);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (usable(x, y) && !ink[idx(x, y)]) colours.add(image.at(x, y));
   // Flat pixels: usable, not ink and not next to ink (the anti-aliased rim of
   // a line is neither line nor region colour). distanceTransform measures the
   // distance to the nearest zero, so flat pixels are the zeros.
@@ -39,7 +77,8 @@ Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& sour
             break;
           }
         }
-      if (!near_ink) not_flat.at<std::uint8_t>(y, x) = 0, ++flat_count;
+      if (!near_ink && colours.common(image.at(x, y)))
+        not_flat.at<std::uint8_t>(y, x) = 0, ++flat_count;
     }
   if (flat_count == 0) {
     // No flat pixel: fall back to every usable pixel.
@@ -60,17 +99,25 @@ Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& sour
         if (l >= 0 && static_cast<std::size_t>(l) < colour_of.size())
           colour_of[static_cast<std::size_t>(l)] = image.at(x, y);
       }
+  // The median below reads the hole pixels' neighbours too: pixels that are
+  // no source (the paper or a face round a strand's texture, transparent
+  // there) take their nearest flat colour as well, or they would bleed into
+  // the hole's rim (completed hair turned transparent or face-coloured).
+  Image nearest = image;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      if (fill.at(x, y) != 0) {
+      if (!usable(x, y)) {
         const int l = labels.at<int>(y, x);
         if (l >= 0 && static_cast<std::size_t>(l) < colour_of.size())
-          guide.at(x, y) = colour_of[static_cast<std::size_t>(l)];
+          nearest.at(x, y) = colour_of[static_cast<std::size_t>(l)];
       }
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (fill.at(x, y) != 0) guide.at(x, y) = nearest.at(x, y);
   // Nearest-pixel fill leaves ragged Voronoi seams; a median keeps the flat
   // colours and straightens the seams. Only hole pixels take it.
   cv::Mat smooth;
-  cv::medianBlur(view(guide), smooth, 5);
+  cv::medianBlur(view(nearest), smooth, 5);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       if (fill.at(x, y) != 0) {

@@ -666,8 +666,9 @@ InpaintResult inpaint_cel(Image& image, const LabelMap& fill, const LabelMap& so
                           const InpaintOptions& options) {
   check_inputs(image, fill, source, options);
   if (image.empty()) return {};
-  const Image guide = detail::coarse_fill(image, fill, source, options);
-  return detail::run_exemplar(image, fill, source, options, &guide);
+  const InpaintOptions o = detail::source_ink_options(image, fill, source, options);
+  const Image guide = detail::coarse_fill(image, fill, source, o);
+  return detail::run_exemplar(image, fill, source, o, &guide);
 }
 
 }  // namespace hair25d::completion

@@ -12,6 +12,33 @@ namespace hair25d::completion::detail {
 // a luma step above options.ink_step.
 std::vector<std::uint8_t> ink_mask(const Image& image, const InpaintOptions& options);
 
+// The colours a set of pixels is painted in: a histogram in 8-level bins. A
+// colour is common when the bins within one step of its own hold at least
+// `share` of the pixels (a flat fill, its shading bands, the lines), not the
+// few pixels of another colour a segmentation or an anti-aliased rim gives.
+class CommonColours {
+ public:
+  explicit CommonColours(double share) : share_(share), count_(kSide * kSide * kSide, 0) {}
+  void add(const Rgba& c) { ++count_[bin(c)], ++total_; }
+  bool common(const Rgba& c) const;
+  long total() const { return total_; }
+
+ private:
+  static constexpr int kBin = 8, kSide = 256 / kBin;
+  static std::size_t bin(const Rgba& c) {
+    return static_cast<std::size_t>(((c.r / kBin) * kSide + c.g / kBin) * kSide + c.b / kBin);
+  }
+  double share_;
+  std::vector<long> count_;
+  long total_ = 0;
+};
+
+// The options inpaint_cel works with for these sources: ink_luma no higher
+// than half the sources' median luma, so that on dark hair the fill is not
+// taken for ink (only its darker lines are).
+InpaintOptions source_ink_options(const Image& image, const LabelMap& fill, const LabelMap& source,
+                                  const InpaintOptions& options);
+
 // The coarse fill of inpaint_cel: `image` with every `fill` pixel set to the
 // colour of the nearest known, ink-free source pixel.
 Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& source,

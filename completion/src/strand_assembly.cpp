@@ -129,7 +129,7 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
   bool any_fill = false;
   for (std::size_t i = 0; i < fill.size() && !any_fill; ++i) any_fill = fill.data()[i] != 0;
   if (any_fill && o.inpaint_strands) {
-    const InpaintResult r = inpaint_exemplar(s.texture, fill, source, o.inpaint);
+    const InpaintResult r = inpaint_cel(s.texture, fill, source, o.inpaint);
     inpainted->filled += r.filled;
     inpainted->patches += r.patches;
     inpainted->unfilled += r.unfilled;

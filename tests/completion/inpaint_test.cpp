@@ -273,6 +273,57 @@ TEST(InpaintCel, TransparentSheetStaysTransparent) {
     for (int x = 40; x < 70; ++x) ASSERT_LT(img.at(x, y).a, 16) << x << "," << y;
 }
 
+// A strand's texture as the completion builds it (transparent round the
+// strand, the sources its visible pixels): near-black hair (fill of luma
+// ~43 with darker vertical lines every 12 px) holding a 4×4 fleck of skin,
+// 0.3% of its pixels, that a segmentation gave it, next to the hidden part.
+// The hidden part runs along the strand's lower edge and on into a tail
+// 3 px wide over the transparent paper. Before, every hair pixel was ink
+// (luma < ink_luma), so the skin was the only flat colour: the guide was
+// skin and the fleck was copied into the hidden part; and the coarse fill's
+// median read the transparent paper round the tail: it came out
+// transparent.
+struct DarkStrand {
+  static constexpr int kW = 120, kH = 96;
+  static constexpr Rgba kFill{45, 40, 50, 255}, kLine{8, 6, 10, 255};
+  Image image{kW, kH, Rgba{0, 0, 0, 0}};
+  LabelMap fill{kW, kH}, source{kW, kH};
+  static bool tail(int x, int y) { return x >= 60 && x < 63 && y >= 70 && y < 86; }
+  DarkStrand() {
+    for (int y = 10; y < kH; ++y)
+      for (int x = 10; x < 110; ++x) {
+        if (y >= 70 && !tail(x, y)) continue;
+        image.at(x, y) = x % 12 < 2 ? kLine : kFill;
+        if (x >= 44 && x < 48 && y >= 44 && y < 48) image.at(x, y) = kSkin;
+        const bool hidden = (x >= 50 && x < 90 && y >= 40) || tail(x, y);
+        (hidden ? fill : source).at(x, y) = 1;
+      }
+  }
+};
+
+TEST(InpaintCel, DarkHairIsContinuedInItsOwnColoursOpaque) {
+  DarkStrand s;
+  const Image before = s.image;
+  const InpaintResult r = inpaint_cel(s.image, s.fill, s.source);
+  EXPECT_EQ(r.filled, 40 * 30 + 3 * 16);
+  int hidden = 0, dark = 0, skin = 0, transparent = 0;
+  for (int y = 0; y < DarkStrand::kH; ++y)
+    for (int x = 0; x < DarkStrand::kW; ++x) {
+      const Rgba& c = s.image.at(x, y);
+      if (!s.fill.at(x, y)) {
+        ASSERT_EQ(c, before.at(x, y)) << "known pixel changed at " << x << "," << y;
+        continue;
+      }
+      ++hidden;
+      transparent += c.a < 255;
+      dark += channel_gap(c, DarkStrand::kFill) <= 12 || channel_gap(c, DarkStrand::kLine) <= 12;
+      skin += channel_gap(c, kSkin) <= 60;
+    }
+  EXPECT_EQ(transparent, 0);
+  EXPECT_EQ(skin, 0);
+  EXPECT_GE(dark, hidden * 98 / 100) << dark << " of " << hidden;
+}
+
 TEST(InpaintCel, BadInputThrows) {
   Image img(20, 30);
   EXPECT_THROW(inpaint_cel(img, LabelMap(30, 20), LabelMap{}), Error);
