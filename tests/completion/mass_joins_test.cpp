@@ -140,5 +140,41 @@ TEST(MassJoins, PiecesLyingOnOtherHairAreNotBackHair) {
   EXPECT_EQ(s->regions, (std::vector<int>{1}));
 }
 
+// Screentone: dark square dots `dot` px wide every `period` px on a light
+// ground, shifted by `phase` px, over a region's pixels inside `box`.
+void tone(Drawing& d, int region, int period, int dot, int phase) {
+  for (int y = 0; y < d.image.height(); ++y)
+    for (int x = 0; x < d.image.width(); ++x) {
+      if (d.regions.at(x, y) != region) continue;
+      const bool dark = (x + phase) % period < dot && (y + phase) % period < dot;
+      d.image.at(x, y) = dark ? Rgba{60, 40, 30, 255} : Rgba{235, 205, 175, 255};
+    }
+}
+
+TEST(MassJoins, PiecesOfOneScreentoneAreJoined) {
+  // The same tone on both pieces, its dots 3 px off between them: the 11 x 11
+  // windows' means next to the cut differ by more than the plain step limit
+  // allowed (with kMassSpreadShare = 0 this test fails), but by little against the
+  // tone's own spread.
+  Drawing d = back_hair_under_fan(kBack);
+  tone(d, 1, 6, 3, 0);
+  tone(d, 2, 6, 3, 3);
+  const Result r = run(d);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1, 2}));
+}
+
+TEST(MassJoins, PiecesOfAnotherScreentoneAreNotJoined) {
+  // A denser tone on the right piece (dark share 9/16 against 9/36): another lock.
+  Drawing d = back_hair_under_fan(kBack);
+  tone(d, 1, 6, 3, 0);
+  tone(d, 2, 4, 3, 0);
+  const Result r = run(d);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1}));
+}
+
 }  // namespace
 }  // namespace hair25d::completion
