@@ -229,6 +229,34 @@ CommonColours hair_colours(const Context& ctx) {
   return colours;
 }
 
+// Small pieces of the drawing the hole encloses (a headband's fragments or
+// a highlight the segmentation left between hair regions: on lucy, white
+// specks floated on the bald head) lie on the hair and go with it. What is
+// behind the hair always reaches out of it (the face to the neck, the
+// paper to the image's edge), and the face's features are joined to it.
+void take_islands(cv::Mat& holes) {
+  // An island holds at most this share of the hole's pixels.
+  constexpr double kIslandShare = 0.02;
+  cv::Mat known = holes == 0, parts;
+  const int n = cv::connectedComponents(known, parts, 8, CV_32S);
+  std::vector<long> area(static_cast<std::size_t>(n), 0);
+  std::vector<std::uint8_t> edge(static_cast<std::size_t>(n), 0);
+  const int w = holes.cols, h = holes.rows;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const auto k = static_cast<std::size_t>(parts.at<int>(y, x));
+      ++area[k];
+      if (x == 0 || y == 0 || x == w - 1 || y == h - 1) edge[k] = 1;
+    }
+  const double limit = kIslandShare * cv::countNonZero(holes);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const auto k = static_cast<std::size_t>(parts.at<int>(y, x));
+      if (k != 0 && !edge[k] && static_cast<double>(area[k]) <= limit)
+        holes.at<std::uint8_t>(y, x) = 255;
+    }
+}
+
 }  // namespace
 
 Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpainted) {
@@ -353,6 +381,7 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
           hair.at<std::uint8_t>(y, x) ||
           (dark.at<std::uint8_t>(y, x) && !beyond[static_cast<std::size_t>(pieces.at<int>(y, x))]);
   if (!features.empty()) holes &= ~features;
+  take_islands(holes);
   // The head: under the hair it is skin, filled from the face first; the
   // rest of the hole is filled around it, the head's outline drawn where it
   // meets the rest, so that no other colour runs into the head and the skin

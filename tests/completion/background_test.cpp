@@ -472,5 +472,31 @@ TEST(HeadBehindHair, LockTipOnTheFaceGoesIrisOfAnotherColourStays) {
   EXPECT_GE(features::eyes_kept(d, r), 0.85);
 }
 
+// Two white specks (12×7) the segmentation left inside the cap, label 0: one
+// over the skull, one over the sheet beside the face. They lie on the hair
+// and go with it (before, on lucy, headband fragments floated on the bald
+// head): skin over the skull, the sheet beside the face.
+TEST(HeadBehindHair, SpecksTheHairEnclosesGoWithIt) {
+  test::Drawing d = head::drawing();
+  constexpr Rgba kWhite{250, 250, 250, 255};
+  const Box specks[2] = {{154, 86, 166, 93}, {92, 96, 104, 103}};
+  for (const Box& b : specks)
+    for (int y = b.y0; y < b.y1; ++y)
+      for (int x = b.x0; x < b.x1; ++x) {
+        ASSERT_EQ(d.regions.at(x, y), 1);
+        d.regions.at(x, y) = 0;
+        d.image.at(x, y) = kWhite;
+      }
+  const Result r = head::run(d);
+  int skull_skin = 0, sheet = 0;
+  for (int y = specks[0].y0; y < specks[0].y1; ++y)
+    for (int x = specks[0].x0; x < specks[0].x1; ++x)
+      skull_skin += colour_distance(r.background.at(x, y), kSkin) <= 12;
+  for (int y = specks[1].y0; y < specks[1].y1; ++y)
+    for (int x = specks[1].x0; x < specks[1].x1; ++x) sheet += r.background.at(x, y).a < 16;
+  EXPECT_EQ(skull_skin, 84) << "the speck over the skull is left";
+  EXPECT_EQ(sheet, 84) << "the speck over the sheet is left";
+}
+
 }  // namespace
 }  // namespace hair25d::completion
