@@ -9,6 +9,12 @@
 #include <cstdint>
 #include <string>
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define HAIR25D_TRACE_AVX2 1
+#endif
+
+#include "boundary_trace.h"
 #include "hair25d/core/error.h"
 #include "raster_scan.h"
 
@@ -129,6 +135,43 @@ int continue_direction(const std::array<int, 4>& q, int arrived) {
   return join_main_diagonal ? kPairMain[back] : kPairOther[back];
 }
 
+#if defined(HAIR25D_TRACE_AVX2)
+// One row of inner corners eight at a time: calls visit(x) for every x in
+// [1, n) where the row above or the row below changes label from x − 1 to x
+// (in increasing x), and returns how many of x in [1, n) have above[x] !=
+// below[x] (crack edges between the rows). Returns the first x not done.
+__attribute__((target("avx2"))) inline __m256i at(const int* p) {
+  return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
+}
+
+template <class F>
+__attribute__((target("avx2,popcnt"))) int corner_row_avx2(const int* above, const int* below,
+                                                           int n, F&& visit, long long* crossing) {
+  int x = 1;
+  long long count = 0;
+  for (; x + 8 <= n; x += 8) {
+    const __m256i a = at(above + x), b = at(below + x);
+    const __m256i same = _mm256_and_si256(_mm256_cmpeq_epi32(at(above + x - 1), a),
+                                          _mm256_cmpeq_epi32(at(below + x - 1), b));
+    unsigned changes =
+        ~static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(same))) & 0xFFu;
+    count += 8 - __builtin_popcount(static_cast<unsigned>(
+                     _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(a, b)))));
+    for (; changes != 0; changes &= changes - 1) visit(x + std::countr_zero(changes));
+  }
+  *crossing += count;
+  return x;
+}
+#endif
+
+bool trace_avx2_available() {
+#if defined(HAIR25D_TRACE_AVX2)
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("popcnt");
+#else
+  return false;
+#endif
+}
+
 }  // namespace
 
 double Boundary::length() const {
@@ -138,6 +181,12 @@ double Boundary::length() const {
 }
 
 BoundaryGraph build_boundary_graph(const LabelMap& labels) {
+  return detail::build_boundary_graph(labels, true);
+}
+
+namespace detail {
+
+BoundaryGraph build_boundary_graph(const LabelMap& labels, bool wide_rows) {
   if (labels.empty())
     throw Error("layering: label map is empty (" + std::to_string(labels.width()) + "x" +
                 std::to_string(labels.height()) + "); need at least one pixel");
@@ -169,16 +218,38 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   std::vector<std::uint8_t> changes_above(static_cast<std::size_t>(w) + 1, 0);
   std::vector<std::uint8_t> changes_below(static_cast<std::size_t>(w) + 1, 0);
   if (h > 0 && w > 1) detail::not_equal(labels.data(), labels.data() + 1, w - 1, &changes_below[1]);
+  // With AVX2 the rows are compared eight labels at a time, and the crack
+  // edges between rows are counted on the way: when the traces from the
+  // junctions have walked all of them, there is no closed loop left to look
+  // for (every loop has one), and the second scan below is skipped.
+  const bool wide = wide_rows && trace_avx2_available();
+  long long horizontal = 0;
   for (int y = 0; y <= h; ++y) {
     if (y == 0 || y == h) {
       for (int x = 0; x <= w; ++x) visit_corner(x, y);
+      const int* row = labels.data() + static_cast<std::size_t>(y == 0 ? 0 : h - 1) * w;
+      for (int x = 0; x < w; ++x) horizontal += row[x] != kOutsideLabel;
       continue;
     }
-    changes_above.swap(changes_below);
     const int* below = labels.data() + static_cast<std::size_t>(y) * w;
+    visit_corner(0, y);
+#if defined(HAIR25D_TRACE_AVX2)
+    if (wide) {
+      const int* above = below - w;
+      auto visit = [&](int x) { visit_corner(x, y); };
+      int x = corner_row_avx2(above, below, w, visit, &horizontal);
+      for (; x < w; ++x) {
+        if (above[x - 1] != above[x] || below[x - 1] != below[x]) visit_corner(x, y);
+        horizontal += above[x] != below[x];
+      }
+      horizontal += above[0] != below[0];
+      visit_corner(w, y);
+      continue;
+    }
+#endif
+    changes_above.swap(changes_below);
     if (w > 1) detail::not_equal(below, below + 1, w - 1, &changes_below[1]);
     for (int x = 1; x < w; ++x) differs[x] = changes_above[x] | changes_below[x];
-    visit_corner(0, y);
     for_each_set(differs, 1, w, [&](int x) { visit_corner(x, y); });
     visit_corner(w, y);
   }
@@ -190,6 +261,7 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   };
 
   Bits visited(grid.edge_count());
+  long long walked_horizontal = 0;  // crack edges walked between rows
   const std::size_t edge_limit = grid.edge_count();
   // A chain's corners are gathered here, then copied into its boundary at
   // their final size (growing each boundary's own vector cost more).
@@ -202,7 +274,9 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
     chain.emplace_back(x0, y0);
     int x = x0, y = y0, d = d0;
     for (;;) {
-      visited.set(grid.edge_index(x, y, d));
+      // Counted only when first set, so the count never passes the edges
+      // there are, whatever the walk does.
+      if (visited.test_and_set(grid.edge_index(x, y, d))) walked_horizontal += (d & 1) == 0;
       x += kDx[d];
       y += kDy[d];
       const int j = junction_at(x, y);
@@ -242,6 +316,7 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   // What is left are closed loops with no junction (a region inside another).
   // A loop is found at its first horizontal crack edge in raster order: an
   // edge rightwards from corner (x, y) lies between pixels (x, y-1) and (x, y).
+  if (wide && walked_horizontal == horizontal) return graph;
   std::vector<int> outside(static_cast<std::size_t>(w), kOutsideLabel);
   for (int y = 0; y <= h; ++y) {
     const int* above = y > 0 ? labels.data() + static_cast<std::size_t>(y - 1) * w : outside.data();
@@ -253,5 +328,7 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
   }
   return graph;
 }
+
+}  // namespace detail
 
 }  // namespace hair25d::layering

@@ -12,6 +12,10 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define HAIR25D_LAYERING_AVX2 1
+#endif
 
 #include "hair25d/core/error.h"
 #include "raster_scan.h"
@@ -47,19 +51,59 @@ inline Float4 colour_value(const Rgba& p) {
                 0.0f};
 }
 
+#if defined(HAIR25D_LAYERING_AVX2)
+// grey_into's opaque formula eight pixels at a time, four per double vector:
+// the same products and sums in the same order, so the same floats. Returns
+// how many pixels it did (a multiple of 8) and ANDs their alphas into `alpha`.
+__attribute__((target("avx2"))) int grey_row_avx2(const Rgba* src, int n, float* row,
+                                                  unsigned* alpha) {
+  const __m256i byte = _mm256_set1_epi32(0xFF);
+  const __m256d wr = _mm256_set1_pd(0.299), wg = _mm256_set1_pd(0.587), wb = _mm256_set1_pd(0.114);
+  __m256i alphas = _mm256_set1_epi32(-1);
+  int x = 0;
+  for (; x + 8 <= n; x += 8) {
+    const __m256i px = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(src + x));
+    const __m256i r8 = _mm256_and_si256(px, byte);
+    const __m256i g8 = _mm256_and_si256(_mm256_srli_epi32(px, 8), byte);
+    const __m256i b8 = _mm256_and_si256(_mm256_srli_epi32(px, 16), byte);
+    alphas = _mm256_and_si256(alphas, px);
+    __m128 half[2];
+    for (int h = 0; h < 2; ++h) {
+      const __m128i r4 = h == 0 ? _mm256_castsi256_si128(r8) : _mm256_extracti128_si256(r8, 1);
+      const __m128i g4 = h == 0 ? _mm256_castsi256_si128(g8) : _mm256_extracti128_si256(g8, 1);
+      const __m128i b4 = h == 0 ? _mm256_castsi256_si128(b8) : _mm256_extracti128_si256(b8, 1);
+      const __m256d lum = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(wr, _mm256_cvtepi32_pd(r4)),
+                                                      _mm256_mul_pd(wg, _mm256_cvtepi32_pd(g4))),
+                                        _mm256_mul_pd(wb, _mm256_cvtepi32_pd(b4)));
+      half[h] = _mm256_cvtpd_ps(lum);
+    }
+    _mm256_storeu_ps(row + x, _mm256_set_m128(half[1], half[0]));
+  }
+  alignas(32) std::uint32_t lanes[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), alphas);
+  for (std::uint32_t v : lanes) *alpha &= v >> 24;
+  return x;
+}
+#endif
+
 // Fills `grey` (window-sized) in `r` from the window at (x0, y0) of `image`.
 // Rows are made as if opaque (a = 1 leaves lum unchanged, exactly) and only
 // redone pixel by pixel when some alpha is not 255.
 // `translucent`, if given, gets a flag per row of `r`: does it hold a pixel
 // with alpha below 255?
 void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& grey,
-               std::uint8_t* translucent = nullptr) {
+               std::uint8_t* translucent = nullptr, bool wide = false) {
   static_assert(sizeof(Rgba) == 4);
   for (int y = r.y; y < r.y + r.height; ++y) {
     float* row = grey.ptr<float>(y) + r.x;
     const Rgba* src = image.data() + static_cast<std::size_t>(y0 + y) * image.width() + x0 + r.x;
     unsigned alpha = 255;
     int x = 0;
+#if defined(HAIR25D_LAYERING_AVX2)
+    if (wide) x = grey_row_avx2(src, r.width, row, &alpha);
+#else
+    (void)wide;
+#endif
 #if defined(__SSE2__)
     // Four pixels at a time, two per double vector: the same products and
     // sums in the same order as below, so the same floats.
@@ -98,10 +142,61 @@ void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& g
   }
 }
 
+#if defined(HAIR25D_LAYERING_AVX2)
+// smoothed_colour's opaque path with two pixels per register instead of one:
+// every lane does the same float products and sums in the same order (no
+// fused multiply-add: the target is AVX2 alone), so the same floats. The
+// column sums of a group of four pixels are two registers; they are weighted
+// into `sum` column by column, in the SSE2 path's order.
+// 16 bytes (four pixels) to sixteen 16-bit lanes; two of the pixels (half 0
+// or 1) to eight floats.
+__attribute__((target("avx2"))) inline __m256i widen_avx2(const Rgba* four_pixels) {
+  return _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(four_pixels)));
+}
+template <int kHalf>
+__attribute__((target("avx2"))) inline __m256 to_float_avx2(__m256i sixteen) {
+  const __m128i part =
+      kHalf == 0 ? _mm256_castsi256_si128(sixteen) : _mm256_extracti128_si256(sixteen, kHalf);
+  return _mm256_cvtepi32_ps(_mm256_cvtepu16_epi32(part));
+}
+
+__attribute__((target("avx2"))) Rgb3f colour_sum_avx2(const Rgba* centre, std::ptrdiff_t iw, int r,
+                                                      int groups, const float* kernel,
+                                                      const float* column_weights) {
+  __m128 sum = _mm_setzero_ps();
+  for (int g = 0; g < groups; ++g) {
+    const Rgba* mid = centre + 4 * g;
+    const __m256i c = widen_avx2(mid);
+    __m256 w = _mm256_set1_ps(kernel[r]);
+    __m256 c01 = _mm256_mul_ps(w, to_float_avx2<0>(c));
+    __m256 c23 = _mm256_mul_ps(w, to_float_avx2<1>(c));
+    const Rgba* above = mid;
+    const Rgba* below = mid;
+    for (int j = 1; j <= r; ++j) {
+      above -= iw;
+      below += iw;
+      const __m256i pair = _mm256_add_epi16(widen_avx2(above), widen_avx2(below));
+      w = _mm256_set1_ps(kernel[r + j]);
+      c01 = _mm256_add_ps(c01, _mm256_mul_ps(w, to_float_avx2<0>(pair)));
+      c23 = _mm256_add_ps(c23, _mm256_mul_ps(w, to_float_avx2<1>(pair)));
+    }
+    const float* wg = column_weights + 16 * g;
+    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg), _mm256_castps256_ps128(c01)));
+    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 4), _mm256_extractf128_ps(c01, 1)));
+    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 8), _mm256_castps256_ps128(c23)));
+    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 12), _mm256_extractf128_ps(c23, 1)));
+  }
+  alignas(16) float out[4];
+  _mm_store_ps(out, sum);
+  return {out[0], out[1], out[2]};
+}
+#endif
+
 // Grey levels of the window [x0, x0 + w) × [y0, y0 + h) of `image`.
 cv::Mat grey_of(const Image& image, int x0, int y0, int w, int h) {
   cv::Mat grey(h, w, CV_32F);
-  grey_into(image, x0, y0, cv::Rect(0, 0, w, h), grey);
+  grey_into(image, x0, y0, cv::Rect(0, 0, w, h), grey, nullptr,
+            LineResponse::wide_vectors_available());
   return grey;
 }
 
@@ -209,6 +304,97 @@ struct LabelView {
                                                   : kOutside;
   }
 };
+#if defined(HAIR25D_LAYERING_AVX2)
+// measure()'s grey samples of one point where all of them lie well inside
+// the window and the map, four at a time: each lane does GreyView::
+// sample_inside's products and sums in its order (no fused multiply-add: the
+// target is AVX2 alone), and min / max do not depend on the order they are
+// taken in, so the same values.
+struct PointSamples {
+  double centre, paper_left, paper_right;
+};
+
+// Bilinear samples at (x, y) (four lanes), as GreyView::sample_inside.
+__attribute__((target("avx2"))) inline __m256d bilinear_avx2(const GreyView& g, __m256d x,
+                                                             __m256d y) {
+  const __m256d half = _mm256_set1_pd(0.5);
+  x = _mm256_sub_pd(_mm256_sub_pd(x, half), _mm256_set1_pd(g.x0));
+  y = _mm256_sub_pd(_mm256_sub_pd(y, half), _mm256_set1_pd(g.y0));
+  const __m128i xi = _mm256_cvttpd_epi32(x), yi = _mm256_cvttpd_epi32(y);
+  const __m256d fx = _mm256_sub_pd(x, _mm256_cvtepi32_pd(xi));
+  const __m256d fy = _mm256_sub_pd(y, _mm256_cvtepi32_pd(yi));
+  const __m128i at = _mm_add_epi32(_mm_mullo_epi32(yi, _mm_set1_epi32(g.w)), xi);
+  // Each pixel with its right-hand neighbour, as one 8-byte load per lane.
+  const double* pairs = reinterpret_cast<const double*>(g.grey);
+  const __m256i top = _mm256_castpd_si256(_mm256_i32gather_pd(pairs, at, 4));
+  const __m256i bottom =
+      _mm256_castpd_si256(_mm256_i32gather_pd(pairs, _mm_add_epi32(at, _mm_set1_epi32(g.w)), 4));
+  const __m256i split = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+  const __m256 t = _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(top, split));
+  const __m256 b = _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(bottom, split));
+  const __m256d p0 = _mm256_cvtps_pd(_mm256_castps256_ps128(t));
+  const __m256d p1 = _mm256_cvtps_pd(_mm256_extractf128_ps(t, 1));
+  const __m256d p2 = _mm256_cvtps_pd(_mm256_castps256_ps128(b));
+  const __m256d p3 = _mm256_cvtps_pd(_mm256_extractf128_ps(b, 1));
+  const __m256d one = _mm256_set1_pd(1.0);
+  const __m256d gx = _mm256_sub_pd(one, fx), gy = _mm256_sub_pd(one, fy);
+  const __m256d upper = _mm256_add_pd(_mm256_mul_pd(gx, p0), _mm256_mul_pd(fx, p1));
+  const __m256d lower = _mm256_add_pd(_mm256_mul_pd(gx, p2), _mm256_mul_pd(fx, p3));
+  return _mm256_add_pd(_mm256_mul_pd(gy, upper), _mm256_mul_pd(fy, lower));
+}
+
+__attribute__((target("avx2"))) inline double min_of_avx2(__m256d v) {
+  const __m128d m = _mm_min_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
+  return _mm_cvtsd_f64(_mm_min_sd(m, _mm_unpackhi_pd(m, m)));
+}
+__attribute__((target("avx2"))) inline double max_of_avx2(__m256d v) {
+  const __m128d m = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
+  return _mm_cvtsd_f64(_mm_max_sd(m, _mm_unpackhi_pd(m, m)));
+}
+
+// All ones in the lanes whose pixel of `label` holds `want`.
+__attribute__((target("avx2"))) inline __m256d label_mask_avx2(const LabelView& label, __m256d x,
+                                                               __m256d y, __m128i want) {
+  const __m128i at = _mm_add_epi32(_mm_mullo_epi32(_mm256_cvttpd_epi32(y), _mm_set1_epi32(label.w)),
+                                   _mm256_cvttpd_epi32(x));
+  const __m128i hit = _mm_cmpeq_epi32(_mm_i32gather_epi32(label.labels, at, 4), want);
+  return _mm256_castsi256_pd(_mm256_cvtepi32_epi64(hit));
+}
+
+// `offsets`: the centre search's steps along the normal, `count` of them
+// padded to a multiple of four by repeating the last; the paper search
+// steps 1, 2, ... up to `paper_steps`.
+__attribute__((target("avx2"))) PointSamples point_samples_avx2(
+    const GreyView& grey, const LabelView& label, double px, double py, double nx, double ny,
+    const double* offsets, int count, int paper_steps, int left, int right) {
+  const __m256d vpx = _mm256_set1_pd(px), vpy = _mm256_set1_pd(py);
+  const __m256d vnx = _mm256_set1_pd(nx), vny = _mm256_set1_pd(ny);
+  __m256d centre = _mm256_set1_pd(1e9);
+  for (int k = 0; k < count; k += 4) {
+    const __m256d sv = _mm256_loadu_pd(offsets + k);
+    centre = _mm256_min_pd(centre, bilinear_avx2(grey, _mm256_add_pd(vpx, _mm256_mul_pd(sv, vnx)),
+                                                 _mm256_add_pd(vpy, _mm256_mul_pd(sv, vny))));
+  }
+  const __m256d none = _mm256_set1_pd(-1.0);
+  __m256d paper_left = none, paper_right = none;
+  const __m128i vleft = _mm_set1_epi32(left), vright = _mm_set1_epi32(right);
+  for (int k = 1; k <= paper_steps; k += 4) {
+    __m256d sv = _mm256_setr_pd(k, k + 1, k + 2, k + 3);
+    // Steps past the last repeat it (max ignores the repeat).
+    sv = _mm256_min_pd(sv, _mm256_set1_pd(paper_steps));
+    const __m256d ox = _mm256_mul_pd(sv, vnx), oy = _mm256_mul_pd(sv, vny);
+    const __m256d lx = _mm256_add_pd(vpx, ox), ly = _mm256_add_pd(vpy, oy);
+    const __m256d rx = _mm256_sub_pd(vpx, ox), ry = _mm256_sub_pd(vpy, oy);
+    paper_left = _mm256_max_pd(paper_left, _mm256_blendv_pd(none, bilinear_avx2(grey, lx, ly),
+                                                            label_mask_avx2(label, lx, ly, vleft)));
+    paper_right =
+        _mm256_max_pd(paper_right, _mm256_blendv_pd(none, bilinear_avx2(grey, rx, ry),
+                                                    label_mask_avx2(label, rx, ry, vright)));
+  }
+  return {min_of_avx2(centre), max_of_avx2(paper_left), max_of_avx2(paper_right)};
+}
+#endif
+
 // Noise: MAD of a 3x3 Laplacian on the raw grey window (its edges
 // reflected, as if it were the whole image), over every fourth pixel of
 // every fourth row, scaled for a Gaussian.
@@ -248,7 +434,16 @@ std::vector<std::uint8_t> translucent_rows_of(const Image& image) {
 
 void grey_levels(const Image& image, int x0, int y0, int w, int h, float* out) {
   cv::Mat grey(h, w, CV_32F, out);
-  grey_into(image, x0, y0, cv::Rect(0, 0, w, h), grey);
+  grey_into(image, x0, y0, cv::Rect(0, 0, w, h), grey, nullptr,
+            LineResponse::wide_vectors_available());
+}
+
+bool LineResponse::wide_vectors_available() {
+#if defined(HAIR25D_LAYERING_AVX2)
+  return __builtin_cpu_supports("avx2");
+#else
+  return false;
+#endif
 }
 
 int LineResponse::window_margin(double line_width) {
@@ -262,13 +457,14 @@ int LineResponse::window_margin(double line_width) {
 }
 
 LineResponse::LineResponse(const Image& image, const LabelMap* regions) : image_(&image) {
+  wide_vectors_ = wide_vectors_available();
   const int w = image.width(), h = image.height();
   raw_ = std::make_unique_for_overwrite<float[]>(static_cast<std::size_t>(w) * h);
   // The grey levels need nothing but the image: a second core converts them
   // while the caller fills outlines and traces boundaries. It writes only
   // raw_, its box and image_translucent_, which nothing reads before
   // prepare()'s blur or smooth() waits.
-  auto convert = [this, regions, w, h] {
+  auto convert = [this, regions, w, h, wide = wide_vectors_] {
     // Grey levels are needed in the window of the filled boundaries and a
     // kernel's reach around it: near the regions, within the outline fill's
     // reach and the window's margin at the line widths of most drawings
@@ -283,7 +479,7 @@ LineResponse::LineResponse(const Image& image, const LabelMap* regions) : image_
     }
     image_translucent_ = translucent_rows_of(*image_);
     cv::Mat raw(h, w, CV_32F, raw_.get());
-    grey_into(*image_, 0, 0, cv::Rect(x0, y0, x1 - x0, y1 - y0), raw);
+    grey_into(*image_, 0, 0, cv::Rect(x0, y0, x1 - x0, y1 - y0), raw, nullptr, wide);
     raw_x0_ = x0, raw_y0_ = y0, raw_x1_ = x1, raw_y1_ = y1;
   };
   converting_ = std::async(std::launch::async | std::launch::deferred, convert);
@@ -295,7 +491,8 @@ void LineResponse::ensure_raw(int x0, int y0, int x1, int y1) {
   x1 = std::min(image.width(), x1), y1 = std::min(image.height(), y1);
   if (x0 >= raw_x0_ && y0 >= raw_y0_ && x1 <= raw_x1_ && y1 <= raw_y1_) return;
   cv::Mat raw(image.height(), image.width(), CV_32F, raw_.get());
-  grey_into(image, 0, 0, cv::Rect(0, 0, image.width(), image.height()), raw);
+  grey_into(image, 0, 0, cv::Rect(0, 0, image.width(), image.height()), raw, nullptr,
+            wide_vectors_);
   raw_x0_ = 0, raw_y0_ = 0, raw_x1_ = image.width(), raw_y1_ = image.height();
 }
 
@@ -474,8 +671,12 @@ Rgb3f LineResponse::smoothed_colour(int x, int y) const {
   const int groups = (2 * r + 4) / 4;
   if (xi - r >= 0 && xi - r + 4 * groups <= w_ && yi - r >= 0 && yi + r < h_ &&
       translucent_rows_[yi + r + 1] == translucent_rows_[yi - r]) {
-    const __m128i zero = _mm_setzero_si128();
     const Rgba* centre = window + static_cast<std::size_t>(yi) * iw + xi - r;
+#if defined(HAIR25D_LAYERING_AVX2)
+    if (wide_vectors_)
+      return colour_sum_avx2(centre, iw, r, groups, colour_kernel_.data(), colour_weights_.data());
+#endif
+    const __m128i zero = _mm_setzero_si128();
     __m128 sum = _mm_setzero_ps();
     const float* wv = colour_weights_.data() + 4 * r;  // wv + 4j: weight j in four lanes
     auto widen = [&](__m128i half, __m128 w, bool high) {
@@ -558,6 +759,14 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
   const double paint_near = r.paint_near;
   const double paint_far = r.paint_far;
   const double farthest = std::max({half, reach, paint_far}) + 1.0;
+  // The steps of the centre and paper searches below, made as they make
+  // them, for the wide-vector path (padded to four by repeating the last).
+  std::vector<double> centre_steps;
+  for (double s = -half; s <= half + 1e-9; s += 0.5) centre_steps.push_back(s);
+  const int centre_count = static_cast<int>(centre_steps.size());
+  while (centre_steps.size() % 4 != 0) centre_steps.push_back(centre_steps.back());
+  int paper_steps = 0;
+  for (double s = 1.0; s <= reach; s += 1.0) ++paper_steps;
   double along = 0.0;
   // Every other point is plenty for a median, except on short boundaries.
   const int stride = n > 40 ? 2 : 1;
@@ -589,14 +798,24 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
           return label.at(x, y);
       };
       double centre = 1e9;
-      for (double s = -half; s <= half + 1e-9; s += 0.5)
-        centre = std::min(centre, sample(px + s * nx, py + s * ny));
       double paper_left = -1.0, paper_right = -1.0;
-      for (double s = 1.0; s <= reach; s += 1.0) {
-        const double lx = px + s * nx, ly = py + s * ny;
-        const double rx = px - s * nx, ry = py - s * ny;
-        if (label_at(lx, ly) == left) paper_left = std::max(paper_left, sample(lx, ly));
-        if (label_at(rx, ry) == right) paper_right = std::max(paper_right, sample(rx, ry));
+#if defined(HAIR25D_LAYERING_AVX2)
+      if (decltype(fast)::value && wide_vectors_ && centre_count > 0) {
+        const PointSamples got =
+            point_samples_avx2(grey, label, px, py, nx, ny, centre_steps.data(),
+                               static_cast<int>(centre_steps.size()), paper_steps, left, right);
+        centre = got.centre, paper_left = got.paper_left, paper_right = got.paper_right;
+      } else
+#endif
+      {
+        for (double s = -half; s <= half + 1e-9; s += 0.5)
+          centre = std::min(centre, sample(px + s * nx, py + s * ny));
+        for (double s = 1.0; s <= reach; s += 1.0) {
+          const double lx = px + s * nx, ly = py + s * ny;
+          const double rx = px - s * nx, ry = py - s * ny;
+          if (label_at(lx, ly) == left) paper_left = std::max(paper_left, sample(lx, ly));
+          if (label_at(rx, ry) == right) paper_right = std::max(paper_right, sample(rx, ry));
+        }
       }
       if (paper_left < 0 || paper_right < 0) return;
       values.push_back(std::min(paper_left, paper_right) - centre);

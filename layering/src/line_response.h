@@ -85,6 +85,11 @@ class LineResponse {
   // With `on`, measure() checks the bounds of every sample, as it does near
   // the window's and the map's edges (for tests: the same values).
   void check_every_sample(bool on) { check_every_sample_ = on; }
+  // With `on` (the default where the processor has AVX2), colours are
+  // smoothed and grey levels sampled eight floats or four doubles at a
+  // time; off, four floats or one double (for tests: the same values).
+  void use_wide_vectors(bool on) { wide_vectors_ = on && wide_vectors_available(); }
+  static bool wide_vectors_available();
 
   // The image's colour at pixel (x, y) smoothed at half a line width (a
   // Gaussian, OpenCV's kernel, edges of the window repeated); pixels outside
@@ -107,6 +112,7 @@ class LineResponse {
   double line_width_ = 1.0;
   double noise_sigma_ = 0.0;
   bool check_every_sample_ = false;
+  bool wide_vectors_ = false;
   const Image* image_ = nullptr;  // colours are smoothed from it where sampled
   // Grey levels of the whole image, unsmoothed, and per image row whether it
   // holds a translucent pixel; made on a second core (converting_).

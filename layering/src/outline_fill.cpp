@@ -9,6 +9,11 @@
 #include <memory>
 #include <string>
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define HAIR25D_FILL_AVX2 1
+#endif
+
 #include "hair25d/core/error.h"
 #include "hair25d/layering/boundary_graph.h"
 #include "outline_fill.h"
@@ -55,6 +60,88 @@ struct Growth {
   std::vector<int> reached;
 };
 
+#if defined(HAIR25D_FILL_AVX2)
+// start_row and seed_row sixteen pixels at a time; they return how many
+// pixels they did.
+__attribute__((target("avx2"))) int start_row_avx2(const int* row, int n, std::uint16_t* out) {
+  const __m256i zero = _mm256_setzero_si256();
+  int x = 0;
+  for (; x + 16 <= n; x += 16) {
+    // −1 (kUnreached) where the label is 0; packs keeps −1 and 0, in lanes
+    // ordered per 128-bit half, which the permute puts back in order.
+    const __m256i a =
+        _mm256_cmpeq_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row + x)), zero);
+    const __m256i b =
+        _mm256_cmpeq_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row + x + 8)), zero);
+    const __m256i packed = _mm256_permute4x64_epi64(_mm256_packs_epi32(a, b), 0xD8);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + x), packed);
+  }
+  return x;
+}
+
+__attribute__((target("avx2"))) inline __m256i at(const std::uint16_t* p) {
+  return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
+}
+
+__attribute__((target("avx2"))) int seed_row_avx2(const std::uint16_t* mid, int stride, int n,
+                                                  std::uint16_t* edge) {
+  const __m256i zero = _mm256_setzero_si256();
+  int x = 0;
+  for (; x + 16 <= n; x += 16) {
+    const std::uint16_t* u = mid - stride + x;
+    const std::uint16_t* m = mid + x;
+    const std::uint16_t* d = mid + stride + x;
+    const __m256i around = _mm256_or_si256(
+        _mm256_or_si256(_mm256_or_si256(at(u - 1), at(u)), _mm256_or_si256(at(u + 1), at(m - 1))),
+        _mm256_or_si256(_mm256_or_si256(at(m + 1), at(d - 1)), _mm256_or_si256(at(d), at(d + 1))));
+    const __m256i region = _mm256_cmpeq_epi16(at(m), zero);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(edge + x), _mm256_and_si256(region, around));
+  }
+  return x;
+}
+#endif
+
+// A row of the distance map before the growth: kUnreached on label 0, else
+// 0 (out[x] from row[x], x in [0, n)).
+void start_row(const int* row, int n, std::uint16_t* out, bool wide) {
+  int x = 0;
+#if defined(HAIR25D_FILL_AVX2)
+  if (wide) x = start_row_avx2(row, n, out);
+#else
+  (void)wide;
+#endif
+  for (; x < n; ++x) out[x] = row[x] == 0 ? kUnreached : 0;
+}
+
+// Flags of the seeds in a row (`mid`, with the rows above and below at
+// ∓stride): a region pixel (0) with a label-0 neighbour (kUnreached). Every
+// distance is 0 or kUnreached yet, so "a label-0 neighbour" is an OR of the
+// eight.
+void seed_row(const std::uint16_t* mid, int stride, int n, std::uint16_t* edge, bool wide) {
+  const std::uint16_t* up = mid - stride;
+  const std::uint16_t* down = mid + stride;
+  int x = 0;
+#if defined(HAIR25D_FILL_AVX2)
+  if (wide) x = seed_row_avx2(mid, stride, n, edge);
+#else
+  (void)wide;
+#endif
+  for (; x < n; ++x) {
+    const std::uint16_t around = up[x - 1] | up[x] | up[x + 1] | mid[x - 1] | mid[x + 1] |
+                                 down[x - 1] | down[x] | down[x + 1];
+    edge[x] = mid[x] == 0 ? around : 0;
+  }
+}
+
+// Whether start_row and seed_row may use AVX2.
+bool wide_rows_available() {
+#if defined(HAIR25D_FILL_AVX2)
+  return __builtin_cpu_supports("avx2");
+#else
+  return false;
+#endif
+}
+
 // Dial's algorithm: a multi-source shortest path on the 8-neighbour grid with a
 // ring of buckets, linear in the pixel count. Fronts start from region pixels
 // next to label 0, in raster order; where two fronts reach a pixel at the same
@@ -73,7 +160,7 @@ struct Growth {
 // own (the +2: seeds are found from their neighbours), its own rows get the
 // distances, owners and ties of one growth over the whole box.
 Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0, int own1,
-            int limit) {
+            int limit, bool wide) {
   const int w = labels.width();
   Growth g;
   Window& win = g.box;
@@ -95,23 +182,15 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
     std::uint16_t* out = dist + win.at(win.x0, win.y0 + y);
     out[-1] = 0;
     out[win.w] = 0;
-    for (int x = 0; x < win.w; ++x) out[x] = row[x] == 0 ? kUnreached : 0;
+    start_row(row, win.w, out, wide);
   }
-  // Only region pixels on the edge of label 0 start a front. Every dist is 0
-  // or kUnreached yet, so "a label-0 neighbour" is an OR of the eight, which
-  // vectorises; the flags are then read in raster order.
+  // Only region pixels on the edge of label 0 start a front, found a row at
+  // a time (seed_row), then read in raster order.
   std::array<std::vector<int>, kDiag + 1> ring;
   std::vector<std::uint16_t> edge(win.w);
   for (int y = 0; y < win.h; ++y) {
     const int base = win.at(win.x0, win.y0 + y);
-    const std::uint16_t* up = dist + base - stride;
-    const std::uint16_t* mid = dist + base;
-    const std::uint16_t* down = dist + base + stride;
-    for (int x = 0; x < win.w; ++x) {
-      const std::uint16_t around = up[x - 1] | up[x] | up[x + 1] | mid[x - 1] | mid[x + 1] |
-                                   down[x - 1] | down[x] | down[x + 1];
-      edge[x] = mid[x] == 0 ? around : 0;
-    }
+    seed_row(dist + base, stride, win.w, edge.data(), wide);
     const int* row = labels.data() + static_cast<std::size_t>(win.y0 + y) * w + win.x0;
     detail::for_each_set(edge, 0, win.w, [&](int x) {
       owner[base + x] = row[x];
@@ -158,7 +237,7 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
 namespace detail {
 
 OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
-                                   int max_bands, int min_band_rows) {
+                                   int max_bands, int min_band_rows, bool wide_rows) {
   std::string why;
   if (!options.is_valid(&why)) throw Error("layering: " + why);
   if (labels.empty()) throw Error("layering: label map is empty; need at least one pixel");
@@ -184,6 +263,7 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   // Bands of the box's rows, each grown on its own core over its rows and
   // the rows within reach (grow()), to the same result as one growth.
   const int reach_rows = limit / kOrtho + 2;
+  const bool wide = wide_rows && wide_rows_available();
   const int bands = std::clamp(std::min(max_bands, box.h / std::max(1, min_band_rows)), 1, 64);
   std::vector<Growth> growth(bands);
   std::vector<std::vector<int>> meets(bands);
@@ -200,7 +280,7 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
         const int own0 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * b / bands);
         const int own1 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * (b + 1) / bands);
         growth[b] = grow(labels, box, std::max(box.y0, own0 - reach_rows),
-                         std::min(box.y0 + box.h, own1 + reach_rows), own0, own1, limit);
+                         std::min(box.y0 + box.h, own1 + reach_rows), own0, own1, limit, wide);
         // Where fronts of two regions meet inside label-0 pixels, each side
         // has come about half a line width: the typical meeting distance
         // measures the lines. Each pair of 4-neighbours is counted once, from

@@ -144,6 +144,14 @@ class Bits {
   explicit Bits(std::size_t n) : words_((n + 63) / 64, 0) {}
   void set(std::size_t i) { words_[i >> 6] |= std::uint64_t{1} << (i & 63); }
   bool test(std::size_t i) const { return (words_[i >> 6] >> (i & 63)) & 1; }
+  // Sets bit i; whether it was clear before.
+  bool test_and_set(std::size_t i) {
+    std::uint64_t& word = words_[i >> 6];
+    const std::uint64_t bit = std::uint64_t{1} << (i & 63);
+    const bool was_clear = (word & bit) == 0;
+    word |= bit;
+    return was_clear;
+  }
 
  private:
   std::vector<std::uint64_t> words_;

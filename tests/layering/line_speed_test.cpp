@@ -7,7 +7,7 @@
 // growth over the whole map; the region ids of a map against LabelMap::labels;
 // grey levels converted four pixels at a time against the formula, and
 // converted only near the regions against the whole image; parallel_for
-// against a plain loop.
+// against a plain loop; the AVX2 paths against the SSE2 and scalar ones.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "boundary_box.h"
+#include "boundary_trace.h"
 #include "hair25d/layering/boundary_graph.h"
 #include "line_response.h"
 #include "outline_fill.h"
@@ -221,6 +222,52 @@ TEST(LineSpeed, UncheckedSamplesMeasureLikeCheckedOnes) {
   }
 }
 
+// The AVX2 paths (eight floats or four doubles at a time) against the SSE2
+// and scalar ones, to the bit: every pixel's smoothed colour (windows cut by
+// the image's edges, translucent rows, kernels of 9 to 53 taps), and every
+// measurement along the boundaries of a map.
+TEST(LineSpeed, WideVectorsSmoothColoursLikeNarrowOnes) {
+  if (!LineResponse::wide_vectors_available()) GTEST_SKIP() << "no AVX2 on this processor";
+  for (const bool translucent : {false, true}) {
+    const Image image = test_image(151, 97, 12, translucent);
+    for (const double lw : {1.0, 4.6, 13.0}) {
+      LineResponse wide(image, lw, 9, 5, 140, 93);
+      LineResponse narrow(image, lw, 9, 5, 140, 93);
+      narrow.use_wide_vectors(false);
+      int differ = 0;
+      for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+          differ += wide.smoothed_colour(x, y) != narrow.smoothed_colour(x, y);
+      EXPECT_EQ(differ, 0) << "line width " << lw << (translucent ? ", translucent" : "");
+    }
+  }
+}
+
+TEST(LineSpeed, WideVectorsMeasureLikeNarrowOnes) {
+  if (!LineResponse::wide_vectors_available()) GTEST_SKIP() << "no AVX2 on this processor";
+  const Image image = test_image(313, 229, 13, true);
+  LabelMap labels(image.width(), image.height(), 0);
+  for (int y = 0; y < 229; ++y)
+    for (int x = y / 5; x < 313; ++x) labels.at(x, y) = 1 + (x / 31 + y / 23 + x * y / 900) % 6;
+  const BoundaryGraph graph = build_boundary_graph(labels);
+  for (const double lw : {1.0, 2.5, 4.6, 9.0}) {
+    LineResponse wide(image, lw, 15, 10, 290, 215);
+    LineResponse narrow(image, lw, 15, 10, 290, 215);
+    narrow.use_wide_vectors(false);
+    int compared = 0;
+    for (const Boundary& b : graph.boundaries) {
+      if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+      const auto want = narrow.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+      const auto got = wide.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+      EXPECT_EQ(want.contrast, got.contrast) << "line width " << lw;
+      EXPECT_EQ(want.contrast_low, got.contrast_low) << "line width " << lw;
+      EXPECT_EQ(want.colour_difference, got.colour_difference) << "line width " << lw;
+      compared += want.contrast != 0.0 && want.colour_difference != 0.0;
+    }
+    EXPECT_GT(compared, 10) << "line width " << lw;
+  }
+}
+
 // Every item once, on any number of threads; the call returns only when
 // every item has ended (items of uneven cost, some slow).
 TEST(ParallelFor, CallsEveryItemOnceAndWaitsForThem) {
@@ -367,6 +414,22 @@ TEST(FillBands, GeneratedMapsFillAsOneGrowth) {
   }
 }
 
+// Rows prepared sixteen pixels at a time (AVX2) fill like rows prepared one
+// pixel at a time: maps narrower and wider than a block, lines of 1–5 px.
+TEST(FillBands, WideRowsFillLikeNarrowOnes) {
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 12; ++trial) {
+    const int w = 5 + static_cast<int>(rng() % 200), h = 4 + static_cast<int>(rng() % 90);
+    const LabelMap m = strand_map(w, h, 500 + trial, 1 + trial % 5);
+    for (const int bands : {1, 3}) {
+      const OutlineFill wide = detail::fill_outlines_in_bands(m, {}, bands, 1, true);
+      const OutlineFill narrow = detail::fill_outlines_in_bands(m, {}, bands, 1, false);
+      EXPECT_EQ(wide.line_width, narrow.line_width) << "trial " << trial;
+      EXPECT_TRUE(wide.labels == narrow.labels) << "trial " << trial;
+    }
+  }
+}
+
 // The public fill splits large maps; it equals one growth there too (a
 // 640 x 480 drawing-like map, the bands of fill_outlines).
 TEST(FillBands, PublicFillOnALargeMapEqualsOneGrowth) {
@@ -377,6 +440,53 @@ TEST(FillBands, PublicFillOnALargeMapEqualsOneGrowth) {
   EXPECT_EQ(pub.line_width, one.line_width);
   EXPECT_EQ(pub.radius, one.radius);
   EXPECT_TRUE(pub.labels == one.labels);
+}
+
+// The trace with its corners scanned eight at a time (AVX2), and the scan
+// for closed loops skipped when every crack edge between rows was walked,
+// gives the graph of the plain scans: strand maps, islands (closed loops
+// with no junction, nested), noise with outside-like labels, maps narrower
+// than a block.
+TEST(TraceRows, WideRowsTraceLikeNarrowOnes) {
+  std::mt19937 rng(23);
+  int loops = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const int w = 1 + static_cast<int>(rng() % 150), h = 1 + static_cast<int>(rng() % 90);
+    LabelMap m = strand_map(w, h, 700 + trial, 1 + trial % 4);
+    if (trial % 3 == 1)  // islands: rectangles inside rectangles
+      for (int k = 0; k < 4; ++k) {
+        const int x0 = static_cast<int>(rng() % w), y0 = static_cast<int>(rng() % h);
+        const int x1 = std::min(w, x0 + 2 + static_cast<int>(rng() % 30));
+        const int y1 = std::min(h, y0 + 2 + static_cast<int>(rng() % 20));
+        for (int y = y0; y < y1; ++y)
+          for (int x = x0; x < x1; ++x) m.at(x, y) = 20 + k;
+      }
+    if (trial % 3 == 2)
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          if (rng() % 4 == 0) m.at(x, y) = std::array{0, 1, 2, -1}[rng() % 4];
+    const BoundaryGraph wide = detail::build_boundary_graph(m, true);
+    const BoundaryGraph narrow = detail::build_boundary_graph(m, false);
+    ASSERT_EQ(wide.junctions.size(), narrow.junctions.size()) << "trial " << trial;
+    for (std::size_t j = 0; j < wide.junctions.size(); ++j) {
+      EXPECT_EQ(wide.junctions[j].position, narrow.junctions[j].position);
+      EXPECT_EQ(wide.junctions[j].boundaries, narrow.junctions[j].boundaries);
+    }
+    ASSERT_EQ(wide.boundaries.size(), narrow.boundaries.size()) << "trial " << trial;
+    int closed = 0;
+    for (std::size_t i = 0; i < wide.boundaries.size(); ++i) {
+      const Boundary& a = wide.boundaries[i];
+      const Boundary& b = narrow.boundaries[i];
+      EXPECT_EQ(a.left, b.left);
+      EXPECT_EQ(a.right, b.right);
+      EXPECT_EQ(a.start, b.start);
+      EXPECT_EQ(a.end, b.end);
+      EXPECT_TRUE(a.points == b.points) << "trial " << trial << ", boundary " << i;
+      closed += a.closed();
+    }
+    loops += closed;
+  }
+  EXPECT_GT(loops, 3);  // the closed-loop scan had work to do
 }
 
 // The region ids the layering reads off the input map (skipping runs of one
@@ -401,8 +511,9 @@ TEST(DistinctLabels, EqualLabelMapLabels) {
   EXPECT_TRUE(detail::distinct_labels(LabelMap(17, 5, 0)).empty());
 }
 
-// Four pixels at a time (SSE2) against the formula pixel by pixel, to the
-// bit: odd widths (the tail), windows, translucent rows.
+// Eight or four pixels at a time (AVX2 where the processor has it, SSE2)
+// against the formula pixel by pixel, to the bit: odd widths (the tails),
+// windows, translucent rows.
 TEST(GreyLevels, EqualTheFormula) {
   for (const auto& [w, h, translucent] :
        {std::tuple{157, 93, false}, std::tuple{3, 5, true}, std::tuple{120, 75, true}}) {

@@ -1,0 +1,15 @@
+// The crack-grid trace of build_boundary_graph (paper §4: boundaries between
+// junctions) with its row scans chosen, internal to the layering.
+#pragma once
+
+#include "hair25d/layering/boundary_graph.h"
+
+namespace hair25d::layering::detail {
+
+// build_boundary_graph; with `wide_rows` (where the processor has AVX2) the
+// corners are scanned eight at a time and the scan for closed loops is
+// skipped when the traces walked every crack edge between rows. The graph is
+// the same either way (for tests).
+BoundaryGraph build_boundary_graph(const LabelMap& labels, bool wide_rows);
+
+}  // namespace hair25d::layering::detail
