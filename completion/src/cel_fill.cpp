@@ -15,13 +15,25 @@
 namespace hair25d::completion::detail {
 
 bool CommonColours::common(const Rgba& c) const {
-  long near = 0;
-  const int r = c.r / kBin, g = c.g / kBin, b = c.b / kBin;
-  for (int i = std::max(0, r - 1); i <= std::min(kSide - 1, r + 1); ++i)
-    for (int j = std::max(0, g - 1); j <= std::min(kSide - 1, g + 1); ++j)
-      for (int k = std::max(0, b - 1); k <= std::min(kSide - 1, b + 1); ++k)
-        near += count_[static_cast<std::size_t>((i * kSide + j) * kSide + k)];
-  return total_ > 0 && static_cast<double>(near) >= share_ * static_cast<double>(total_);
+  if (common_.empty()) {
+    // The 3×3×3 box sum of the histogram, one axis at a time.
+    std::vector<long> sum = count_, next(sum.size());
+    for (const int stride : {1, kSide, kSide * kSide}) {
+      for (std::size_t i = 0; i < sum.size(); ++i) {
+        const int along = static_cast<int>(i / static_cast<std::size_t>(stride)) % kSide;
+        long v = sum[i];
+        if (along > 0) v += sum[i - static_cast<std::size_t>(stride)];
+        if (along + 1 < kSide) v += sum[i + static_cast<std::size_t>(stride)];
+        next[i] = v;
+      }
+      sum.swap(next);
+    }
+    common_.assign(sum.size(), 0);
+    for (std::size_t i = 0; i < sum.size(); ++i)
+      common_[i] =
+          total_ > 0 && static_cast<double>(sum[i]) >= share_ * static_cast<double>(total_);
+  }
+  return common_[bin(c)] != 0;
 }
 
 namespace {
@@ -63,23 +75,14 @@ Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& sour
   // Flat pixels: usable, not ink and not next to ink (the anti-aliased rim of
   // a line is neither line nor region colour). distanceTransform measures the
   // distance to the nearest zero, so flat pixels are the zeros.
-  cv::Mat not_flat(h, w, CV_8U, cv::Scalar(255));
+  cv::Mat not_flat(h, w, CV_8U, cv::Scalar(255)), near_ink;
+  cv::dilate(cv::Mat(h, w, CV_8U, const_cast<std::uint8_t*>(ink.data())), near_ink,
+             cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
   int flat_count = 0;
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      if (!usable(x, y)) continue;
-      bool near_ink = false;
-      for (int dy = -1; dy <= 1 && !near_ink; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int nx = x + dx, ny = y + dy;
-          if (nx >= 0 && ny >= 0 && nx < w && ny < h && ink[idx(nx, ny)]) {
-            near_ink = true;
-            break;
-          }
-        }
-      if (!near_ink && colours.common(image.at(x, y)))
+    for (int x = 0; x < w; ++x)
+      if (usable(x, y) && !near_ink.at<std::uint8_t>(y, x) && colours.common(image.at(x, y)))
         not_flat.at<std::uint8_t>(y, x) = 0, ++flat_count;
-    }
   if (flat_count == 0) {
     // No flat pixel: fall back to every usable pixel.
     for (int y = 0; y < h; ++y)

@@ -19,6 +19,7 @@ std::vector<std::uint8_t> ink_mask(const Image& image, const InpaintOptions& opt
 class CommonColours {
  public:
   explicit CommonColours(double share) : share_(share), count_(kSide * kSide * kSide, 0) {}
+  // Pixels are added first; the first common() call sums the neighbourhoods.
   void add(const Rgba& c) { ++count_[bin(c)], ++total_; }
   bool common(const Rgba& c) const;
   long total() const { return total_; }
@@ -31,6 +32,7 @@ class CommonColours {
   double share_;
   std::vector<long> count_;
   long total_ = 0;
+  mutable std::vector<std::uint8_t> common_;  // per bin, once summed
 };
 
 // The options inpaint_cel works with for these sources: ink_luma no higher
