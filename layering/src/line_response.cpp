@@ -314,6 +314,16 @@ struct PointSamples {
   double centre, paper_left, paper_right;
 };
 
+// grey[index[k] + offset] and the float after it, for k = 0..3, in order.
+__attribute__((target("avx2"))) inline __m256i pixel_pairs_avx2(const float* grey, const int* index,
+                                                                int offset) {
+  auto pair = [&](int k) {
+    return _mm_loadl_epi64(reinterpret_cast<const __m128i*>(grey + index[k] + offset));
+  };
+  return _mm256_set_m128i(_mm_unpacklo_epi64(pair(2), pair(3)),
+                          _mm_unpacklo_epi64(pair(0), pair(1)));
+}
+
 // Bilinear samples at (x, y) (four lanes), as GreyView::sample_inside.
 __attribute__((target("avx2"))) inline __m256d bilinear_avx2(const GreyView& g, __m256d x,
                                                              __m256d y) {
@@ -324,11 +334,12 @@ __attribute__((target("avx2"))) inline __m256d bilinear_avx2(const GreyView& g, 
   const __m256d fx = _mm256_sub_pd(x, _mm256_cvtepi32_pd(xi));
   const __m256d fy = _mm256_sub_pd(y, _mm256_cvtepi32_pd(yi));
   const __m128i at = _mm_add_epi32(_mm_mullo_epi32(yi, _mm_set1_epi32(g.w)), xi);
-  // Each pixel with its right-hand neighbour, as one 8-byte load per lane.
-  const double* pairs = reinterpret_cast<const double*>(g.grey);
-  const __m256i top = _mm256_castpd_si256(_mm256_i32gather_pd(pairs, at, 4));
-  const __m256i bottom =
-      _mm256_castpd_si256(_mm256_i32gather_pd(pairs, _mm_add_epi32(at, _mm_set1_epi32(g.w)), 4));
+  // Each pixel with its right-hand neighbour, as one 8-byte load per lane
+  // (four loads, not a gather: gathers are slow on some processors).
+  alignas(16) int index[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(index), at);
+  const __m256i top = pixel_pairs_avx2(g.grey, index, 0);
+  const __m256i bottom = pixel_pairs_avx2(g.grey, index, g.w);
   const __m256i split = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
   const __m256 t = _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(top, split));
   const __m256 b = _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(bottom, split));
@@ -357,7 +368,11 @@ __attribute__((target("avx2"))) inline __m256d label_mask_avx2(const LabelView& 
                                                                __m256d y, __m128i want) {
   const __m128i at = _mm_add_epi32(_mm_mullo_epi32(_mm256_cvttpd_epi32(y), _mm_set1_epi32(label.w)),
                                    _mm256_cvttpd_epi32(x));
-  const __m128i hit = _mm_cmpeq_epi32(_mm_i32gather_epi32(label.labels, at, 4), want);
+  alignas(16) int index[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(index), at);
+  const int* l = label.labels;
+  const __m128i hit =
+      _mm_cmpeq_epi32(_mm_setr_epi32(l[index[0]], l[index[1]], l[index[2]], l[index[3]]), want);
   return _mm256_castsi256_pd(_mm256_cvtepi32_epi64(hit));
 }
 
@@ -397,14 +412,16 @@ __attribute__((target("avx2"))) PointSamples point_samples_avx2(
 
 // Noise: MAD of a 3x3 Laplacian on the raw grey window (its edges
 // reflected, as if it were the whole image), over every fourth pixel of
-// every fourth row, scaled for a Gaussian.
+// every fourth row, scaled for a Gaussian. Only those pixels' Laplacian is
+// computed (laplacian_at: the values of cv::Laplacian over the window, a
+// sixteenth of its work).
 double noise_of(const cv::Mat& grey) {
-  cv::Mat lap;
-  cv::Laplacian(grey, lap, CV_32F, 1, 1.0, 0.0, cv::BORDER_DEFAULT | cv::BORDER_ISOLATED);
   std::vector<double> mags;
   mags.reserve(static_cast<std::size_t>(grey.total()) / 16 + 1);
   for (int y = 0; y < grey.rows; y += 4)
-    for (int x = 0; x < grey.cols; x += 4) mags.push_back(std::abs(lap.at<float>(y, x)));
+    for (int x = 0; x < grey.cols; x += 4)
+      mags.push_back(std::abs(laplacian_at(grey.ptr<float>(), grey.cols, grey.rows,
+                                           static_cast<std::ptrdiff_t>(grey.step1()), x, y)));
   // A 4-neighbour Laplacian of i.i.d. noise has σ·√20.
   return median_of(mags) * 1.4826 / std::sqrt(20.0);
 }
@@ -431,6 +448,28 @@ std::vector<std::uint8_t> translucent_rows_of(const Image& image) {
 }
 
 }  // namespace
+
+float laplacian_at(const float* grey, int w, int h, std::ptrdiff_t stride, int x, int y) {
+  auto reflect = [](int i, int n) {
+    if (n == 1) return 0;
+    if (i < 0) return -i;
+    if (i >= n) return 2 * n - 2 - i;
+    return i;
+  };
+  auto at = [&](int xx, int yy) { return grey[yy * stride + xx]; };
+  const int xl = reflect(x - 1, w), xr = reflect(x + 1, w);
+  const int yu = reflect(y - 1, h), yd = reflect(y + 1, h);
+  // The kernel's non-zero taps in raster order added to 0 one after another,
+  // as OpenCV's 2-D filter adds them; the products by 1 and −4 are exact, so
+  // with or without fused multiply-adds the float is the same.
+  float s = 0.0f;
+  s += at(x, yu);
+  s += at(xl, y);
+  s += -4.0f * at(x, y);
+  s += at(xr, y);
+  s += at(x, yd);
+  return s;
+}
 
 void grey_levels(const Image& image, int x0, int y0, int w, int h, float* out) {
   cv::Mat grey(h, w, CV_32F, out);

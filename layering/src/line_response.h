@@ -6,6 +6,7 @@
 
 #include <array>
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <future>
 #include <memory>
@@ -32,6 +33,12 @@ struct BoundaryLine {
 // row-major): 0.299 r + 0.587 g + 0.114 b summed in double, as float;
 // translucent pixels blended over white paper. What LineResponse measures on.
 void grey_levels(const Image& image, int x0, int y0, int w, int h, float* out);
+
+// The 4-neighbour Laplacian at (x, y) of the w × h grey levels `grey` (rows
+// `stride` floats apart), edges reflected (BORDER_REFLECT_101): the float
+// cv::Laplacian (ksize 1) gives there. The noise estimate reads it at a
+// sixteenth of the pixels instead of filtering them all.
+float laplacian_at(const float* grey, int w, int h, std::ptrdiff_t stride, int x, int y);
 
 class LineResponse {
  public:

@@ -543,6 +543,31 @@ TEST(GreyLevels, EqualTheFormula) {
   }
 }
 
+// The Laplacian the noise estimate reads at a sixteenth of the pixels is
+// cv::Laplacian's (ksize 1, edges reflected) to the bit: every pixel of
+// random grey levels, windows of a larger image (row stride), one-pixel-wide
+// and tiny images.
+TEST(GreyLevels, SparseLaplacianEqualsOpenCVs) {
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<float> grey(0.0f, 255.0f);
+  for (const auto& [w, h] : {std::pair{97, 61}, std::pair{1, 1}, std::pair{1, 9}, std::pair{7, 1},
+                             std::pair{2, 3}, std::pair{160, 33}}) {
+    cv::Mat image(h + 6, w + 10, CV_32F);
+    for (int y = 0; y < image.rows; ++y)
+      for (int x = 0; x < image.cols; ++x) image.at<float>(y, x) = grey(rng);
+    const cv::Mat window = image(cv::Rect(4, 3, w, h));
+    cv::Mat want;
+    cv::Laplacian(window, want, CV_32F, 1, 1.0, 0.0, cv::BORDER_DEFAULT | cv::BORDER_ISOLATED);
+    int differ = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        differ += detail::laplacian_at(window.ptr<float>(), w, h,
+                                       static_cast<std::ptrdiff_t>(window.step1()), x,
+                                       y) != want.at<float>(y, x);
+    EXPECT_EQ(differ, 0) << w << "x" << h;
+  }
+}
+
 // Converting grey levels only near the regions (and the rest when a window
 // reaches it: wide lines, a window far from them) measures to the bit like
 // converting the whole image, with and without the early blur.
