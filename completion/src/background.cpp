@@ -329,6 +329,17 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
                 : 0;
     cv::morphologyEx(candidate, features, cv::MORPH_OPEN,
                      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
+    // Where strand tips lying on the face converge, their outlines make
+    // small thick wedges: a feature is larger than that.
+    constexpr int kMinFeature = 50;
+    cv::Mat parts, stats, centroids;
+    const int n = cv::connectedComponentsWithStats(features, parts, stats, centroids, 8, CV_32S);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const int k = parts.at<int>(y, x);
+        if (k > 0 && k < n && stats.at<int>(k, cv::CC_STAT_AREA) < kMinFeature)
+          features.at<std::uint8_t>(y, x) = 0;
+      }
   }
   // The hair's drawn outline goes with the hair: the dark pixels reached
   // from it through dark pixels within a line's width (wider where outlines
@@ -360,8 +371,9 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   // outline reach: dark specks close to the hair are hair too. Dark pieces
   // reaching farther are other things' lines (a hair clip's, the face's) and
   // stay, so that their colours stay closed off from the hole. On the face,
-  // a piece with a pixel of another colour than the hair's stays however
-  // near (an eye under the bangs).
+  // a piece holding a thick feature stays however near (an eye under the
+  // bangs, its lashes with it); thin pieces of another colour near the hair
+  // are its outlines converging at a tip and go.
   dark &= ~hair;
   cv::Mat pieces;
   const int count = cv::connectedComponents(dark, pieces, 8, CV_32S);
@@ -371,7 +383,8 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
       if (dark.at<std::uint8_t>(y, x)) {
         const bool face = !head.mask.empty() && head.mask.at<std::uint8_t>(y, x);
         const bool own = hair_coloured.at<std::uint8_t>(y, x);
-        if (face ? !own || !near_grown.at<std::uint8_t>(y, x) : !near.at<std::uint8_t>(y, x))
+        const bool thick_feature = face && features.at<std::uint8_t>(y, x);
+        if (thick_feature || !(face && own ? near_grown : near).at<std::uint8_t>(y, x))
           beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
       }
   cv::Mat holes(h, w, CV_8U, cv::Scalar(0));
