@@ -118,13 +118,23 @@ Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& sour
     for (int x = 0; x < w; ++x)
       if (fill.at(x, y) != 0) guide.at(x, y) = nearest.at(x, y);
   // Nearest-pixel fill leaves ragged Voronoi seams; a median keeps the flat
-  // colours and straightens the seams. Only hole pixels take it.
-  cv::Mat smooth;
-  cv::medianBlur(view(nearest), smooth, 5);
+  // colours and straightens the seams. Only hole pixels take it, so it runs
+  // on their box (the 5×5 window of a hole pixel lies 2 px inside a box
+  // grown by 4 px, or at the image's edge, replicated either way).
+  int x0 = w, y0 = h, x1 = -1, y1 = -1;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
+      if (fill.at(x, y) != 0)
+        x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+  if (x1 < 0) return guide;
+  const cv::Rect box =
+      cv::Rect(cv::Point(x0 - 4, y0 - 4), cv::Point(x1 + 5, y1 + 5)) & cv::Rect(0, 0, w, h);
+  cv::Mat smooth;
+  cv::medianBlur(view(nearest)(box), smooth, 5);
+  for (int y = box.y; y < box.y + box.height; ++y)
+    for (int x = box.x; x < box.x + box.width; ++x)
       if (fill.at(x, y) != 0) {
-        const cv::Vec4b& v = smooth.at<cv::Vec4b>(y, x);
+        const cv::Vec4b& v = smooth.at<cv::Vec4b>(y - box.y, x - box.x);
         guide.at(x, y) = {v[0], v[1], v[2], v[3]};
       }
   return guide;
