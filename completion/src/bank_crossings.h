@@ -59,9 +59,10 @@ namespace hair25d::completion::detail {
 // wide piece under a fan of overlapping strands faces its other pieces
 // across several occluders at once, so no single edge pair is a case-1 or
 // bank candidate. Region level: rays from every outline pixel of a piece
-// that lies above no region, along the outward normal, through regions
-// above it, landing on another such piece that all crossed regions lie
-// above as well. (The face is left to the face joins: rays across it also
+// that lies above no region (or above tails only: lowest regions that only
+// such pieces cover), along the outward normal, through regions above it,
+// landing on another such piece that all crossed regions lie above as
+// well. (The face is left to the face joins: rays across it also
 // land on bangs lying on the face, which lie above no region either.)
 struct MassJoin {
   int region_a = 0, region_b = 0;
