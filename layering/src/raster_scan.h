@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hair25d/core/image.h"
+#include "parallel.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -93,20 +94,19 @@ inline bool label_box(const LabelMap& labels, int* x0, int* y0, int* x1, int* y1
   return true;
 }
 
-// The distinct non-zero labels of `map`, sorted, in one pass (LabelMap::labels
-// sorts every pixel). Runs of one label are long: blocks of sixteen pixels
-// equal to the last label are skipped by one compare each (SSE2), and a label
-// met again (across a line, the same few regions alternate) is found in a
-// small cache before the set is asked.
-inline std::vector<int> distinct_labels(const LabelMap& map) {
-  std::set<int> seen;
+// The distinct non-zero labels of labels[from, to) into `seen`, in one pass.
+// Runs of one label are long: blocks of sixteen pixels equal to the last
+// label are skipped by one compare each (SSE2), and a label met again
+// (across a line, the same few regions alternate) is found in a small cache
+// before the set is asked.
+inline void distinct_labels_into(const int* data, std::size_t from, std::size_t to,
+                                 std::set<int>& seen) {
   std::array<int, 64> cache;  // cache[v & 63] == v: v is in `seen` (or 0)
   cache.fill(0);
   int last = 0;
-  const int* data = map.data();
-  const std::size_t n = map.size();
+  const std::size_t n = to;
   constexpr std::size_t kBlock = 16;
-  for (std::size_t i = 0; i < n;) {
+  for (std::size_t i = from; i < n;) {
 #if defined(__SSE2__)
     const __m128i same = _mm_set1_epi32(last);
     auto equal = [&](std::size_t at) {
@@ -134,7 +134,22 @@ inline std::vector<int> distinct_labels(const LabelMap& map) {
       seen.insert(v);
     }
   }
-  return {seen.begin(), seen.end()};
+}
+
+// The distinct non-zero labels of `map`, sorted (LabelMap::labels sorts
+// every pixel). The pass reads the whole map, so a large map is read in two
+// halves on two cores.
+inline std::vector<int> distinct_labels(const LabelMap& map) {
+  const std::size_t n = map.size();
+  constexpr std::size_t kSplit = std::size_t{1} << 18;  // pixels below which one pass is quicker
+  const int parts = n >= kSplit ? 2 : 1;
+  std::array<std::set<int>, 2> seen;
+  parallel_for(
+      parts,
+      [&](int p) { distinct_labels_into(map.data(), n * p / parts, n * (p + 1) / parts, seen[p]); },
+      2, 1);
+  seen[0].insert(seen[1].begin(), seen[1].end());
+  return {seen[0].begin(), seen[0].end()};
 }
 
 // A fixed-size set of bits: an eighth of the memory of a byte a flag, so the

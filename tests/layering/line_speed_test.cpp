@@ -491,8 +491,8 @@ TEST(TraceRows, WideRowsTraceLikeNarrowOnes) {
 
 // The region ids the layering reads off the input map (skipping runs of one
 // label, a cache of labels met before) are LabelMap::labels: on strand maps,
-// noise, negative and large labels, more labels than the cache has slots, and
-// maps narrower than a block.
+// noise, negative and large labels, more labels than the cache has slots,
+// maps narrower than a block, and a map large enough to be read in halves.
 TEST(DistinctLabels, EqualLabelMapLabels) {
   std::mt19937 rng(3);
   for (int trial = 0; trial < 30; ++trial) {
@@ -509,6 +509,13 @@ TEST(DistinctLabels, EqualLabelMapLabels) {
   for (int x = 0; x < 40; ++x) aliased.at(x, x % 3) = std::array{5, 69, 133, 0}[x % 4];
   EXPECT_EQ(detail::distinct_labels(aliased), (std::vector<int>{5, 69, 133}));
   EXPECT_TRUE(detail::distinct_labels(LabelMap(17, 5, 0)).empty());
+  // Large maps are read in two halves: labels only in one half, and a run
+  // across the split.
+  LabelMap large = strand_map(700, 451, 9, 3);
+  large.at(3, 5) = 1000;
+  large.at(699, 450) = -7;
+  for (int x = 0; x < 700; ++x) large.at(x, 225) = 55;
+  EXPECT_EQ(detail::distinct_labels(large), large.labels());
 }
 
 // Eight or four pixels at a time (AVX2 where the processor has it, SSE2)
