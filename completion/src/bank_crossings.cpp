@@ -195,9 +195,7 @@ double median_colour_step(const std::vector<MassRay>& list) {
 
 }  // namespace
 
-std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
-  std::set<int> front;
-  for (const auto& [id, ups] : ctx.above) front.insert(ups.begin(), ups.end());
+TailedHair tailed_hair(const Context& ctx, const std::set<int>& front) {
   // Back hair with tails hanging from under it lies above them, so it is
   // front hair too. A tail: a lowest region covered only by regions that lie
   // above lowest regions only (back hair itself also lies under the cap,
@@ -210,7 +208,8 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
   // region above lowest ones only) also took bangs and behind-strands lying
   // on one sliver of back hair (annotated case2 4-8 joined, precision 0.982
   // -> 0.973).
-  std::set<int> over_lowest, over_tails;
+  std::set<int> over_lowest;
+  TailedHair out;
   for (const auto& [id, info] : ctx.regions) {
     if (!front.count(id)) continue;
     bool only_lowest = true;
@@ -227,8 +226,22 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
       for (int up : low_info.occluders)
         over_tail_only = over_tail_only && over_lowest.count(up) > 0;
     }
-    if (over_tail_only) over_tails.insert(id);
+    if (over_tail_only) out.over_tails.insert(id);
   }
+  for (const auto& [id, info] : ctx.regions) {
+    if (front.count(id) || info.occluders.empty()) continue;
+    bool tail = true;
+    for (int up : info.occluders) tail = tail && out.over_tails.count(up) > 0;
+    if (tail) out.tails.insert(id);
+  }
+  return out;
+}
+
+std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
+  std::set<int> front;
+  for (const auto& [id, ups] : ctx.above) front.insert(ups.begin(), ups.end());
+  const TailedHair tailed = tailed_hair(ctx, front);
+  const std::set<int>& over_tails = tailed.over_tails;
   cv::Rect hair;
   for (const auto& [id, info] : ctx.regions) hair = hair.area() == 0 ? info.box : (hair | info.box);
   const double reach = 0.5 * std::max(hair.width, hair.height);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <tuple>
 #include <vector>
 
@@ -70,6 +71,12 @@ struct MassJoin {
   double colour = 0.0;          // median RGB step across the cut (the larger way)
   std::vector<Polyline> bands;  // the hidden part: runs of consecutive landing rays
 };
+// Back hair with tails hanging from under it (`front` = regions above some
+// region): the pieces lying above tails only, and the tails under them.
+struct TailedHair {
+  std::set<int> over_tails, tails;
+};
+TailedHair tailed_hair(const Context& ctx, const std::set<int>& front);
 // Candidates, surest (most rays both ways) first.
 std::vector<MassJoin> mass_join_candidates(const Context& ctx);
 

@@ -162,5 +162,29 @@ TEST(FaceJoins, StrandTipsLyingOnTheFaceAreNotJoined) {
   EXPECT_EQ(strand_with(r, 1)->regions, (std::vector<int>{1}));
 }
 
+TEST(FaceJoins, TailsHangingFromUnderTheBackHairAreNotJoined) {
+  // The same pieces, now hanging from under a band of back hair (5, itself
+  // under a bang 6) instead of under bangs: tails (lowest regions covered
+  // only by back hair that lies over nothing else), not back hair seen on
+  // both sides of the face. The generator's twin tails were joined so.
+  Drawing d = blank(360, 260);
+  paint(
+      d, [](double x, double y) { return x > 30 && x < 180 && y > 95 && y < 215; }, kBack, 1);
+  paint(
+      d, [](double x, double y) { return x >= 180 && x < 330 && y > 95 && y < 215; }, kBack, 2);
+  paint_face(d);
+  paint(
+      d,
+      [](double x, double y) { return x > 20 && x < 340 && y > 40 && y < 100 && !in_face(x, y); },
+      kBack, 5);
+  paint(
+      d, [](double x, double y) { return x > 150 && x < 210 && y > 20 && y < 90; }, kBang, 6);
+  d.relations = {below(1, 5), below(2, 5), below(5, 6)};
+  const Result r = run(d);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->regions, (std::vector<int>{1}));
+}
+
 }  // namespace
 }  // namespace hair25d::completion
