@@ -521,7 +521,7 @@ LineResponse::LineResponse(const Image& image, const LabelMap* regions) : image_
     grey_into(*image_, 0, 0, cv::Rect(x0, y0, x1 - x0, y1 - y0), raw, nullptr, wide);
     raw_x0_ = x0, raw_y0_ = y0, raw_x1_ = x1, raw_y1_ = y1;
   };
-  converting_ = std::async(std::launch::async | std::launch::deferred, convert);
+  converting_ = worker_.submit(convert);
 }
 
 void LineResponse::ensure_raw(int x0, int y0, int x1, int y1) {
@@ -581,7 +581,7 @@ void LineResponse::prepare(double line_width, const LabelMap& filled) {
     early_ready_.store(true, std::memory_order_release);
     blur_early_bands();
   };
-  smoothing_ = std::async(std::launch::async | std::launch::deferred, blur);
+  smoothing_ = worker_.submit(blur);
 }
 
 void LineResponse::blur_early_bands() {
@@ -664,7 +664,7 @@ void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
           throw Error(std::string("layering: OpenCV failed while estimating noise: ") + e.what());
         }
       };
-      noise_ = std::async(std::launch::async | std::launch::deferred, noise).share();
+      noise_ = worker_.submit(noise).share();
       return;
     }
     // Smooth at about a quarter line width: tones (screentone dots, JPEG

@@ -14,6 +14,7 @@
 
 #include "hair25d/core/geometry.h"
 #include "hair25d/core/image.h"
+#include "parallel.h"
 
 namespace hair25d::layering::detail {
 
@@ -154,6 +155,10 @@ class LineResponse {
   // translucent_rows_[y]: how many of the window's rows above y hold a pixel
   // with alpha < 255.
   std::vector<int> translucent_rows_;
+  // The second core's thread for the conversion, the early blur and the
+  // noise, in that order. Last, so it ends (running what is queued) before
+  // the buffers its jobs use go.
+  Worker worker_;
 };
 
 }  // namespace hair25d::layering::detail

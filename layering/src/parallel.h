@@ -6,11 +6,16 @@
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
+#include <deque>
 #include <exception>
+#include <functional>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <system_error>
 #include <thread>
+#include <type_traits>
 
 namespace hair25d::layering::detail {
 
@@ -81,5 +86,69 @@ void parallel_for(int n, F&& f, int max_threads = 0, int items_per_thread = 8) {
   for (int b = shared->busy.load(); b != 0; b = shared->busy.load()) shared->busy.wait(b);
   if (shared->error) std::rethrow_exception(shared->error);
 }
+
+// One helper thread that runs the jobs given to it one after another, in
+// the order given: a chain of background steps (the line response's grey
+// conversion, early blur and noise estimate) shares it instead of starting
+// a thread each, which costs tens of microseconds. submit() returns the
+// job's future (its result or exception). Jobs still queued when the worker
+// is destroyed are run first. Where no thread can be made, jobs run in
+// submit().
+class Worker {
+ public:
+  Worker() {
+    try {
+      thread_ = std::thread([this] { run(); });
+    } catch (const std::system_error&) {
+      // No thread: submit() runs each job itself.
+    }
+  }
+  ~Worker() {
+    {
+      const std::lock_guard lock(mutex_);
+      stop_ = true;
+    }
+    ready_.notify_one();
+    if (thread_.joinable()) thread_.join();
+  }
+  Worker(const Worker&) = delete;
+  Worker& operator=(const Worker&) = delete;
+
+  template <class F>
+  std::future<std::invoke_result_t<F&>> submit(F f) {
+    auto task = std::make_shared<std::packaged_task<std::invoke_result_t<F&>()>>(std::move(f));
+    auto result = task->get_future();
+    if (!thread_.joinable()) {
+      (*task)();
+      return result;
+    }
+    {
+      const std::lock_guard lock(mutex_);
+      jobs_.emplace_back([task] { (*task)(); });
+    }
+    ready_.notify_one();
+    return result;
+  }
+
+ private:
+  void run() {
+    for (;;) {
+      std::function<void()> job;
+      {
+        std::unique_lock lock(mutex_);
+        ready_.wait(lock, [this] { return stop_ || !jobs_.empty(); });
+        if (jobs_.empty()) return;  // stopped, nothing left
+        job = std::move(jobs_.front());
+        jobs_.pop_front();
+      }
+      job();  // a packaged_task: exceptions go to its future
+    }
+  }
+  std::mutex mutex_;
+  std::condition_variable ready_;
+  std::deque<std::function<void()>> jobs_;
+  bool stop_ = false;
+  std::thread thread_;
+};
 
 }  // namespace hair25d::layering::detail
