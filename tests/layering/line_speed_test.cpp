@@ -7,13 +7,15 @@
 // growth over the whole map; the region ids of a map against LabelMap::labels;
 // grey levels converted four pixels at a time against the formula, and
 // converted only near the regions against the whole image; parallel_for
-// against a plain loop; the AVX2 paths against the SSE2 and scalar ones.
+// against a plain loop, and the helper thread's job order; the AVX2 paths
+// against the SSE2 and scalar ones.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
@@ -313,6 +315,32 @@ TEST(ParallelFor, RethrowsAndStopsTakingItems) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
     EXPECT_EQ(started.load(), after);
   }
+}
+
+// The worker runs its jobs one after another in the order given, hands
+// back results and exceptions through the futures, and runs the jobs still
+// queued before it is destroyed.
+TEST(Worker, RunsJobsInOrderWithResultsAndExceptions) {
+  std::vector<int> order;
+  std::future<void> last;
+  {
+    detail::Worker worker;
+    auto slow = worker.submit([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      order.push_back(1);
+      return 7;
+    });
+    auto failing = worker.submit([&]() -> double {
+      order.push_back(2);
+      throw std::runtime_error("job failed");
+    });
+    for (int k = 3; k <= 40; ++k) last = worker.submit([&order, k] { order.push_back(k); });
+    EXPECT_EQ(slow.get(), 7);
+    EXPECT_THROW(failing.get(), std::runtime_error);
+  }  // jobs still queued run before the worker goes
+  EXPECT_EQ(last.wait_for(std::chrono::seconds(0)), std::future_status::ready);
+  ASSERT_EQ(order.size(), 40u);
+  for (int k = 0; k < 40; ++k) EXPECT_EQ(order[k], k + 1);
 }
 
 // The comparison itself must be able to fail: a colour smoothed at another
