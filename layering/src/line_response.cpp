@@ -450,6 +450,16 @@ std::vector<std::uint8_t> translucent_rows_of(const Image& image) {
 }  // namespace
 
 float laplacian_at(const float* grey, int w, int h, std::ptrdiff_t stride, int x, int y) {
+  if (x > 0 && y > 0 && x + 1 < w && y + 1 < h) {  // inside: no edge to reflect
+    const float* p = grey + y * stride + x;
+    float s = 0.0f;
+    s += p[-stride];
+    s += p[-1];
+    s += -4.0f * p[0];
+    s += p[1];
+    s += p[stride];
+    return s;
+  }
   auto reflect = [](int i, int n) {
     if (n == 1) return 0;
     if (i < 0) return -i;
