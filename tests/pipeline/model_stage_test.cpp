@@ -147,8 +147,13 @@ TEST(ModelStage, ContactSheetShowsTheCompletedAreasInLightBlue) {
 
 TEST(ModelStage, WriteModelRunPutsTheContactSheetInsideTheAtomicFolder) {
   const fs::path dir = scratch("atomic");
-  fs::create_directories(dir);
-  save_image(dir / "contact_sheet.png", Image(3, 2, Rgba{1, 2, 3, 255}));
+  ModelRun earlier;
+  earlier.model.width = 40;
+  earlier.model.height = 30;
+  earlier.model.background = Image(40, 30, Rgba{1, 2, 3, 255});
+  earlier.contact_sheet = Image(3, 2, Rgba{1, 2, 3, 255});
+  write_model_run(dir, earlier);
+  // A file of the earlier output that the new one does not write.
   { std::ofstream(dir / "stale.txt") << "old run"; }
   ModelRun run;
   run.model.width = 40;
@@ -249,8 +254,8 @@ TEST(ModelCommand, WritesAModelFolderThatReadsBack) {
   EXPECT_FALSE(load_image(dir / "contact_sheet.png").empty());
   // Bad input: a missing image is exit status 1, not a crash.
   const std::string bad = std::string("\"") + HAIR25D_CLI +
-                          "\" --quiet model /nonexistent.png -o \"" + dir.string() +
-                          "\" 2>/dev/null";
+                          "\" --quiet model /nonexistent.png --regions \"" + data +
+                          "regions.png\" -o \"" + dir.string() + "\" 2>/dev/null";
   const int status = std::system(bad.c_str());
   EXPECT_EQ(WEXITSTATUS(status), 1);
   fs::remove_all(dir);
