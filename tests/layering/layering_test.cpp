@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -142,6 +143,24 @@ TEST(LayerRegions, BoundaryWithoutALineIsEqual) {
   EXPECT_EQ(relation_of(r, 1, 5), Relation::kEqual);
   EXPECT_EQ(r.depth.at(1), r.depth.at(5));
   EXPECT_EQ(relation_of(r, 3, 5), Relation::kAbove);
+}
+
+// Eq. (1) on every boundary: Φ = w Φ̂_J + Φ_R/‖L‖², Φ̂_J the sum of its two
+// junction terms, for the paper's w and another.
+TEST(LayerRegions, PhiIsEquationOneOfItsParts) {
+  const Scene s = crossing();
+  for (const double w : {0.25, 0.7}) {
+    Options o;
+    o.junction_weight = w;
+    const Result r = layer_regions(s.image, s.regions, o);
+    int with_junction_term = 0;
+    for (const BoundaryReport& b : r.boundaries) {
+      EXPECT_NEAR(b.phi_j, b.phi_j_start + b.phi_j_end, 1e-12);
+      EXPECT_NEAR(b.phi, w * b.phi_j + b.phi_r, 1e-12);
+      with_junction_term += std::abs(b.phi_j) > 0.05;
+    }
+    EXPECT_GT(with_junction_term, 2);  // the T-junctions of the crossing say something
+  }
 }
 
 TEST(LayerRegions, UserOverrideIsKeptAndTheRestReSolved) {
