@@ -101,9 +101,7 @@ TEST(MassJoins, RaysCrossALightLineRimBetweenTheStrands) {
   Drawing d = back_hair_under_fan(kBack);
   light_rim(d, 2);
   const Result r = run(d);
-  const CompletedStrand* s = strand_with(r, 1);
-  ASSERT_NE(s, nullptr);
-  EXPECT_EQ(s->regions, (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
 }
 
 TEST(MassJoins, RaysStopAtAWideUnlabelledGap) {
@@ -111,18 +109,14 @@ TEST(MassJoins, RaysStopAtAWideUnlabelledGap) {
   Drawing d = back_hair_under_fan(kBack);
   light_rim(d, 8);
   const Result r = run(d);
-  const CompletedStrand* s = strand_with(r, 1);
-  ASSERT_NE(s, nullptr);
-  EXPECT_EQ(s->regions, (std::vector<int>{1}));
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
 }
 
 TEST(MassJoins, PiecesOfAnotherShadeAreNotJoined) {
   // 24 levels darker a channel: a neighbouring lock, not the same piece.
   const Drawing d = back_hair_under_fan(Rgba{96, 56, 26, 255});
   const Result r = run(d);
-  const CompletedStrand* s = strand_with(r, 1);
-  ASSERT_NE(s, nullptr);
-  EXPECT_EQ(s->regions, (std::vector<int>{1}));
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
 }
 
 TEST(MassJoins, BackHairOverATailIsJoined) {
@@ -136,9 +130,7 @@ TEST(MassJoins, BackHairOverATailIsJoined) {
       d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, kBack, 2);
   d.relations.push_back(below(6, 2));
   const Result r = run(d);
-  const CompletedStrand* s = strand_with(r, 1);
-  ASSERT_NE(s, nullptr);
-  EXPECT_EQ(s->regions, (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
   const CompletedStrand* tail = strand_with(r, 6);
   ASSERT_NE(tail, nullptr);
   EXPECT_EQ(tail->regions, (std::vector<int>{6}));
@@ -159,9 +151,7 @@ TEST(MassJoins, PiecesLyingOnOtherHairAreNotBackHair) {
   d.relations.push_back(below(6, 7));
   d.relations.push_back(below(2, 7));
   const Result r = run(d);
-  const CompletedStrand* s = strand_with(r, 1);
-  ASSERT_NE(s, nullptr);
-  EXPECT_EQ(s->regions, (std::vector<int>{1}));
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
 }
 
 // Screentone: dark square dots `dot` px wide every `period` px on a light
@@ -184,9 +174,7 @@ TEST(MassJoins, PiecesOfOneScreentoneAreJoined) {
   tone(d, 1, 6, 3, 0);
   tone(d, 2, 6, 3, 3);
   const Result r = run(d);
-  const CompletedStrand* s = strand_with(r, 1);
-  ASSERT_NE(s, nullptr);
-  EXPECT_EQ(s->regions, (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
 }
 
 TEST(MassJoins, PiecesOfAnotherScreentoneAreNotJoined) {
@@ -195,9 +183,7 @@ TEST(MassJoins, PiecesOfAnotherScreentoneAreNotJoined) {
   tone(d, 1, 6, 3, 0);
   tone(d, 2, 4, 3, 0);
   const Result r = run(d);
-  const CompletedStrand* s = strand_with(r, 1);
-  ASSERT_NE(s, nullptr);
-  EXPECT_EQ(s->regions, (std::vector<int>{1}));
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
 }
 
 }  // namespace

@@ -64,4 +64,10 @@ inline const CompletedStrand* strand_with(const Result& r, int region) {
   return nullptr;
 }
 
+// The regions of the completed strand that holds `region`; empty if none.
+inline std::vector<int> regions_with(const Result& r, int region) {
+  const CompletedStrand* s = strand_with(r, region);
+  return s != nullptr ? s->regions : std::vector<int>{};
+}
+
 }  // namespace hair25d::completion::test

@@ -147,19 +147,19 @@ TEST(ModelStage, ContactSheetShowsTheCompletedAreasInLightBlue) {
 
 TEST(ModelStage, WriteModelRunPutsTheContactSheetInsideTheAtomicFolder) {
   const fs::path dir = scratch("atomic");
-  ModelRun earlier;
-  earlier.model.width = 40;
-  earlier.model.height = 30;
-  earlier.model.background = Image(40, 30, Rgba{1, 2, 3, 255});
-  earlier.contact_sheet = Image(3, 2, Rgba{1, 2, 3, 255});
-  write_model_run(dir, earlier);
+  // A 40 x 30 model of one background colour, with a contact sheet.
+  const auto bare_run = [](Rgba background, Image sheet) {
+    ModelRun r;
+    r.model.width = 40;
+    r.model.height = 30;
+    r.model.background = Image(40, 30, background);
+    r.contact_sheet = std::move(sheet);
+    return r;
+  };
+  write_model_run(dir, bare_run({1, 2, 3, 255}, Image(3, 2, Rgba{1, 2, 3, 255})));
   // A file of the earlier output that the new one does not write.
   { std::ofstream(dir / "stale.txt") << "old run"; }
-  ModelRun run;
-  run.model.width = 40;
-  run.model.height = 30;
-  run.model.background = Image(40, 30, Rgba{9, 8, 7, 255});
-  run.contact_sheet = Image(50, 20, Rgba{200, 100, 50, 255});
+  const ModelRun run = bare_run({9, 8, 7, 255}, Image(50, 20, Rgba{200, 100, 50, 255}));
   write_model_run(dir, run);
   // The whole folder was replaced in one step: nothing of the old one is left.
   EXPECT_FALSE(fs::exists(dir / "stale.txt"));
