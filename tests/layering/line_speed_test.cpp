@@ -197,6 +197,23 @@ TEST(LineSpeed, PreparedTwiceMeasuresLikeOnce) {
   EXPECT_GT(compared, 5);
 }
 
+// Measures every boundary between two regions with both responses, expects
+// the same numbers to the bit, and returns how many measured a line (and,
+// with `paint`, a paint step too).
+int same_measurements(const LineResponse& want_from, const LineResponse& got_from,
+                      const BoundaryGraph& graph, const LabelMap& labels, double lw, bool paint) {
+  int compared = 0;
+  for (const Boundary& b : graph.boundaries) {
+    if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+    const auto want = want_from.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+    const auto got = got_from.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+    EXPECT_EQ(want.contrast, got.contrast) << "line width " << lw;
+    EXPECT_EQ(want.contrast_low, got.contrast_low) << "line width " << lw;
+    EXPECT_EQ(want.colour_difference, got.colour_difference) << "line width " << lw;
+    compared += want.contrast != 0.0 && (!paint || want.colour_difference != 0.0);
+  }
+  return compared;
+}
 // Points whose samples all lie well inside the window and the map are
 // measured without bounds checks: the same values as checking every sample,
 // on boundaries inside, along and across the window's and the image's edges.
@@ -210,17 +227,8 @@ TEST(LineSpeed, UncheckedSamplesMeasureLikeCheckedOnes) {
     LineResponse fast(image, lw, 20, 10, 260, 190);
     LineResponse checked(image, lw, 20, 10, 260, 190);
     checked.check_every_sample(true);
-    int compared = 0;
-    for (const Boundary& b : graph.boundaries) {
-      if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
-      const auto want = checked.measure(b.points, 1.5 * lw, labels, b.left, b.right);
-      const auto got = fast.measure(b.points, 1.5 * lw, labels, b.left, b.right);
-      EXPECT_EQ(want.contrast, got.contrast) << "line width " << lw;
-      EXPECT_EQ(want.contrast_low, got.contrast_low) << "line width " << lw;
-      EXPECT_EQ(want.colour_difference, got.colour_difference) << "line width " << lw;
-      compared += want.contrast != 0.0;
-    }
-    EXPECT_GT(compared, 10) << "line width " << lw;
+    EXPECT_GT(same_measurements(checked, fast, graph, labels, lw, false), 10)
+        << "line width " << lw;
   }
 }
 
@@ -256,17 +264,7 @@ TEST(LineSpeed, WideVectorsMeasureLikeNarrowOnes) {
     LineResponse wide(image, lw, 15, 10, 290, 215);
     LineResponse narrow(image, lw, 15, 10, 290, 215);
     narrow.use_wide_vectors(false);
-    int compared = 0;
-    for (const Boundary& b : graph.boundaries) {
-      if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
-      const auto want = narrow.measure(b.points, 1.5 * lw, labels, b.left, b.right);
-      const auto got = wide.measure(b.points, 1.5 * lw, labels, b.left, b.right);
-      EXPECT_EQ(want.contrast, got.contrast) << "line width " << lw;
-      EXPECT_EQ(want.contrast_low, got.contrast_low) << "line width " << lw;
-      EXPECT_EQ(want.colour_difference, got.colour_difference) << "line width " << lw;
-      compared += want.contrast != 0.0 && want.colour_difference != 0.0;
-    }
-    EXPECT_GT(compared, 10) << "line width " << lw;
+    EXPECT_GT(same_measurements(narrow, wide, graph, labels, lw, true), 10) << "line width " << lw;
   }
 }
 
