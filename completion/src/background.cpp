@@ -310,8 +310,7 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
         if (hair.at<std::uint8_t>(y, x)) touches[static_cast<std::size_t>(parts.at<int>(y, x))] = 1;
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
-        if (thick.at<std::uint8_t>(y, x) &&
-            touches[static_cast<std::size_t>(parts.at<int>(y, x))] && true)
+        if (thick.at<std::uint8_t>(y, x) && touches[static_cast<std::size_t>(parts.at<int>(y, x))])
           hair.at<std::uint8_t>(y, x) = 255;
   }
   // The face's thick dark features that the hair's outline pixels took
@@ -381,10 +380,10 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       if (dark.at<std::uint8_t>(y, x)) {
-        const bool face = !head.mask.empty() && head.mask.at<std::uint8_t>(y, x);
+        const bool on_head = !head.mask.empty() && head.mask.at<std::uint8_t>(y, x);
         const bool own = hair_coloured.at<std::uint8_t>(y, x);
-        const bool thick_feature = face && features.at<std::uint8_t>(y, x);
-        if (thick_feature || !(face && own ? near_grown : near).at<std::uint8_t>(y, x))
+        const bool thick_feature = on_head && features.at<std::uint8_t>(y, x);
+        if (thick_feature || !(on_head && own ? near_grown : near).at<std::uint8_t>(y, x))
           beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
       }
   cv::Mat holes(h, w, CV_8U, cv::Scalar(0));

@@ -12,18 +12,13 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-#define HAIR25D_LAYERING_AVX2 1
-#endif
 
 #include "hair25d/core/error.h"
+#include "line_samples.h"
 #include "raster_scan.h"
 
 namespace hair25d::layering::detail {
 namespace {
-
-constexpr int kOutside = -2147483647;
 
 // Transparent pixels read as white paper.
 inline float grey_value(const Rgba& p) {
@@ -50,41 +45,6 @@ inline Float4 colour_value(const Rgba& p) {
   return Float4{a * p.r + (1 - a) * 255.0f, a * p.g + (1 - a) * 255.0f, a * p.b + (1 - a) * 255.0f,
                 0.0f};
 }
-
-#if defined(HAIR25D_LAYERING_AVX2)
-// grey_into's opaque formula eight pixels at a time, four per double vector:
-// the same products and sums in the same order, so the same floats. Returns
-// how many pixels it did (a multiple of 8) and ANDs their alphas into `alpha`.
-__attribute__((target("avx2"))) int grey_row_avx2(const Rgba* src, int n, float* row,
-                                                  unsigned* alpha) {
-  const __m256i byte = _mm256_set1_epi32(0xFF);
-  const __m256d wr = _mm256_set1_pd(0.299), wg = _mm256_set1_pd(0.587), wb = _mm256_set1_pd(0.114);
-  __m256i alphas = _mm256_set1_epi32(-1);
-  int x = 0;
-  for (; x + 8 <= n; x += 8) {
-    const __m256i px = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(src + x));
-    const __m256i r8 = _mm256_and_si256(px, byte);
-    const __m256i g8 = _mm256_and_si256(_mm256_srli_epi32(px, 8), byte);
-    const __m256i b8 = _mm256_and_si256(_mm256_srli_epi32(px, 16), byte);
-    alphas = _mm256_and_si256(alphas, px);
-    __m128 half[2];
-    for (int h = 0; h < 2; ++h) {
-      const __m128i r4 = h == 0 ? _mm256_castsi256_si128(r8) : _mm256_extracti128_si256(r8, 1);
-      const __m128i g4 = h == 0 ? _mm256_castsi256_si128(g8) : _mm256_extracti128_si256(g8, 1);
-      const __m128i b4 = h == 0 ? _mm256_castsi256_si128(b8) : _mm256_extracti128_si256(b8, 1);
-      const __m256d lum = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(wr, _mm256_cvtepi32_pd(r4)),
-                                                      _mm256_mul_pd(wg, _mm256_cvtepi32_pd(g4))),
-                                        _mm256_mul_pd(wb, _mm256_cvtepi32_pd(b4)));
-      half[h] = _mm256_cvtpd_ps(lum);
-    }
-    _mm256_storeu_ps(row + x, _mm256_set_m128(half[1], half[0]));
-  }
-  alignas(32) std::uint32_t lanes[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), alphas);
-  for (std::uint32_t v : lanes) *alpha &= v >> 24;
-  return x;
-}
-#endif
 
 // Fills `grey` (window-sized) in `r` from the window at (x0, y0) of `image`.
 // Rows are made as if opaque (a = 1 leaves lum unchanged, exactly) and only
@@ -142,69 +102,12 @@ void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& g
   }
 }
 
-#if defined(HAIR25D_LAYERING_AVX2)
-// smoothed_colour's opaque path with two pixels per register instead of one:
-// every lane does the same float products and sums in the same order (no
-// fused multiply-add: the target is AVX2 alone), so the same floats. The
-// column sums of a group of four pixels are two registers; they are weighted
-// into `sum` column by column, in the SSE2 path's order.
-// 16 bytes (four pixels) to sixteen 16-bit lanes; two of the pixels (half 0
-// or 1) to eight floats.
-__attribute__((target("avx2"))) inline __m256i widen_avx2(const Rgba* four_pixels) {
-  return _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(four_pixels)));
-}
-template <int kHalf>
-__attribute__((target("avx2"))) inline __m256 to_float_avx2(__m256i sixteen) {
-  const __m128i part =
-      kHalf == 0 ? _mm256_castsi256_si128(sixteen) : _mm256_extracti128_si256(sixteen, kHalf);
-  return _mm256_cvtepi32_ps(_mm256_cvtepu16_epi32(part));
-}
-
-__attribute__((target("avx2"))) Rgb3f colour_sum_avx2(const Rgba* centre, std::ptrdiff_t iw, int r,
-                                                      int groups, const float* kernel,
-                                                      const float* column_weights) {
-  __m128 sum = _mm_setzero_ps();
-  for (int g = 0; g < groups; ++g) {
-    const Rgba* mid = centre + 4 * g;
-    const __m256i c = widen_avx2(mid);
-    __m256 w = _mm256_set1_ps(kernel[r]);
-    __m256 c01 = _mm256_mul_ps(w, to_float_avx2<0>(c));
-    __m256 c23 = _mm256_mul_ps(w, to_float_avx2<1>(c));
-    const Rgba* above = mid;
-    const Rgba* below = mid;
-    for (int j = 1; j <= r; ++j) {
-      above -= iw;
-      below += iw;
-      const __m256i pair = _mm256_add_epi16(widen_avx2(above), widen_avx2(below));
-      w = _mm256_set1_ps(kernel[r + j]);
-      c01 = _mm256_add_ps(c01, _mm256_mul_ps(w, to_float_avx2<0>(pair)));
-      c23 = _mm256_add_ps(c23, _mm256_mul_ps(w, to_float_avx2<1>(pair)));
-    }
-    const float* wg = column_weights + 16 * g;
-    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg), _mm256_castps256_ps128(c01)));
-    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 4), _mm256_extractf128_ps(c01, 1)));
-    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 8), _mm256_castps256_ps128(c23)));
-    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 12), _mm256_extractf128_ps(c23, 1)));
-  }
-  alignas(16) float out[4];
-  _mm_store_ps(out, sum);
-  return {out[0], out[1], out[2]};
-}
-#endif
-
 // Grey levels of the window [x0, x0 + w) × [y0, y0 + h) of `image`.
 cv::Mat grey_of(const Image& image, int x0, int y0, int w, int h) {
   cv::Mat grey(h, w, CV_32F);
   grey_into(image, x0, y0, cv::Rect(0, 0, w, h), grey, nullptr,
             LineResponse::wide_vectors_available());
   return grey;
-}
-
-// std::floor to an int for coordinates well inside int's range, without the
-// round trip through double that std::floor costs on baseline x86-64.
-inline int floor_int(double v) {
-  const int i = static_cast<int>(v);  // truncates towards zero
-  return i - (v < i ? 1 : 0);
 }
 
 double median_of(std::vector<double>& v) {
@@ -228,187 +131,6 @@ double colour_sigma(double line_width) { return std::max(1.0, 0.5 * line_width);
 // At least the radius of the kernel cv::GaussianBlur makes for a float image
 // (size round(8σ + 1) | 1).
 int kernel_radius(double sigma) { return static_cast<int>(std::ceil(4.0 * sigma)) + 1; }
-
-// The smoothed window and the label map as measure() reads them, copied into
-// locals: through the members, every sample reloaded them (the vectors it
-// appends to might alias them), and the bounds were converted again each time.
-struct GreyView {
-  const float* grey;
-  int w, h;
-  double x0, y0;      // the window's position
-  double xmax, ymax;  // w − 1, h − 1
-
-  double at(int xx, int yy) const { return static_cast<double>(grey[yy * w + xx]); }
-
-  // Bilinear, pixel centres at +0.5, clamped to the window. Inlined: called
-  // a few dozen times per point measured.
-  // The same where (x, y) is known to lie well inside the window.
-  [[gnu::always_inline]] double sample_inside(double x, double y) const {
-    x = x - 0.5 - x0;
-    y = y - 0.5 - y0;
-    const int xi = static_cast<int>(x), yi = static_cast<int>(y);
-    const double fx = x - xi, fy = y - yi;
-    const float* p = grey + yi * w + xi;
-    return (1 - fy) * ((1 - fx) * static_cast<double>(p[0]) + fx * static_cast<double>(p[1])) +
-           fy * ((1 - fx) * static_cast<double>(p[w]) + fx * static_cast<double>(p[w + 1]));
-  }
-  // Whether the segment from (x + dx, y + dy) to (x − dx, y − dy) lies well
-  // inside the window: then so does every sample along it.
-  bool holds(double x, double y, double dx, double dy) const {
-    const double ax = std::min(x - dx, x + dx) - 0.5 - x0, bx = std::max(x - dx, x + dx) - 0.5 - x0;
-    const double ay = std::min(y - dy, y + dy) - 0.5 - y0, by = std::max(y - dy, y + dy) - 0.5 - y0;
-    return ax >= 1.0 && ay >= 1.0 && bx < xmax - 1.0 && by < ymax - 1.0;
-  }
-
-  [[gnu::always_inline]] double sample(double x, double y) const {
-    x = x - 0.5 - x0;
-    y = y - 0.5 - y0;
-    // Inside the window (almost always) the clamps below change nothing.
-    if (x >= 0.0 && y >= 0.0 && x < xmax && y < ymax) {
-      const int xi = static_cast<int>(x), yi = static_cast<int>(y);
-      const double fx = x - xi, fy = y - yi;
-      const float* p = grey + yi * w + xi;
-      return (1 - fy) * ((1 - fx) * static_cast<double>(p[0]) + fx * static_cast<double>(p[1])) +
-             fy * ((1 - fx) * static_cast<double>(p[w]) + fx * static_cast<double>(p[w + 1]));
-    }
-    x = std::clamp(x, 0.0, xmax);
-    y = std::clamp(y, 0.0, ymax);
-    const int xi = std::min(static_cast<int>(x), w - 2 < 0 ? 0 : w - 2);
-    const int yi = std::min(static_cast<int>(y), h - 2 < 0 ? 0 : h - 2);
-    const int x1 = std::min(xi + 1, w - 1);
-    const int y1 = std::min(yi + 1, h - 1);
-    const double fx = x - xi, fy = y - yi;
-    return (1 - fy) * ((1 - fx) * at(xi, yi) + fx * at(x1, yi)) +
-           fy * ((1 - fx) * at(xi, y1) + fx * at(x1, y1));
-  }
-};
-
-struct LabelView {
-  const int* labels;
-  int w, h;
-  // The same where (x, y) is known to lie in the map (so x, y >= 0: the
-  // truncation is the floor).
-  int at_inside(double x, double y) const {
-    return labels[static_cast<std::size_t>(static_cast<int>(y)) * w + static_cast<int>(x)];
-  }
-  // Whether the segment from (x + dx, y + dy) to (x − dx, y − dy) lies well
-  // inside the map.
-  bool holds(double x, double y, double dx, double dy) const {
-    return std::min(x - dx, x + dx) >= 1.0 && std::min(y - dy, y + dy) >= 1.0 &&
-           std::max(x - dx, x + dx) < w - 1.0 && std::max(y - dy, y + dy) < h - 1.0;
-  }
-  // The label of the pixel holding (x, y), kOutside beyond the map.
-  int at(double x, double y) const {
-    const int xi = floor_int(x), yi = floor_int(y);
-    return xi >= 0 && yi >= 0 && xi < w && yi < h ? labels[static_cast<std::size_t>(yi) * w + xi]
-                                                  : kOutside;
-  }
-};
-#if defined(HAIR25D_LAYERING_AVX2)
-// measure()'s grey samples of one point where all of them lie well inside
-// the window and the map, four at a time: each lane does GreyView::
-// sample_inside's products and sums in its order (no fused multiply-add: the
-// target is AVX2 alone), and min / max do not depend on the order they are
-// taken in, so the same values.
-struct PointSamples {
-  double centre, paper_left, paper_right;
-};
-
-// grey[index[k] + offset] and the float after it, for k = 0..3, in order.
-__attribute__((target("avx2"))) inline __m256i pixel_pairs_avx2(const float* grey, const int* index,
-                                                                int offset) {
-  auto pair = [&](int k) {
-    return _mm_loadl_epi64(reinterpret_cast<const __m128i*>(grey + index[k] + offset));
-  };
-  return _mm256_set_m128i(_mm_unpacklo_epi64(pair(2), pair(3)),
-                          _mm_unpacklo_epi64(pair(0), pair(1)));
-}
-
-// Bilinear samples at (x, y) (four lanes), as GreyView::sample_inside.
-__attribute__((target("avx2"))) inline __m256d bilinear_avx2(const GreyView& g, __m256d x,
-                                                             __m256d y) {
-  const __m256d half = _mm256_set1_pd(0.5);
-  x = _mm256_sub_pd(_mm256_sub_pd(x, half), _mm256_set1_pd(g.x0));
-  y = _mm256_sub_pd(_mm256_sub_pd(y, half), _mm256_set1_pd(g.y0));
-  const __m128i xi = _mm256_cvttpd_epi32(x), yi = _mm256_cvttpd_epi32(y);
-  const __m256d fx = _mm256_sub_pd(x, _mm256_cvtepi32_pd(xi));
-  const __m256d fy = _mm256_sub_pd(y, _mm256_cvtepi32_pd(yi));
-  const __m128i at = _mm_add_epi32(_mm_mullo_epi32(yi, _mm_set1_epi32(g.w)), xi);
-  // Each pixel with its right-hand neighbour, as one 8-byte load per lane
-  // (four loads, not a gather: gathers are slow on some processors).
-  alignas(16) int index[4];
-  _mm_store_si128(reinterpret_cast<__m128i*>(index), at);
-  const __m256i top = pixel_pairs_avx2(g.grey, index, 0);
-  const __m256i bottom = pixel_pairs_avx2(g.grey, index, g.w);
-  const __m256i split = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
-  const __m256 t = _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(top, split));
-  const __m256 b = _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(bottom, split));
-  const __m256d p0 = _mm256_cvtps_pd(_mm256_castps256_ps128(t));
-  const __m256d p1 = _mm256_cvtps_pd(_mm256_extractf128_ps(t, 1));
-  const __m256d p2 = _mm256_cvtps_pd(_mm256_castps256_ps128(b));
-  const __m256d p3 = _mm256_cvtps_pd(_mm256_extractf128_ps(b, 1));
-  const __m256d one = _mm256_set1_pd(1.0);
-  const __m256d gx = _mm256_sub_pd(one, fx), gy = _mm256_sub_pd(one, fy);
-  const __m256d upper = _mm256_add_pd(_mm256_mul_pd(gx, p0), _mm256_mul_pd(fx, p1));
-  const __m256d lower = _mm256_add_pd(_mm256_mul_pd(gx, p2), _mm256_mul_pd(fx, p3));
-  return _mm256_add_pd(_mm256_mul_pd(gy, upper), _mm256_mul_pd(fy, lower));
-}
-
-__attribute__((target("avx2"))) inline double min_of_avx2(__m256d v) {
-  const __m128d m = _mm_min_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
-  return _mm_cvtsd_f64(_mm_min_sd(m, _mm_unpackhi_pd(m, m)));
-}
-__attribute__((target("avx2"))) inline double max_of_avx2(__m256d v) {
-  const __m128d m = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
-  return _mm_cvtsd_f64(_mm_max_sd(m, _mm_unpackhi_pd(m, m)));
-}
-
-// All ones in the lanes whose pixel of `label` holds `want`.
-__attribute__((target("avx2"))) inline __m256d label_mask_avx2(const LabelView& label, __m256d x,
-                                                               __m256d y, __m128i want) {
-  const __m128i at = _mm_add_epi32(_mm_mullo_epi32(_mm256_cvttpd_epi32(y), _mm_set1_epi32(label.w)),
-                                   _mm256_cvttpd_epi32(x));
-  alignas(16) int index[4];
-  _mm_store_si128(reinterpret_cast<__m128i*>(index), at);
-  const int* l = label.labels;
-  const __m128i hit =
-      _mm_cmpeq_epi32(_mm_setr_epi32(l[index[0]], l[index[1]], l[index[2]], l[index[3]]), want);
-  return _mm256_castsi256_pd(_mm256_cvtepi32_epi64(hit));
-}
-
-// `offsets`: the centre search's steps along the normal, `count` of them
-// padded to a multiple of four by repeating the last; the paper search
-// steps 1, 2, ... up to `paper_steps`.
-__attribute__((target("avx2"))) PointSamples point_samples_avx2(
-    const GreyView& grey, const LabelView& label, double px, double py, double nx, double ny,
-    const double* offsets, int count, int paper_steps, int left, int right) {
-  const __m256d vpx = _mm256_set1_pd(px), vpy = _mm256_set1_pd(py);
-  const __m256d vnx = _mm256_set1_pd(nx), vny = _mm256_set1_pd(ny);
-  __m256d centre = _mm256_set1_pd(1e9);
-  for (int k = 0; k < count; k += 4) {
-    const __m256d sv = _mm256_loadu_pd(offsets + k);
-    centre = _mm256_min_pd(centre, bilinear_avx2(grey, _mm256_add_pd(vpx, _mm256_mul_pd(sv, vnx)),
-                                                 _mm256_add_pd(vpy, _mm256_mul_pd(sv, vny))));
-  }
-  const __m256d none = _mm256_set1_pd(-1.0);
-  __m256d paper_left = none, paper_right = none;
-  const __m128i vleft = _mm_set1_epi32(left), vright = _mm_set1_epi32(right);
-  for (int k = 1; k <= paper_steps; k += 4) {
-    __m256d sv = _mm256_setr_pd(k, k + 1, k + 2, k + 3);
-    // Steps past the last repeat it (max ignores the repeat).
-    sv = _mm256_min_pd(sv, _mm256_set1_pd(paper_steps));
-    const __m256d ox = _mm256_mul_pd(sv, vnx), oy = _mm256_mul_pd(sv, vny);
-    const __m256d lx = _mm256_add_pd(vpx, ox), ly = _mm256_add_pd(vpy, oy);
-    const __m256d rx = _mm256_sub_pd(vpx, ox), ry = _mm256_sub_pd(vpy, oy);
-    paper_left = _mm256_max_pd(paper_left, _mm256_blendv_pd(none, bilinear_avx2(grey, lx, ly),
-                                                            label_mask_avx2(label, lx, ly, vleft)));
-    paper_right =
-        _mm256_max_pd(paper_right, _mm256_blendv_pd(none, bilinear_avx2(grey, rx, ry),
-                                                    label_mask_avx2(label, rx, ry, vright)));
-  }
-  return {min_of_avx2(centre), max_of_avx2(paper_left), max_of_avx2(paper_right)};
-}
-#endif
 
 // Noise: MAD of a 3x3 Laplacian on the raw grey window (its edges
 // reflected, as if it were the whole image), over every fourth pixel of
