@@ -78,10 +78,12 @@ void check_output_file(const fs::path& target, const std::string& what) {
   if (fs::is_directory(target, ec)) {
     throw Error(what + " " + target.string() + ": is a folder; expected a file name");
   }
-  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  if (!fs::is_directory(parent, ec)) {
-    throw Error(what + " " + target.string() + ": the folder " + parent.string() +
-                " does not exist");
+  // The folder may be made later (as -o's are), but not where a file stands.
+  fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  while (!fs::exists(parent, ec) && parent.has_parent_path() && parent.parent_path() != parent)
+    parent = parent.parent_path();
+  if (fs::exists(parent, ec) && !fs::is_directory(parent, ec)) {
+    throw Error(what + " " + target.string() + ": " + parent.string() + " is a file, not a folder");
   }
 }
 

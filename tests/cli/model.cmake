@@ -44,6 +44,14 @@ add_test(NAME cli.eval_layering_overlays_keep_other_files
     status=$?; cat err.txt
     test $status = 1 && test \"$(cat ov_keep/notes.txt)\" = mine && test ! -e ov_keep/case0.png"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# A --json in a folder not made yet is written there; one under a file is
+# refused before any case is run.
+add_test(NAME cli.eval_layering_json_in_a_new_folder
+  COMMAND bash -c "rm -rf new_json && ${hair25d} -q eval-layering ${annotated} --json new_json/a/r.json
+      > /dev/null && test -s new_json/a/r.json && echo x > a_file &&
+    ! ${hair25d} -q eval-layering ${annotated} --json a_file/r.json 2> err.txt &&
+    grep -q 'a_file is a file' err.txt"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 add_test(NAME cli.eval_layering_overlays_written_whole
   COMMAND bash -c "rm -rf ov_whole && ${hair25d} -q eval-layering ${annotated} --overlays ov_whole/
       > /dev/null && test $(ls ov_whole | wc -l) = 6 && test -s ov_whole/case5.png"

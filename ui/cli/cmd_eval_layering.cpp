@@ -1,9 +1,12 @@
 // hair25d eval-layering CASES_DIR [--json REPORT.json] [--from-strokes] [--overlays DIR]:
 // layering accuracy over annotated cases, printed like the paper's Table 1.
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include "commands.h"
 #include "hair25d/core/atomic_file.h"
+#include "hair25d/core/error.h"
 #include "hair25d/pipeline/layering_stage.h"
 
 namespace hair25d::cli {
@@ -47,8 +50,14 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
         report = pipeline::evaluate_layering(args->cases_dir, options, &progress);
       });
     }
-    if (!args->json_path.empty())
-      write_text_atomically(args->json_path, pipeline::layering_report_json(report));
+    if (!args->json_path.empty()) {
+      const std::filesystem::path json(args->json_path);
+      std::error_code ec;
+      if (json.has_parent_path()) std::filesystem::create_directories(json.parent_path(), ec);
+      if (ec)
+        throw Error("--json " + args->json_path + ": cannot create its folder: " + ec.message());
+      write_text_atomically(json, pipeline::layering_report_json(report));
+    }
     std::fputs(pipeline::format_layering_table(report).c_str(), stdout);
   });
 }

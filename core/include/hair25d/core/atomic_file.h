@@ -18,7 +18,8 @@ void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path&)>& write);
 
 // Throws hair25d::Error naming `target` (and `what`, e.g. "--json") when a file
-// could not be written there: its folder is missing or it names a folder.
+// could not be written there: it names a folder, or a file stands where one
+// of its folders would be (missing folders may be made when writing).
 // Called before long work so that a bad output path fails first, not last.
 void check_output_file(const std::filesystem::path& target, const std::string& what);
 
