@@ -14,16 +14,23 @@
 namespace hair25d::completion {
 namespace {
 
+// A generated drawing without strand masks (the joins are scored on pairs).
+AnnotatedCase generated(int width, int height, int strands, std::uint64_t seed,
+                        generator::Shading shading) {
+  generator::Options g;
+  g.width = width;
+  g.height = height;
+  g.strand_count = strands;
+  g.seed = seed;
+  g.shading = shading;
+  g.strand_masks = false;
+  return generator::generate_case(g);
+}
+
 TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
-    generator::Options g;
-    g.width = 600;
-    g.height = 440;
-    g.strand_count = 14;
-    g.seed = seed;
-    g.strand_masks = false;
-    g.shading = seed == 2 ? generator::Shading::kTwoTone : generator::Shading::kFlat;
-    const AnnotatedCase c = generator::generate_case(g);
+    const AnnotatedCase c = generated(
+        600, 440, 14, seed, seed == 2 ? generator::Shading::kTwoTone : generator::Shading::kFlat);
     const Input in = test::input_from_case(c);
     Options o;
     o.inpaint_background = false;
@@ -95,14 +102,7 @@ test::PairScore score_generated(std::initializer_list<generator::Shading> shadin
   test::PairScore total;
   for (generator::Shading shading : shadings)
     for (std::uint64_t seed = first_seed; seed <= last_seed; ++seed) {
-      generator::Options g;
-      g.width = 800;
-      g.height = 640;
-      g.strand_count = 20;
-      g.seed = seed;
-      g.shading = shading;
-      g.strand_masks = false;
-      const AnnotatedCase c = generator::generate_case(g);
+      const AnnotatedCase c = generated(800, 640, 20, seed, shading);
       Options o;
       o.face_joins = face_joins;
       o.inpaint_strands = false;
