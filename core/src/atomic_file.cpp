@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <fstream>
 #include <sstream>
@@ -28,13 +29,40 @@ constexpr const char* kOutputMark = ".hair25d-output";
 // The first entry of `old` that `fresh` does not have, or "" when every one
 // does or `old` carries the output mark. Anything else is somebody's file
 // that replacing the folder would delete.
-std::string foreign_entry(const fs::path& old, const fs::path& fresh) {
+std::string foreign_entry(const fs::path& old,
+                          const std::function<bool(const std::string&)>& ours) {
   std::error_code ec;
   if (fs::exists(old / kOutputMark, ec)) return "";
   for (const auto& entry : fs::directory_iterator(old)) {
-    if (!fs::exists(fresh / entry.path().filename(), ec)) return entry.path().filename().string();
+    const std::string name = entry.path().filename().string();
+    if (!ours(name)) return name;
   }
   return "";
+}
+
+std::string foreign_entry(const fs::path& old, const fs::path& fresh) {
+  std::error_code ec;
+  return foreign_entry(old, [&](const std::string& name) { return fs::exists(fresh / name, ec); });
+}
+
+Error foreign_folder_error(const fs::path& target, const std::string& what,
+                           const std::string& foreign) {
+  return Error((what.empty() ? "" : what + " ") + target.string() + ": the folder holds " +
+               foreign +
+               ", which this command does not write; refusing to replace it (give a new "
+               "or empty folder, or an earlier output of this command)");
+}
+
+// The nearest existing folder on the way to `target`; throws when a file
+// stands where one of its folders would be.
+void check_parent_folders(const fs::path& target, const std::string& what) {
+  std::error_code ec;
+  fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  while (!fs::exists(parent, ec) && parent.has_parent_path() && parent.parent_path() != parent)
+    parent = parent.parent_path();
+  if (fs::exists(parent, ec) && !fs::is_directory(parent, ec)) {
+    throw Error(what + " " + target.string() + ": " + parent.string() + " is a file, not a folder");
+  }
 }
 
 }  // namespace
@@ -79,12 +107,22 @@ void check_output_file(const fs::path& target, const std::string& what) {
     throw Error(what + " " + target.string() + ": is a folder; expected a file name");
   }
   // The folder may be made later (as -o's are), but not where a file stands.
-  fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  while (!fs::exists(parent, ec) && parent.has_parent_path() && parent.parent_path() != parent)
-    parent = parent.parent_path();
-  if (fs::exists(parent, ec) && !fs::is_directory(parent, ec)) {
-    throw Error(what + " " + target.string() + ": " + parent.string() + " is a file, not a folder");
+  check_parent_folders(target, what);
+}
+
+void check_output_folder(const fs::path& target_in, const std::string& what,
+                         const std::vector<std::string>& names) {
+  const fs::path target = without_trailing_slash(target_in);
+  std::error_code ec;
+  if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
+    throw Error(what + " " + target.string() + ": exists and is not a folder");
   }
+  check_parent_folders(target, what);
+  if (!fs::is_directory(target, ec)) return;
+  const std::string foreign = foreign_entry(target, [&](const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  });
+  if (!foreign.empty()) throw foreign_folder_error(target, what, foreign);
 }
 
 void write_text_atomically(const fs::path& target, const std::string& text) {
@@ -130,11 +168,7 @@ void write_folder_atomically(const fs::path& target_in,
     const bool had_old = fs::exists(target);
     if (had_old) {
       const std::string foreign = foreign_entry(target, tmp);
-      if (!foreign.empty()) {
-        throw Error(target.string() + ": the folder holds " + foreign +
-                    ", which this command does not write; refusing to replace it (give a new "
-                    "or empty folder, or an earlier output of this command)");
-      }
+      if (!foreign.empty()) throw foreign_folder_error(target, "", foreign);
       fs::rename(target, old);
     }
     fs::rename(tmp, target);

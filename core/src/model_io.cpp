@@ -202,6 +202,10 @@ void write_model(const fs::path& folder, const HairModel& model) {
   write_folder_atomically(folder, [&](const fs::path& tmp) { write_contents(tmp, model); });
 }
 
+std::vector<std::string> model_folder_names() {
+  return {"model.json", "image.png", "background.png", "strands"};
+}
+
 HairModel read_model(const fs::path& folder, const ImageLimits& limits) {
   const fs::path json_path = folder / "model.json";
   const std::string src = json_path.string();

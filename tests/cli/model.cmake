@@ -19,7 +19,8 @@ add_test(NAME cli.model_keeps_a_folder_of_other_files
   COMMAND bash -c "rm -rf keep && mkdir keep && echo mine > keep/notes.txt
     ${hair25d} -q model ${case5}/image.png --regions ${case5}/regions.png -o keep 2> err.txt
     status=$?; cat err.txt
-    test $status = 1 && grep -q 'notes.txt' err.txt && test \"$(cat keep/notes.txt)\" = mine &&
+    test $status = 1 && grep -q '^hair25d: -o keep: .*notes.txt' err.txt &&
+      test \"$(cat keep/notes.txt)\" = mine &&
       test ! -e keep/model.json && test -z \"$(ls -A | grep '^\\.keep')\""
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 
@@ -42,7 +43,8 @@ add_test(NAME cli.eval_layering_overlays_keep_other_files
   COMMAND bash -c "rm -rf ov_keep && mkdir ov_keep && echo mine > ov_keep/notes.txt
     ${hair25d} -q eval-layering ${annotated} --overlays ov_keep > /dev/null 2> err.txt
     status=$?; cat err.txt
-    test $status = 1 && test \"$(cat ov_keep/notes.txt)\" = mine && test ! -e ov_keep/case0.png"
+    test $status = 1 && grep -q '^hair25d: --overlays ov_keep: .*notes.txt' err.txt &&
+      test \"$(cat ov_keep/notes.txt)\" = mine && test ! -e ov_keep/case0.png"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 # A --json in a folder not made yet is written there; one under a file is
 # refused before any case is run.

@@ -71,6 +71,41 @@ TEST(AtomicFile, FolderHoldingSomebodysFilesIsNeverReplaced) {
   EXPECT_EQ(count_entries(dir.path()), 1);  // no temporary left beside it
 }
 
+// The check made before a long run refuses what the final write would refuse,
+// and lets through what it would replace.
+TEST(AtomicFile, OutputFolderIsCheckedBeforeTheWork) {
+  testing::TempDir dir;
+  const std::vector<std::string> names = {"model.json", "strands"};
+  check_output_folder(dir / "new" / "deeper", "-o", names);  // missing folders are made later
+  fs::create_directory(dir / "empty");
+  check_output_folder(dir / "empty", "-o", names);
+  fs::create_directory(dir / "ours");
+  std::ofstream(dir / "ours" / "model.json") << "{}";
+  check_output_folder(dir / "ours/", "-o", names);
+  write_folder_atomically(dir / "marked", [](const fs::path& tmp) {
+    std::ofstream(tmp / "other.txt") << "an earlier output with another name";
+  });
+  check_output_folder(dir / "marked", "-o", names);
+
+  fs::create_directory(dir / "precious");
+  std::ofstream(dir / "precious" / "model.json") << "{}";
+  std::ofstream(dir / "precious" / "notes.txt") << "mine";
+  std::ofstream(dir / "a_file") << "x";
+  const auto message = [&](const fs::path& target) {
+    try {
+      check_output_folder(target, "-o", names);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message(dir / "precious").find("notes.txt"), std::string::npos);
+  EXPECT_NE(message(dir / "precious").find("-o "), std::string::npos);
+  EXPECT_NE(message(dir / "a_file").find("not a folder"), std::string::npos);
+  EXPECT_NE(message(dir / "a_file" / "m").find("is a file"), std::string::npos);
+  EXPECT_EQ(read_text_file(dir / "precious" / "notes.txt"), "mine");
+}
+
 TEST(AtomicFile, EarlierOutputOfTheSameCommandIsReplaced) {
   testing::TempDir dir;
   const auto fill = [](const std::string& text) {

@@ -2,9 +2,12 @@
 // layering accuracy over annotated cases, printed like the paper's Table 1.
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <system_error>
+#include <vector>
 
 #include "commands.h"
+#include "hair25d/core/annotation.h"
 #include "hair25d/core/atomic_file.h"
 #include "hair25d/core/error.h"
 #include "hair25d/pipeline/layering_stage.h"
@@ -38,6 +41,16 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
     pipeline::LayeringEvalOptions options;
     options.from_strokes = args->from_strokes;
     if (!args->json_path.empty()) check_output_file(args->json_path, "--json");
+    if (!args->overlays_dir.empty()) {
+      std::vector<std::string> names;
+      for (const auto& c : find_annotated_cases(args->cases_dir)) {
+        // Named as read_annotated_case names a case.
+        const std::string name =
+            c.filename().empty() ? c.parent_path().filename().string() : c.filename().string();
+        names.push_back(name + ".png");
+      }
+      check_output_folder(args->overlays_dir, "--overlays", names);
+    }
     TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
     pipeline::LayeringEvalReport report;
     if (args->overlays_dir.empty()) {

@@ -65,6 +65,7 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
                                  "say which regions are hair: --strokes S.json, --regions R.png or "
                                  "--hair-colour #RRGGBB");
     }
+    pipeline::check_model_folder(args->out, "-o");
     std::optional<std::array<std::uint8_t, 3>> hair_colour;
     if (!args->hair_colour.empty()) hair_colour = parse_hair_colour(args->hair_colour);
     auto start = Clock::now();

@@ -40,6 +40,7 @@ void add_segment_command(CLI::App& app, const CommonOptions& common) {
                   "Folder to write regions.png, segmentation.json and overlay.png into")
       ->required();
   cmd->callback([args, &common] {
+    pipeline::check_segment_folder(args->out, "-o");
     const Image image = load_image(args->image);
     std::optional<Strokes> strokes;
     if (!args->strokes.empty()) strokes = read_strokes(args->strokes);

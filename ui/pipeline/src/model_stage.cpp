@@ -271,4 +271,10 @@ void write_model_run(const std::filesystem::path& folder, const ModelRun& run) {
   });
 }
 
+void check_model_folder(const std::filesystem::path& folder, const std::string& what) {
+  std::vector<std::string> names = model_folder_names();
+  names.push_back("contact_sheet.png");
+  check_output_folder(folder, what, names);
+}
+
 }  // namespace hair25d::pipeline

@@ -67,4 +67,8 @@ void write_segment_run(const std::filesystem::path& out_dir, const SegmentRun& r
   });
 }
 
+void check_segment_folder(const std::filesystem::path& out_dir, const std::string& what) {
+  check_output_folder(out_dir, what, {"regions.png", "segmentation.json", "overlay.png"});
+}
+
 }  // namespace hair25d::pipeline

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace hair25d {
 
@@ -22,6 +23,14 @@ void write_atomically(const std::filesystem::path& target,
 // of its folders would be (missing folders may be made when writing).
 // Called before long work so that a bad output path fails first, not last.
 void check_output_file(const std::filesystem::path& target, const std::string& what);
+
+// Throws hair25d::Error naming `target` (and `what`, e.g. "-o") when
+// write_folder_atomically would refuse it at the end of a long run: a file
+// stands there or where one of its folders would be, or it is a folder that is
+// neither empty nor an earlier output and holds an entry not in `names` (the
+// names the command writes). Called before the work, as check_output_file is.
+void check_output_folder(const std::filesystem::path& target, const std::string& what,
+                         const std::vector<std::string>& names);
 
 // Writes text to a file atomically.
 void write_text_atomically(const std::filesystem::path& target, const std::string& text);

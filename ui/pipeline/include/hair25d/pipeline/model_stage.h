@@ -78,4 +78,8 @@ Image render_contact_sheet(const ModelRun& run, int panel_max_side = 640);
 // it, atomically: the folder appears only once every file is in it.
 void write_model_run(const std::filesystem::path& folder, const ModelRun& run);
 
+// Throws hair25d::Error before any work when write_model_run would refuse
+// `folder` (a file there, or a folder of somebody else's files).
+void check_model_folder(const std::filesystem::path& folder, const std::string& what);
+
 }  // namespace hair25d::pipeline

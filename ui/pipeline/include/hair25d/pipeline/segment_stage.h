@@ -38,4 +38,8 @@ SegmentRun run_segment_by_colour(const Image& image, std::array<std::uint8_t, 3>
 // file cannot be written.
 void write_segment_run(const std::filesystem::path& out_dir, const SegmentRun& run);
 
+// Throws hair25d::Error before any work when write_segment_run would refuse
+// `out_dir` (a file there, or a folder of somebody else's files).
+void check_segment_folder(const std::filesystem::path& out_dir, const std::string& what);
+
 }  // namespace hair25d::pipeline
