@@ -257,6 +257,29 @@ void take_islands(cv::Mat& holes) {
     }
 }
 
+// The pixels on the head of the pieces (8-connected) of `dark` that hold a
+// pixel not `own` (the hair's colour) more than `reach` px (chessboard) from
+// `hair`.
+cv::Mat face_lines(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& hair,
+                   const cv::Mat& head, int reach) {
+  cv::Mat near, parts;
+  cv::dilate(hair, near,
+             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * reach + 1, 2 * reach + 1)));
+  const int n = cv::connectedComponents(dark, parts, 8, CV_32S);
+  std::vector<std::uint8_t> far(static_cast<std::size_t>(n), 0);
+  for (int y = 0; y < dark.rows; ++y)
+    for (int x = 0; x < dark.cols; ++x)
+      if (dark.at<std::uint8_t>(y, x) && !near.at<std::uint8_t>(y, x) &&
+          !own.at<std::uint8_t>(y, x))
+        far[static_cast<std::size_t>(parts.at<int>(y, x))] = 1;
+  cv::Mat lines(dark.size(), CV_8U, cv::Scalar(0));
+  for (int y = 0; y < dark.rows; ++y)
+    for (int x = 0; x < dark.cols; ++x)
+      if (head.at<std::uint8_t>(y, x) && far[static_cast<std::size_t>(parts.at<int>(y, x))])
+        lines.at<std::uint8_t>(y, x) = 255;
+  return lines;
+}
+
 }  // namespace
 
 Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpainted) {
@@ -349,7 +372,17 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   // than dark_luma) touch the bangs: there it grows only through pixels of
   // the hair's colour (the bangs' tips and outline, not a blue eye).
   cv::Mat reachable = dark | hair;
-  if (!head.mask.empty()) reachable &= (head.mask == 0) | hair | hair_coloured;
+  if (!head.mask.empty()) {
+    reachable &= (head.mask == 0) | hair | hair_coloured;
+    // Lashes and a glasses' frame as dark as the hair run along the bangs'
+    // edge, within the growth's reach, but they are joined to the rest of
+    // the eye, whose iris, of another colour, lies farther; a lock's point
+    // of the hair's colour may reach farther, but in the hair's colour. On
+    // the head the growth does not enter dark pieces holding a pixel of
+    // another colour beyond its reach (sylvie's upper lashes and with them
+    // her irises' tops, lucy's lash and glasses' frame went with the bangs).
+    reachable &= ~face_lines(dark & ~hair, hair_coloured, hair, head.mask, 2 * o.outline_reach);
+  }
   for (int k = 0; k < 2 * o.outline_reach; ++k) {
     cv::Mat grown;
     cv::dilate(outline, grown, step);

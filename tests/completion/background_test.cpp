@@ -472,6 +472,53 @@ TEST(HeadBehindHair, LockTipOnTheFaceGoesIrisOfAnotherColourStays) {
   EXPECT_GE(features::eyes_kept(d, r), 0.85);
 }
 
+// Upper lashes of the hair's own colour (a band 4 px thick over the upper
+// half of each eye, the eye's blue iris below it) lying right under the cap:
+// the outline assignment gives the lashes' first rows to the cap, and the
+// outline growth, which on the head passes pixels of the hair's colour, took
+// the rest and the iris's top with them (on sylvie both eyes were cut flat
+// where the bangs lay, on lucy her lash and glasses' frame went). The
+// lashes run on into the iris, farther from the hair than the growth
+// reaches: they are the face's.
+TEST(HeadBehindHair, LashesOfTheHairsColourUnderTheBangsStay) {
+  constexpr double kLashIn = 7, kLashOut = 11;
+  constexpr double kEyeY = features::kCapBottom + kLashOut;
+  auto in_lash = [&](double x, double y) {
+    for (const double ex : features::kEyeX) {
+      const double r = std::hypot(x - ex, y - kEyeY);
+      if (y < kEyeY && r >= kLashIn && r < kLashOut) return true;
+    }
+    return false;
+  };
+  auto in_iris = [&](double x, double y) {
+    for (const double ex : features::kEyeX)
+      if (std::hypot(x - ex, y - kEyeY) < kLashIn) return true;
+    return false;
+  };
+  test::Drawing d = features::drawing(false);
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      // features::drawing's own eyes lie higher: skin where they were.
+      if (features::in_eye(x + 0.5, y + 0.5) && d.regions.at(x, y) == 0) d.image.at(x, y) = kSkin;
+      if (in_lash(x + 0.5, y + 0.5)) d.image.at(x, y) = head::kCapHair;
+      if (in_iris(x + 0.5, y + 0.5)) d.image.at(x, y) = features::kBlueIris;
+    }
+  const Result r = head::run(d);
+  // Below the rows the outline assignment gives the cap (2 px of outline, up
+  // to 4 px from the cap's fill).
+  int lash = 0, lash_kept = 0, iris = 0, iris_kept = 0;
+  for (int y = static_cast<int>(features::kCapBottom) + 3; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const bool kept = r.background.at(x, y) == d.image.at(x, y);
+      if (in_lash(x + 0.5, y + 0.5)) ++lash, lash_kept += kept;
+      if (in_iris(x + 0.5, y + 0.5)) ++iris, iris_kept += kept;
+    }
+  ASSERT_GT(lash, 150);
+  ASSERT_GT(iris, 250);
+  EXPECT_GE(lash_kept, lash * 85 / 100) << "the lashes went with the hair";
+  EXPECT_GE(iris_kept, iris * 95 / 100) << "the irises are cut";
+}
+
 // Two white specks (12×7) the segmentation left inside the cap, label 0: one
 // over the skull, one over the sheet beside the face. They lie on the hair
 // and go with it (before, on lucy, headband fragments floated on the bald
