@@ -18,6 +18,7 @@
 #include "hair25d/core/error.h"
 #include "hair25d/generator/generator.h"
 #include "hair25d/layering/layering.h"
+#include "train_layering_style.h"
 
 namespace {
 
@@ -49,32 +50,6 @@ struct SameSample {
   double y = 0;  // +1 same depth
   double weight = 1;
 };
-
-// A spread of styles so the weights do not learn one look: shading, line
-// width, noise, JPEG, coloured lines, image size and strand count all vary.
-generator::Options style(int i, std::uint64_t seed) {
-  static constexpr generator::Shading kShadings[] = {
-      generator::Shading::kFlat, generator::Shading::kTwoTone, generator::Shading::kGradient,
-      generator::Shading::kScreentone};
-  static constexpr double kLines[] = {1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 2.5};
-  static constexpr int kJpeg[] = {0, 40, 70, 0, 90};
-  static constexpr double kNoise[] = {0.0, 4.0, 0.0, 8.0};
-  static constexpr int kStrands[] = {8, 12, 16, 24, 10, 20};
-  static constexpr int kSizes[][2] = {{640, 480}, {800, 600}, {960, 720}, {512, 640}};
-  generator::Options o;
-  o.seed = seed + static_cast<std::uint64_t>(i);
-  o.shading = kShadings[i % 4];
-  o.line_width = kLines[i % 7];
-  o.jpeg_quality = kJpeg[i % 5];
-  o.noise_sigma = kNoise[i % 4];
-  o.coloured_lines = i % 6 == 5;
-  o.fading_forks = i % 3 == 1;
-  o.strand_count = kStrands[i % 6];
-  o.width = kSizes[i % 4][0];
-  o.height = kSizes[i % 4][1];
-  o.strand_masks = false;
-  return o;
-}
 
 // Minimises Σ log(1 + exp(−y w·x)) + ridge/2 ‖w‖² by Newton steps.
 Eigen::VectorXd fit(const std::vector<Sample>& samples, double ridge) {
@@ -130,7 +105,7 @@ int main(int argc, char** argv) {
     hair25d::AnnotatedCase c;
     layering::Result r;
     try {
-      c = generator::generate_case(style(i, seed));
+      c = generator::generate_case(hair25d::layering_training::training_style(i, seed));
       r = layering::layer_regions(c.image, c.regions, options);
     } catch (const hair25d::Error& e) {
       std::fprintf(stderr, "case %d skipped: %s\n", i, e.what());

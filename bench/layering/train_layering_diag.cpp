@@ -83,12 +83,15 @@ int main(int argc, char** argv) {
   app.add_option("--equal-log-odds", options.equal_log_odds);
   app.add_flag("--context", options.region_context);
   app.add_flag("--paper", paper);
+  bool no_patches = false;
+  app.add_flag("--no-patches", no_patches, "without the junction patch model");
   app.add_flag("--quiet", quiet, "totals only");
   CLI11_PARSE(app, argc, argv);
   options.coupling = coupling == "all"    ? layering::Coupling::kAllPairs
                      : coupling == "none" ? layering::Coupling::kNone
                                           : layering::Coupling::kSmoothestPair;
   options.learned_equal = !no_equal;
+  options.junction_patches = !no_patches;
   if (paper) options.metric = layering::Metric::kPaper;
   int total = 0, right = 0;
   std::filesystem::create_directories(out_dir);
@@ -118,13 +121,15 @@ int main(int argc, char** argv) {
         const double sgn = b.left == o.a ? 1 : -1;  // toward a above
         std::printf(
             "   len %.0f occ %d contrast %.0f low %.0f col %.1f | learned(a up) %+.2f phiJ %+.2f "
-            "phiR %+.2f | equal %+.2f state(a up) %+d | start %s %.0f/%.0f n%d end %s %.0f/%.0f "
+            "phiR %+.2f patch %+.2f -> %+.2f | equal %+.2f state(a up) %+d | start %s %.0f/%.0f "
+            "n%d end %s %.0f/%.0f "
             "n%d\n",
             b.length, b.occluding, b.line_contrast, b.line_contrast_low, b.colour_difference,
-            sgn * b.learned, sgn * b.phi_j, sgn * b.phi_r, b.equal, static_cast<int>(sgn) * b.state,
-            b.cues.start.used ? "T" : "-", b.cues.start.left * 57.3, b.cues.start.right * 57.3,
-            b.cues.start.rays, b.cues.end.used ? "T" : "-", b.cues.end.left * 57.3,
-            b.cues.end.right * 57.3, b.cues.end.rays);
+            sgn * b.learned, sgn * b.phi_j, sgn * b.phi_r, sgn * b.patch, sgn * b.patch_log_odds,
+            b.equal, static_cast<int>(sgn) * b.state, b.cues.start.used ? "T" : "-",
+            b.cues.start.left * 57.3, b.cues.start.right * 57.3, b.cues.start.rays,
+            b.cues.end.used ? "T" : "-", b.cues.end.left * 57.3, b.cues.end.right * 57.3,
+            b.cues.end.rays);
       }
       hair25d::save_image(std::filesystem::path(out_dir) / (c.name + "_" + std::to_string(o.a) +
                                                             "_" + std::to_string(o.b) + ".png"),

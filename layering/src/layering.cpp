@@ -15,6 +15,7 @@
 #include "line_response.h"
 #include "neighbours.h"
 #include "parallel.h"
+#include "patch_model.h"
 #include "raster_scan.h"
 
 namespace hair25d::layering {
@@ -449,6 +450,25 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     }
   }
 
+  // --- Junction patches (an addition): the label map about both ends of
+  // each occluding hair boundary, read by a small network (patch_model.h),
+  // joined with the order model's log-odds by a second logistic stage. ---
+  const bool use_patches = options.metric == Metric::kLearned && options.junction_patches;
+  if (use_patches) {
+    const detail::PatchNet& net = detail::patch_weights();
+    const double radius = detail::patch_radius(reach);
+    detail::parallel_for(nb, [&](int i) {
+      const Boundary& b = bs[i];
+      BoundaryReport& rep = out.boundaries[i];
+      rep.patch_log_odds = rep.learned;
+      if (!rep.occluding || b.left <= 0 || b.right <= 0 || b.closed()) return;
+      for (const detail::Patch& p : detail::boundary_patches(
+               out.labels, graph, b, leave_start[i].near, leave_end[i].near, radius))
+        rep.patch += detail::patch_score(net, p);
+      rep.patch_log_odds = net.order_weight * rep.learned + net.patch_weight * rep.patch;
+    });
+  }
+
   // --- Region context (an addition): each boundary's log-odds weighed with
   // how its two regions stand against their other neighbours. ---
   const bool use_context = options.metric == Metric::kLearned && options.region_context;
@@ -482,7 +502,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     if (!rep.occluding || b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
     if (!options.background_states && (b.left == 0 || b.right == 0)) continue;
     double unary = options.metric == Metric::kLearned
-                       ? options.learned_scale * (use_context ? rep.context_log_odds : rep.learned)
+                       ? options.learned_scale * (use_context   ? rep.context_log_odds
+                                                  : use_patches ? rep.patch_log_odds
+                                                                : rep.learned)
                        : rep.phi;
     auto f = fixed_dir.find(key(b.left, b.right));
     if (f != fixed_dir.end()) {

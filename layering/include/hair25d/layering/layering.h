@@ -67,6 +67,10 @@ struct Options {
   // with the region context (context_metric in learned_metric.h): how each
   // region stands against its other neighbours.
   bool region_context = false;
+  // With the learned metric, the label map about each end of an occluding
+  // hair boundary is read by a small learned network (junction patches, an
+  // addition) and joined with the boundary's log-odds.
+  bool junction_patches = true;
   // Give label-0 outline pixels to the regions they separate first (FORMATS.md).
   bool fill_outlines = true;
   // Boundaries between hair and background take part in Eq. (2) (they carry
@@ -99,6 +103,8 @@ struct BoundaryReport {
   double learned = 0.0;           // learned_metric(features), log-odds of left above
   double context = 0.0;           // context_differences: left's standing minus right's
   double context_log_odds = 0.0;  // context_metric(learned, context)
+  double patch = 0.0;             // junction patch score, both ends, left above
+  double patch_log_odds = 0.0;    // learned joined with the patch score
   EqualCues equal_cues;           // what the same-depth model is computed from
   EqualFeatures equal_features{};
   double equal = 0.0;  // equal_metric(equal_features), log-odds of same depth

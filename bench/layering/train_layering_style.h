@@ -1,0 +1,37 @@
+// The generated drawings the learned layering models are trained on
+// (train_layering.cpp, train_layering_patch.cpp): drawing i of a run.
+#pragma once
+
+#include <cstdint>
+
+#include "hair25d/generator/generator.h"
+
+namespace hair25d::layering_training {
+
+// A spread of styles so the weights do not learn one look: shading, line
+// width, noise, JPEG, coloured lines, image size and strand count all vary.
+inline hair25d::generator::Options training_style(int i, std::uint64_t seed) {
+  static constexpr hair25d::generator::Shading kShadings[] = {
+      hair25d::generator::Shading::kFlat, hair25d::generator::Shading::kTwoTone,
+      hair25d::generator::Shading::kGradient, hair25d::generator::Shading::kScreentone};
+  static constexpr double kLines[] = {1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 2.5};
+  static constexpr int kJpeg[] = {0, 40, 70, 0, 90};
+  static constexpr double kNoise[] = {0.0, 4.0, 0.0, 8.0};
+  static constexpr int kStrands[] = {8, 12, 16, 24, 10, 20};
+  static constexpr int kSizes[][2] = {{640, 480}, {800, 600}, {960, 720}, {512, 640}};
+  hair25d::generator::Options o;
+  o.seed = seed + static_cast<std::uint64_t>(i);
+  o.shading = kShadings[i % 4];
+  o.line_width = kLines[i % 7];
+  o.jpeg_quality = kJpeg[i % 5];
+  o.noise_sigma = kNoise[i % 4];
+  o.coloured_lines = i % 6 == 5;
+  o.fading_forks = i % 3 == 1;
+  o.strand_count = kStrands[i % 6];
+  o.width = kSizes[i % 4][0];
+  o.height = kSizes[i % 4][1];
+  o.strand_masks = false;
+  return o;
+}
+
+}  // namespace hair25d::layering_training

@@ -1,0 +1,74 @@
+// A learned look at the whole local configuration of a boundary's junctions,
+// an addition to paper §4.2–4.4: the label map around each end, rasterised in
+// the boundary's own frame, read by a small neural network (trained with
+// OpenCV's ANN_MLP on generated drawings, bench/layering/train_layering_patch.cpp).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "hair25d/core/geometry.h"
+#include "hair25d/core/image.h"
+#include "hair25d/layering/boundary_graph.h"
+
+namespace hair25d::layering::detail {
+
+// A patch is kPatchCells × kPatchCells cells about a junction, u along the
+// boundary leaving the junction (+u), v toward region A's side (+v), two
+// channels per cell (cell-major): the share of region A minus that of region
+// B, and the share of other hair regions (background and the outside of the
+// image are 0 in both). Each cell is the mean of 2 × 2 point samples.
+inline constexpr int kPatchCells = 16;
+inline constexpr int kPatchChannels = 2;
+inline constexpr int kPatchInputs = kPatchCells * kPatchCells * kPatchChannels;
+using Patch = std::array<float, kPatchInputs>;
+
+// The cells cover [−radius, radius]² about `centre` (pixel-corner
+// coordinates, as junction positions). `direction` is the unit direction in
+// which the boundary leaves the junction; `a_on_left` says whether region a
+// lies on the left of that walk as seen on the screen (x right, y down).
+// Throws hair25d::Error for a radius that is not finite and > 0 or a
+// direction that is not a finite non-zero vector.
+Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& direction, int a,
+                     int b, bool a_on_left, double radius);
+
+// The same configuration with regions A and B exchanged: mirrored across the
+// u axis, the A − B channel negated.
+Patch swapped(const Patch& patch);
+
+// The patch radius for a drawing's line width and junction fit length: the
+// fit length (layering's `reach`), where the sectors are measured.
+double patch_radius(double reach);
+
+// A one-hidden-layer perceptron in OpenCV's ANN_MLP form: every unit,
+// the output included, applies β (1 − e^{−αx}) / (1 + e^{−αx}).
+inline constexpr int kPatchHidden = 16;
+struct PatchNet {
+  std::array<std::array<float, kPatchInputs>, kPatchHidden> w1{};
+  std::array<float, kPatchHidden> b1{};
+  std::array<float, kPatchHidden> w2{};
+  float b2 = 0;
+  double alpha = 2.0 / 3.0, beta = 1.7159;
+  // Second stage: log-odds "A above" = order · (6b log-odds) + patch · score.
+  double order_weight = 1.0;
+  double patch_weight = 0.0;
+};
+
+// The network's raw output for one patch.
+double patch_net(const PatchNet& net, const Patch& patch);
+
+// Antisymmetric by construction: net(P) − net(swapped(P)), so exchanging A and
+// B flips its sign exactly and it cannot prefer a side.
+double patch_score(const PatchNet& net, const Patch& patch);
+
+// The patches of both ends of boundary `b` of `graph` (none for a closed
+// loop; an end is left out when its direction is zero), region A = b.left.
+// `start_direction` / `end_direction` are the directions leaving each end.
+std::vector<Patch> boundary_patches(const LabelMap& labels, const BoundaryGraph& graph,
+                                    const Boundary& b, const Vec2& start_direction,
+                                    const Vec2& end_direction, double radius);
+
+// The weights in use (layering/src/patch_weights.cpp says how they were made).
+const PatchNet& patch_weights();
+
+}  // namespace hair25d::layering::detail
