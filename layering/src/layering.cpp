@@ -14,6 +14,7 @@
 #include "hair25d/layering/optimizer.h"
 #include "line_response.h"
 #include "neighbours.h"
+#include "outline_fill.h"
 #include "parallel.h"
 #include "patch_model.h"
 #include "raster_scan.h"
@@ -89,7 +90,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                 std::to_string(regions.height()) + " but the image is " +
                 std::to_string(image.width()) + "x" + std::to_string(image.height()) +
                 "; they must have the same size");
-  const std::vector<int> ids = detail::distinct_labels(regions);
+  // Helpers for every parallel step below, started once (parallel.h).
+  detail::Pool pool;
+  const std::vector<int> ids = detail::distinct_labels(regions, &pool);
   if (ids.size() < 2)
     throw Error("layering: the region map has " + std::to_string(ids.size()) +
                 " hair region(s); layering needs at least two");
@@ -105,7 +108,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   detail::LineResponse lines(image, &regions);
   OutlineFill fill;
   if (options.fill_outlines) {
-    fill = fill_outlines(regions);
+    fill = detail::fill_outlines(regions, &pool);
     out.labels = std::move(fill.labels);
   } else {
     out.labels = regions;
@@ -143,7 +146,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     if (r.relation == Relation::kEqual) fixed_equal.insert(key(r.a, r.b));
   // Lines along the boundaries are measured on all cores (parallel.h).
   std::vector<detail::BoundaryLine> measured(nb);
-  detail::parallel_for(nb, [&](int i) {
+  detail::parallel_for(&pool, nb, [&](int i) {
     const Boundary& b = bs[i];
     if (b.left == kOutsideLabel || b.right == kOutsideLabel) return;
     Polyline curve = b.points;
@@ -208,7 +211,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     return Leaving{leaving_direction(p, reach), leaving_direction(p, 3 * reach),
                    curved_leaving_direction(p, skip, reach)};
   };
-  detail::parallel_for(nb, [&](int i) {
+  detail::parallel_for(&pool, nb, [&](int i) {
     const Boundary& b = bs[i];
     if (b.closed()) return;
     leave_start[i] = leaving(b.points);
@@ -254,7 +257,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       rep.phi_j = rep.phi_j_start = rep.phi_j_end = 0.0;
     }
     const LabelMap& lab = out.labels;
-    detail::parallel_for(nj, [&](int j) {
+    detail::parallel_for(&pool, nj, [&](int j) {
       const int n = static_cast<int>(rays[j].size());
       auto end_of = [&](const Ray& r) -> EndAngles& {
         return r.at_start ? out.boundaries[r.boundary].cues.start
@@ -353,7 +356,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   // Φ_R, the features and the learned metric of each boundary on all cores,
   // each into its own report; the sums over regions in between on this one.
   auto unary_cues = [&] {
-    detail::parallel_for(nb, [&](int i) {
+    detail::parallel_for(&pool, nb, [&](int i) {
       const Boundary& b = bs[i];
       BoundaryReport& rep = out.boundaries[i];
       Polyline curve = b.points;
@@ -394,7 +397,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       rep.cues.shared_left = perimeter[bs[i].left] > 0 ? shared / perimeter[bs[i].left] : 0.0;
       rep.cues.shared_right = perimeter[bs[i].right] > 0 ? shared / perimeter[bs[i].right] : 0.0;
     }
-    detail::parallel_for(nb, [&](int i) {
+    detail::parallel_for(&pool, nb, [&](int i) {
       BoundaryReport& rep = out.boundaries[i];
       rep.features = boundary_features(rep.cues);
       rep.learned = learned_metric(rep.features);
@@ -413,7 +416,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     std::nth_element(steps.begin(), mid, steps.end());
     typical_step = *mid;
   }
-  detail::parallel_for(nb, [&](int i) {
+  detail::parallel_for(&pool, nb, [&](int i) {
     BoundaryReport& rep = out.boundaries[i];
     EqualCues& e = rep.equal_cues;
     e.length_widths = rep.length / out.line_width;

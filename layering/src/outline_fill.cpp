@@ -237,7 +237,7 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
 namespace detail {
 
 OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
-                                   int max_bands, int min_band_rows, bool wide_rows) {
+                                   int max_bands, int min_band_rows, bool wide_rows, Pool* pool) {
   std::string why;
   if (!options.is_valid(&why)) throw Error("layering: " + why);
   if (labels.empty()) throw Error("layering: label map is empty; need at least one pixel");
@@ -271,7 +271,7 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   // whichever core is free (alone on small maps).
   if (bands == 1) out.labels = labels;
   detail::parallel_for(
-      bands == 1 ? 1 : bands + 1,
+      pool, bands == 1 ? 1 : bands + 1,
       [&](int b) {
         if (b == bands) {
           out.labels = labels;

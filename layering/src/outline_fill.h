@@ -4,6 +4,7 @@
 #pragma once
 
 #include "hair25d/layering/boundary_graph.h"
+#include "parallel.h"
 
 namespace hair25d::layering::detail {
 
@@ -18,8 +19,15 @@ inline constexpr int kMinFillBandRows = 96;
 // rows within the growth's reach: the result equals one growth over the
 // whole map (max_bands = 1) in every pixel, the line width and the radius.
 // With `wide_rows` (where the processor has AVX2) the rows are prepared
-// sixteen pixels at a time; the result is the same (for tests).
+// sixteen pixels at a time; the result is the same (for tests). The bands
+// run on `pool`'s helpers where one is given.
 OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
-                                   int max_bands, int min_band_rows, bool wide_rows = true);
+                                   int max_bands, int min_band_rows, bool wide_rows = true,
+                                   Pool* pool = nullptr);
+
+// fill_outlines with its bands on `pool`'s helpers.
+inline OutlineFill fill_outlines(const LabelMap& labels, Pool* pool) {
+  return fill_outlines_in_bands(labels, {}, kFillBands, kMinFillBandRows, true, pool);
+}
 
 }  // namespace hair25d::layering::detail

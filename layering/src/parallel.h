@@ -16,27 +16,99 @@
 #include <system_error>
 #include <thread>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace hair25d::layering::detail {
+
+// Helper threads kept for one layering: parallel_for hands its items to
+// them instead of starting a thread per call (starting one costs the caller
+// tens of microseconds, and a layering has about ten parallel steps). Jobs
+// run in the order posted, each on whichever helper is free. The helpers
+// are detached: the pool's end does not wait for them to wake up and end,
+// so a job must not refer to anything that may end before it runs
+// (parallel_for's jobs refer only to what they share with the call).
+class Pool {
+ public:
+  // `helpers` threads (default: one fewer than the cores); fewer where no
+  // more threads can be made.
+  explicit Pool(int helpers = -1) : state_(std::make_shared<State>()) {
+    if (helpers < 0)
+      helpers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) - 1;
+    for (int t = 0; t < helpers; ++t) {
+      try {
+        std::thread([state = state_] { run(*state); }).detach();
+        ++helpers_;
+      } catch (const std::system_error&) {
+        break;  // the ones made take every job
+      }
+    }
+  }
+  // Helpers end once the jobs still queued are done.
+  ~Pool() {
+    {
+      const std::lock_guard lock(state_->mutex);
+      state_->stop = true;
+    }
+    state_->ready.notify_all();
+  }
+  Pool(const Pool&) = delete;
+  Pool& operator=(const Pool&) = delete;
+
+  int helpers() const { return helpers_; }
+  // Queues `job` for a helper (there must be one: helpers() > 0).
+  void post(std::function<void()> job) {
+    {
+      const std::lock_guard lock(state_->mutex);
+      state_->jobs.push_back(std::move(job));
+    }
+    state_->ready.notify_one();
+  }
+
+ private:
+  struct State {
+    std::mutex mutex;
+    std::condition_variable ready;
+    std::deque<std::function<void()>> jobs;
+    bool stop = false;
+  };
+  static void run(State& s) {
+    for (;;) {
+      std::function<void()> job;
+      {
+        std::unique_lock lock(s.mutex);
+        s.ready.wait(lock, [&s] { return s.stop || !s.jobs.empty(); });
+        if (s.jobs.empty()) return;  // stopped, nothing left
+        job = std::move(s.jobs.front());
+        s.jobs.pop_front();
+      }
+      job();  // parallel_for's helpers catch what their items throw
+    }
+  }
+  std::shared_ptr<State> state_;  // shared with the helpers, which may outlive the pool
+  int helpers_ = 0;
+};
 
 // Calls f(i) once for every i in [0, n), on the calling thread and up to
 // max_threads − 1 more (items handed out one at a time, as costs vary with
 // boundary length), one thread per `items_per_thread` items at most. The
-// first exception thrown by f is rethrown here after all items under way
-// have ended; items not yet started are then skipped.
+// helpers are `pool`'s where one is given, else threads started for the
+// call. The first exception thrown by f is rethrown here after all items
+// under way have ended; items not yet started are then skipped.
 //
 // The caller waits only for items a helper has taken, never for a helper to
-// start: on a busy machine a new thread may get a core late, and by then the
-// caller has often done every item. Helpers are detached; one that starts
-// after the call returned finds no item left and touches only the counters
-// it shares (never f).
+// start: on a busy machine a new thread may get a core late (a pool's helper
+// may be busy with an earlier job), and by then the caller has often done
+// every item. A helper that starts after the call returned finds no item
+// left and touches only the counters it shares (never f).
 template <class F>
-void parallel_for(int n, F&& f, int max_threads = 0, int items_per_thread = 8) {
+void parallel_for(Pool* pool, int n, F&& f, int max_threads = 0, int items_per_thread = 8) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // Threads cost tens of microseconds to start: not worth it for a handful
   // of small items.
   const int per = std::max(1, items_per_thread);
-  const int threads = std::min({max_threads > 0 ? max_threads : cores, cores, (n + per - 1) / per});
+  int threads = std::min({max_threads > 0 ? max_threads : cores, cores, (n + per - 1) / per});
+  if (pool != nullptr) threads = std::min(threads, pool->helpers() + 1);
   if (threads <= 1) {
     for (int i = 0; i < n; ++i) f(i);
     return;
@@ -75,6 +147,10 @@ void parallel_for(int n, F&& f, int max_threads = 0, int items_per_thread = 8) {
     }
   };
   for (int t = 1; t < threads; ++t) {
+    if (pool != nullptr) {
+      pool->post(helper);
+      continue;
+    }
     try {
       std::thread(helper).detach();
     } catch (const std::system_error&) {
@@ -87,29 +163,36 @@ void parallel_for(int n, F&& f, int max_threads = 0, int items_per_thread = 8) {
   if (shared->error) std::rethrow_exception(shared->error);
 }
 
+// The same with threads started for the call.
+template <class F>
+void parallel_for(int n, F&& f, int max_threads = 0, int items_per_thread = 8) {
+  parallel_for(nullptr, n, std::forward<F>(f), max_threads, items_per_thread);
+}
+
 // One helper thread that runs the jobs given to it one after another, in
 // the order given: a chain of background steps (the line response's grey
 // conversion, early blur and noise estimate) shares it instead of starting
 // a thread each, which costs tens of microseconds. submit() returns the
-// job's future (its result or exception). Jobs still queued when the worker
-// is destroyed are run first. Where no thread can be made, jobs run in
-// submit().
+// job's future (its result or exception). The worker's end waits for the
+// jobs still queued or running, then leaves the thread to end on its own
+// (detached: joining would wait for it to wake up). Where no thread can be
+// made, jobs run in submit().
 class Worker {
  public:
-  Worker() {
+  Worker() : state_(std::make_shared<State>()) {
     try {
-      thread_ = std::thread([this] { run(); });
+      std::thread([state = state_] { run(*state); }).detach();
+      threaded_ = true;
     } catch (const std::system_error&) {
       // No thread: submit() runs each job itself.
     }
   }
   ~Worker() {
-    {
-      const std::lock_guard lock(mutex_);
-      stop_ = true;
-    }
-    ready_.notify_one();
-    if (thread_.joinable()) thread_.join();
+    std::unique_lock lock(state_->mutex);
+    state_->idle.wait(lock, [this] { return state_->jobs.empty() && !state_->running; });
+    state_->stop = true;
+    lock.unlock();
+    state_->ready.notify_one();
   }
   Worker(const Worker&) = delete;
   Worker& operator=(const Worker&) = delete;
@@ -118,37 +201,45 @@ class Worker {
   std::future<std::invoke_result_t<F&>> submit(F f) {
     auto task = std::make_shared<std::packaged_task<std::invoke_result_t<F&>()>>(std::move(f));
     auto result = task->get_future();
-    if (!thread_.joinable()) {
+    if (!threaded_) {
       (*task)();
       return result;
     }
     {
-      const std::lock_guard lock(mutex_);
-      jobs_.emplace_back([task] { (*task)(); });
+      const std::lock_guard lock(state_->mutex);
+      state_->jobs.emplace_back([task] { (*task)(); });
     }
-    ready_.notify_one();
+    state_->ready.notify_one();
     return result;
   }
 
  private:
-  void run() {
+  struct State {
+    std::mutex mutex;
+    std::condition_variable ready;  // a job queued, or stop
+    std::condition_variable idle;   // a job ended
+    std::deque<std::function<void()>> jobs;
+    bool running = false;
+    bool stop = false;
+  };
+  static void run(State& s) {
+    std::unique_lock lock(s.mutex);
     for (;;) {
-      std::function<void()> job;
-      {
-        std::unique_lock lock(mutex_);
-        ready_.wait(lock, [this] { return stop_ || !jobs_.empty(); });
-        if (jobs_.empty()) return;  // stopped, nothing left
-        job = std::move(jobs_.front());
-        jobs_.pop_front();
-      }
-      job();  // a packaged_task: exceptions go to its future
+      s.ready.wait(lock, [&s] { return s.stop || !s.jobs.empty(); });
+      if (s.jobs.empty()) return;  // stopped, nothing left
+      std::function<void()> job = std::move(s.jobs.front());
+      s.jobs.pop_front();
+      s.running = true;
+      lock.unlock();
+      job();          // a packaged_task: exceptions go to its future
+      job = nullptr;  // the task's state goes before the worker may end
+      lock.lock();
+      s.running = false;
+      s.idle.notify_all();
     }
   }
-  std::mutex mutex_;
-  std::condition_variable ready_;
-  std::deque<std::function<void()>> jobs_;
-  bool stop_ = false;
-  std::thread thread_;
+  std::shared_ptr<State> state_;  // shared with the thread, which may outlive the worker
+  bool threaded_ = false;
 };
 
 }  // namespace hair25d::layering::detail

@@ -138,14 +138,14 @@ inline void distinct_labels_into(const int* data, std::size_t from, std::size_t 
 
 // The distinct non-zero labels of `map`, sorted (LabelMap::labels sorts
 // every pixel). The pass reads the whole map, so a large map is read in two
-// halves on two cores.
-inline std::vector<int> distinct_labels(const LabelMap& map) {
+// halves on two cores (`pool`'s helper where one is given).
+inline std::vector<int> distinct_labels(const LabelMap& map, Pool* pool = nullptr) {
   const std::size_t n = map.size();
   constexpr std::size_t kSplit = std::size_t{1} << 18;  // pixels below which one pass is quicker
   const int parts = n >= kSplit ? 2 : 1;
   std::array<std::set<int>, 2> seen;
   parallel_for(
-      parts,
+      pool, parts,
       [&](int p) { distinct_labels_into(map.data(), n * p / parts, n * (p + 1) / parts, seen[p]); },
       2, 1);
   seen[0].insert(seen[1].begin(), seen[1].end());

@@ -18,6 +18,7 @@
 #include <future>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <thread>
@@ -268,36 +269,87 @@ TEST(LineSpeed, WideVectorsMeasureLikeNarrowOnes) {
   }
 }
 
-// Every item once, on any number of threads; the call returns only when
-// every item has ended (items of uneven cost, some slow).
+// Every item once, on any number of threads started for the call or taken
+// from a pool (one pool for many calls, as in a layering); the call returns
+// only when every item has ended (items of uneven cost, some slow).
 TEST(ParallelFor, CallsEveryItemOnceAndWaitsForThem) {
-  for (const int n : {0, 1, 2, 7, 8, 9, 64, 257})
-    for (const auto& [threads, per] :
-         {std::pair{0, 8}, std::pair{0, 1}, std::pair{2, 1}, std::pair{1, 1}, std::pair{16, 1}}) {
-      std::vector<std::atomic<int>> calls(n);
-      std::vector<int> done(n, 0);
-      detail::parallel_for(
-          n,
-          [&](int i) {
-            if (i % 5 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
-            ++calls[i];
-            done[i] = i + 1;
-          },
-          threads, per);
-      for (int i = 0; i < n; ++i) {
-        ASSERT_EQ(calls[i].load(), 1) << "n " << n << ", item " << i;
-        ASSERT_EQ(done[i], i + 1) << "n " << n << ", item " << i;
+  for (const int helpers : {-1, 0, 1, 3}) {
+    std::optional<detail::Pool> pool;
+    if (helpers >= 0) pool.emplace(helpers);
+    if (pool) ASSERT_EQ(pool->helpers(), helpers);
+    detail::Pool* p = pool ? &*pool : nullptr;
+    for (const int n : {0, 1, 2, 7, 8, 9, 64, 257})
+      for (const auto& [threads, per] :
+           {std::pair{0, 8}, std::pair{0, 1}, std::pair{2, 1}, std::pair{1, 1}, std::pair{16, 1}}) {
+        std::vector<std::atomic<int>> calls(n);
+        std::vector<int> done(n, 0);
+        detail::parallel_for(
+            p, n,
+            [&](int i) {
+              if (i % 5 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+              ++calls[i];
+              done[i] = i + 1;
+            },
+            threads, per);
+        for (int i = 0; i < n; ++i) {
+          ASSERT_EQ(calls[i].load(), 1) << "n " << n << ", item " << i << ", pool " << helpers;
+          ASSERT_EQ(done[i], i + 1) << "n " << n << ", item " << i << ", pool " << helpers;
+        }
       }
-    }
+  }
+}
+
+// A pool's helpers really take items: with one helper, an item that waits
+// until another item has run on a second thread ends (on the caller alone
+// it would wait for ever; the wait is bounded so a failure does not hang).
+TEST(ParallelFor, PoolHelpersTakeItems) {
+  detail::Pool pool(1);
+  ASSERT_EQ(pool.helpers(), 1);
+  for (int trial = 0; trial < 5; ++trial) {
+    std::atomic<int> arrived{0};
+    std::atomic<bool> met{false};
+    detail::parallel_for(
+        &pool, 2,
+        [&](int) {
+          ++arrived;
+          const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+          while (arrived.load() < 2 && std::chrono::steady_clock::now() < until)
+            std::this_thread::yield();
+          if (arrived.load() == 2) met = true;
+        },
+        2, 1);
+    EXPECT_TRUE(met.load()) << "trial " << trial;
+  }
+}
+
+// Jobs still queued when a pool ends are run by its helpers, which end on
+// their own afterwards (the pool does not wait for them).
+TEST(Pool, RunsJobsQueuedBeforeItsEnd) {
+  auto count = std::make_shared<std::atomic<int>>(0);
+  {
+    detail::Pool pool(2);
+    ASSERT_EQ(pool.helpers(), 2);
+    for (int k = 0; k < 50; ++k)
+      pool.post([count] {
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
+        ++*count;
+      });
+  }
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (count->load() < 50 && std::chrono::steady_clock::now() < until)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(count->load(), 50);
 }
 
 // The first exception is rethrown after the items under way end; no item
-// runs once the call has returned.
+// runs once the call has returned (threads started for the call, or a
+// pool's, the pool then used again).
 TEST(ParallelFor, RethrowsAndStopsTakingItems) {
+  detail::Pool pool;
   for (int trial = 0; trial < 20; ++trial) {
     std::atomic<int> started{0}, running{0};
     EXPECT_THROW(detail::parallel_for(
-                     200,
+                     trial % 2 == 0 ? nullptr : &pool, 200,
                      [&](int i) {
                        ++started;
                        ++running;
@@ -316,8 +368,8 @@ TEST(ParallelFor, RethrowsAndStopsTakingItems) {
 }
 
 // The worker runs its jobs one after another in the order given, hands
-// back results and exceptions through the futures, and runs the jobs still
-// queued before it is destroyed.
+// back results and exceptions through the futures, and its end waits for
+// the jobs still queued.
 TEST(Worker, RunsJobsInOrderWithResultsAndExceptions) {
   std::vector<int> order;
   std::future<void> last;
