@@ -3,11 +3,13 @@
 // drawn line, which is where the junction geometry of §4.2 is measured.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -45,6 +47,13 @@ struct Window {
 
 constexpr std::uint16_t kUnreached = std::numeric_limits<std::uint16_t>::max();
 
+// A pixel (index in the window) put into a bucket of the growth, and the
+// region that reached it there.
+struct Front {
+  int at;
+  int owner;
+};
+
 struct Growth {
   Window box;
   // Chamfer distance (fifths of a pixel) to the nearest region: 0 on region
@@ -52,8 +61,8 @@ struct Growth {
   // pixels not reached. 16 bits halve the memory traffic of the relaxation; the
   // growth limit keeps real distances far below kUnreached.
   std::unique_ptr<std::uint16_t[]> dist;
-  // The region that reached a label-0 pixel; set only on the seeds and where
-  // dist was lowered, so it needs no clearing.
+  // The region that reached a label-0 pixel; set only where dist was
+  // lowered, so it needs no clearing.
   std::unique_ptr<int[]> owner;
   // Every label-0 pixel reached in the band's own rows, once: the passes
   // after the growth visit these rather than the whole window.
@@ -84,7 +93,7 @@ __attribute__((target("avx2"))) inline __m256i at(const std::uint16_t* p) {
 }
 
 __attribute__((target("avx2"))) int seed_row_avx2(const std::uint16_t* mid, int stride, int n,
-                                                  std::uint16_t* edge) {
+                                                  std::vector<int>& seeds) {
   const __m256i zero = _mm256_setzero_si256();
   int x = 0;
   for (; x + 16 <= n; x += 16) {
@@ -95,7 +104,13 @@ __attribute__((target("avx2"))) int seed_row_avx2(const std::uint16_t* mid, int 
         _mm256_or_si256(_mm256_or_si256(at(u - 1), at(u)), _mm256_or_si256(at(u + 1), at(m - 1))),
         _mm256_or_si256(_mm256_or_si256(at(m + 1), at(d - 1)), _mm256_or_si256(at(d), at(d + 1))));
     const __m256i region = _mm256_cmpeq_epi16(at(m), zero);
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(edge + x), _mm256_and_si256(region, around));
+    // Two bits per pixel, both set for a seed (around is 0 or all ones).
+    auto bits = static_cast<std::uint32_t>(_mm256_movemask_epi8(_mm256_and_si256(region, around)));
+    while (bits != 0) {
+      const int b = std::countr_zero(bits);
+      seeds.push_back(x + b / 2);
+      bits &= ~(3u << b);
+    }
   }
   return x;
 }
@@ -113,23 +128,23 @@ void start_row(const int* row, int n, std::uint16_t* out, bool wide) {
   for (; x < n; ++x) out[x] = row[x] == 0 ? kUnreached : 0;
 }
 
-// Flags of the seeds in a row (`mid`, with the rows above and below at
-// ∓stride): a region pixel (0) with a label-0 neighbour (kUnreached). Every
-// distance is 0 or kUnreached yet, so "a label-0 neighbour" is an OR of the
-// eight.
-void seed_row(const std::uint16_t* mid, int stride, int n, std::uint16_t* edge, bool wide) {
+// The seeds of a row (`mid`, with the rows above and below at ∓stride),
+// appended to `seeds` in increasing x: region pixels (0) with a label-0
+// neighbour (kUnreached). Every distance is 0 or kUnreached yet, so "a
+// label-0 neighbour" is an OR of the eight.
+void seed_row(const std::uint16_t* mid, int stride, int n, std::vector<int>& seeds, bool wide) {
   const std::uint16_t* up = mid - stride;
   const std::uint16_t* down = mid + stride;
   int x = 0;
 #if defined(HAIR25D_FILL_AVX2)
-  if (wide) x = seed_row_avx2(mid, stride, n, edge);
+  if (wide) x = seed_row_avx2(mid, stride, n, seeds);
 #else
   (void)wide;
 #endif
   for (; x < n; ++x) {
     const std::uint16_t around = up[x - 1] | up[x] | up[x + 1] | mid[x - 1] | mid[x + 1] |
                                  down[x - 1] | down[x] | down[x + 1];
-    edge[x] = mid[x] == 0 ? around : 0;
+    if (mid[x] == 0 && around != 0) seeds.push_back(x);
   }
 }
 
@@ -185,17 +200,18 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
     start_row(row, win.w, out, wide);
   }
   // Only region pixels on the edge of label 0 start a front, found a row at
-  // a time (seed_row), then read in raster order.
-  std::array<std::vector<int>, kDiag + 1> ring;
-  std::vector<std::uint16_t> edge(win.w);
+  // a time (seed_row), in raster order. A front carries its owner, so a
+  // pixel's owner is read from the bucket, not from the map (a cache miss);
+  // the map keeps the owners of the label-0 pixels reached, for the passes
+  // after the growth.
+  std::array<std::vector<Front>, kDiag + 1> ring;
+  std::vector<int> seeds;
   for (int y = 0; y < win.h; ++y) {
     const int base = win.at(win.x0, win.y0 + y);
-    seed_row(dist + base, stride, win.w, edge.data(), wide);
+    seeds.clear();
+    seed_row(dist + base, stride, win.w, seeds, wide);
     const int* row = labels.data() + static_cast<std::size_t>(win.y0 + y) * w + win.x0;
-    detail::for_each_set(edge, 0, win.w, [&](int x) {
-      owner[base + x] = row[x];
-      ring[0].push_back(base + x);
-    });
+    for (int x : seeds) ring[0].push_back({base + x, row[x]});
   }
   // Neighbour offsets: right, left, down, up, then the diagonals.
   const std::array<int, 4> ortho = {1, -1, stride, -stride};
@@ -207,7 +223,7 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
     if (dist[j] == kUnreached && j >= first && j < last) g.reached.push_back(j);
     dist[j] = static_cast<std::uint16_t>(nd);
     owner[j] = own;
-    ring[nd % ring.size()].push_back(j);
+    ring[nd % ring.size()].push_back({j, own});
   };
   // Each seed reaches a few pixels; reserving avoids most regrowth.
   g.reached.reserve(4 * ring[0].size());
@@ -217,9 +233,8 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
     // Entries may be added to this bucket while it is processed only with
     // weight 0, which never happens, so iterating by index is safe.
     for (std::size_t k = 0; k < bucket.size(); ++k) {
-      const int i = bucket[k];
+      const auto [i, own] = bucket[k];
       if (dist[i] != d) continue;  // a stale entry
-      const int own = owner[i];
       if (d + kOrtho > limit) continue;
       for (int s : ortho) relax(i + s, d + kOrtho, own);
       if (d + kDiag > limit) continue;
@@ -287,11 +302,15 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
         // its left or upper pixel (the one below may be in the next band's
         // rows, which this band's growth also holds as they are).
         const Growth& g = growth[b];
+        const std::uint16_t* dist = g.dist.get();
+        const int* owner = g.owner.get();
+        const int stride = g.box.stride();
+        std::vector<int>& meet = meets[b];
         for (int i : g.reached) {
-          for (int j : {i + 1, i + g.box.stride()}) {
+          for (int j : {i + 1, i + stride}) {
             // The frame and region pixels hold 0, unreached pixels kUnreached.
-            if (g.dist[j] == 0 || g.dist[j] == kUnreached || g.owner[j] == g.owner[i]) continue;
-            meets[b].push_back(std::max(g.dist[i], g.dist[j]));
+            if (dist[j] == 0 || dist[j] == kUnreached || owner[j] == owner[i]) continue;
+            meet.push_back(std::max(dist[i], dist[j]));
           }
         }
       },
