@@ -316,14 +316,21 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
         return 0;
       };
       const Vec2 centre = graph.junctions[j].position;
+      std::vector<int> labels_on;  // the circle's labels, then counted
       for (int wide = 0; wide < 2; ++wide) {
         const std::vector<Vec2>& circle = circles[wide];
         const int samples = static_cast<int>(circle.size());
-        count.clear();
+        // All the labels first: the loads (rows apart in the map, mostly
+        // cache misses) overlap instead of each waiting for the counting of
+        // the one before.
+        labels_on.clear();
         for (const Vec2& d : circle) {
           const int x = static_cast<int>(std::floor(centre.x() + d.x()));
           const int y = static_cast<int>(std::floor(centre.y() + d.y()));
-          const int label = lab.contains(x, y) ? lab.at(x, y) : kOutsideLabel;
+          labels_on.push_back(lab.contains(x, y) ? lab.at(x, y) : kOutsideLabel);
+        }
+        count.clear();
+        for (const int label : labels_on) {
           auto it = std::find_if(count.begin(), count.end(),
                                  [&](const auto& p) { return p.first == label; });
           if (it == count.end())
