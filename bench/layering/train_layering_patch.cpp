@@ -40,7 +40,7 @@ struct Record {
   std::vector<detail::Patch> ends;
 };
 
-std::vector<Record> collect(int cases, std::uint64_t seed) {
+std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor) {
   std::vector<Record> out;
   for (int i = 0; i < cases; ++i) {
     hair25d::AnnotatedCase c;
@@ -73,7 +73,7 @@ std::vector<Record> collect(int cases, std::uint64_t seed) {
       const hair25d::Polyline back(b.points.rbegin(), b.points.rend());
       rec.ends = detail::boundary_patches(
           r.labels, r.graph, b, layering::leaving_direction(b.points, reach),
-          layering::leaving_direction(back, reach), detail::patch_radius(reach));
+          layering::leaving_direction(back, reach), radius_factor * detail::patch_radius(reach));
       out.push_back(std::move(rec));
     }
     if (i % 50 == 49) std::fprintf(stderr, "%d drawings, %zu boundaries\n", i + 1, out.size());
@@ -152,41 +152,61 @@ int main(int argc, char** argv) {
   app.add_option("--iterations", iterations, "RPROP iterations")->check(CLI::PositiveNumber);
   std::string method = "rprop";
   app.add_option("--method", method, "rprop or backprop");
+  int hidden = detail::kPatchHidden;
+  double radius_factor = 1.0;
+  std::vector<std::string> also;
+  app.add_option("--hidden", hidden, "hidden units (only the built-in count can be written)");
+  app.add_option("--radius-factor", radius_factor, "patch radius × the fit length (for --dump)");
+  app.add_option("--also", also, "more patch files of the same ends, read side by side");
   app.add_option("--dump", dump, "write the patches here and stop");
   app.add_option("--from", from, "read the patches from here instead of drawing");
   app.add_option("--write", write, "write layering/src/patch_weights.cpp here");
   CLI11_PARSE(app, argc, argv);
 
-  const std::vector<Record> records = from.empty() ? collect(cases, seed) : load(from);
+  const std::vector<Record> records =
+      from.empty() ? collect(cases, seed, radius_factor) : load(from);
   if (!dump.empty()) {
     save(dump, records);
     std::printf("%zu boundaries written to %s\n", records.size(), dump.c_str());
     return 0;
   }
+  // More patches of the same ends (other radii), side by side in one input.
+  std::vector<std::vector<Record>> extra;
+  for (const std::string& path : also) {
+    extra.push_back(load(path));
+    if (extra.back().size() != records.size())
+      throw hair25d::Error("train_layering_patch: " + path + " has other boundaries");
+  }
+  const int parts = 1 + static_cast<int>(extra.size());
+  const int d = parts * detail::kPatchInputs;
+  // One row per end: the patches, then (swapped) the same with A and B exchanged.
+  auto end_row = [&](std::size_t r, std::size_t e, bool swap, float* row) {
+    for (int q = 0; q < parts; ++q) {
+      const detail::Patch& p = q == 0 ? records[r].ends[e] : extra[q - 1][r].ends[e];
+      const detail::Patch s = swap ? detail::swapped(p) : p;
+      std::copy(s.begin(), s.end(), row + q * detail::kPatchInputs);
+    }
+  };
   // Network samples: every end of an ordered boundary, and the same end with
   // the regions exchanged and the answer negated.
-  std::vector<const detail::Patch*> inputs;
-  std::vector<float> targets;
-  for (const Record& r : records) {
-    if (r.y == 0 || r.drawing >= net_cases) continue;
-    for (const detail::Patch& p : r.ends) {
-      inputs.push_back(&p);
-      targets.push_back(static_cast<float>(r.y));
+  int n = 0;
+  for (const Record& r : records)
+    if (r.y != 0 && r.drawing < net_cases) n += static_cast<int>(r.ends.size());
+  cv::Mat x(2 * n, d, CV_32F), t(2 * n, 1, CV_32F);
+  int row = 0;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    if (records[r].y == 0 || records[r].drawing >= net_cases) continue;
+    for (std::size_t e = 0; e < records[r].ends.size(); ++e) {
+      end_row(r, e, false, x.ptr<float>(row));
+      t.at<float>(row++) = static_cast<float>(records[r].y);
+      end_row(r, e, true, x.ptr<float>(row));
+      t.at<float>(row++) = -static_cast<float>(records[r].y);
     }
-  }
-  const int n = static_cast<int>(inputs.size());
-  cv::Mat x(2 * n, detail::kPatchInputs, CV_32F), t(2 * n, 1, CV_32F);
-  for (int k = 0; k < n; ++k) {
-    const detail::Patch s = detail::swapped(*inputs[k]);
-    std::copy(inputs[k]->begin(), inputs[k]->end(), x.ptr<float>(2 * k));
-    std::copy(s.begin(), s.end(), x.ptr<float>(2 * k + 1));
-    t.at<float>(2 * k) = targets[k];
-    t.at<float>(2 * k + 1) = -targets[k];
   }
   cv::setNumThreads(1);  // the same sums in the same order: the same weights
   cv::theRNG().state = seed;
   cv::Ptr<cv::ml::ANN_MLP> mlp = cv::ml::ANN_MLP::create();
-  const cv::Mat sizes = (cv::Mat_<int>(1, 3) << detail::kPatchInputs, detail::kPatchHidden, 1);
+  const cv::Mat sizes = (cv::Mat_<int>(1, 3) << d, hidden, 1);
   mlp->setLayerSizes(sizes);
   mlp->setActivationFunction(cv::ml::ANN_MLP::SIGMOID_SYM, 0, 0);
   if (method == "backprop")
@@ -195,37 +215,56 @@ int main(int argc, char** argv) {
     mlp->setTrainMethod(cv::ml::ANN_MLP::RPROP, 0.01);
   mlp->setTermCriteria(
       cv::TermCriteria(cv::TermCriteria::MAX_ITER + cv::TermCriteria::EPS, iterations, 1e-6));
-  std::printf("training the network on %d ends (%d samples) ...\n", n, 2 * n);
+  std::printf("training the network on %d ends (%d samples, %d inputs, %d hidden) ...\n", n, 2 * n,
+              d, hidden);
   std::fflush(stdout);
   mlp->train(cv::ml::TrainData::create(x, cv::ml::ROW_SAMPLE, t),
              cv::ml::ANN_MLP::NO_INPUT_SCALE + cv::ml::ANN_MLP::NO_OUTPUT_SCALE);
 
+  // Scores of every boundary by OpenCV's forward pass: Σ over its ends of
+  // net(P) − net(swapped P).
+  std::vector<double> score(records.size(), 0.0);
+  {
+    int m = 0;
+    for (const Record& r : records) m += static_cast<int>(r.ends.size());
+    cv::Mat all(2 * m, d, CV_32F), out;
+    int k = 0;
+    for (std::size_t r = 0; r < records.size(); ++r)
+      for (std::size_t e = 0; e < records[r].ends.size(); ++e) {
+        end_row(r, e, false, all.ptr<float>(k++));
+        end_row(r, e, true, all.ptr<float>(k++));
+      }
+    mlp->predict(all, out);
+    k = 0;
+    for (std::size_t r = 0; r < records.size(); ++r)
+      for (std::size_t e = 0; e < records[r].ends.size(); ++e, k += 2)
+        score[r] += out.at<float>(k) - out.at<float>(k + 1);
+  }
+  const bool writable = parts == 1 && hidden == detail::kPatchHidden;
   auto net = std::make_unique<detail::PatchNet>();
-  const cv::Mat l1 = mlp->getWeights(1), l2 = mlp->getWeights(2);  // (inputs + 1) × outputs, f64
-  for (int h = 0; h < detail::kPatchHidden; ++h) {
-    for (int k = 0; k < detail::kPatchInputs; ++k)
-      net->w1[h][k] = static_cast<float>(l1.at<double>(k, h));
-    net->b1[h] = static_cast<float>(l1.at<double>(detail::kPatchInputs, h));
-    net->w2[h] = static_cast<float>(l2.at<double>(h, 0));
+  if (writable) {
+    const cv::Mat l1 = mlp->getWeights(1), l2 = mlp->getWeights(2);  // (inputs + 1) × outputs
+    for (int h = 0; h < detail::kPatchHidden; ++h) {
+      for (int k = 0; k < detail::kPatchInputs; ++k)
+        net->w1[h][k] = static_cast<float>(l1.at<double>(k, h));
+      net->b1[h] = static_cast<float>(l1.at<double>(detail::kPatchInputs, h));
+      net->w2[h] = static_cast<float>(l2.at<double>(h, 0));
+    }
+    net->b2 = static_cast<float>(l2.at<double>(detail::kPatchHidden, 0));
+    // Our forward pass against OpenCV's.
+    double worst = 0;
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      double mine = 0;
+      for (const detail::Patch& p : records[r].ends) mine += detail::patch_score(*net, p);
+      worst = std::max(worst, std::abs(mine - score[r]));
+    }
+    std::printf("patch_score against OpenCV's forward pass: largest difference %.3g\n", worst);
+    // The second stage sees the scores as the layering computes them.
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      score[r] = 0;
+      for (const detail::Patch& p : records[r].ends) score[r] += detail::patch_score(*net, p);
+    }
   }
-  net->b2 = static_cast<float>(l2.at<double>(detail::kPatchHidden, 0));
-  for (int h = 0; h < 4; ++h) {
-    double norm = 0, sum = 0;
-    for (int k = 0; k < detail::kPatchInputs; ++k)
-      norm += net->w1[h][k] * net->w1[h][k], sum += net->w1[h][k] * (*inputs[0])[k];
-    std::printf("hidden %d: |w| %g, b %g, w2 %g, input 0 sum %g\n", h, std::sqrt(norm), net->b1[h],
-                net->w2[h], sum);
-  }
-  // Our forward pass against OpenCV's on a few samples.
-  double worst = 0;
-  for (int k = 0; k < std::min(n, 200); ++k) {
-    cv::Mat out;
-    mlp->predict(x.row(2 * k), out);
-    worst = std::max(worst, std::abs(out.at<float>(0) - detail::patch_net(*net, *inputs[k])));
-  }
-  std::printf("forward pass against OpenCV's: largest difference %.3g; first outputs %g %g %g\n",
-              worst, detail::patch_net(*net, *inputs[0]), detail::patch_net(*net, *inputs[1]),
-              detail::patch_score(*net, *inputs[0]));
 
   // Sign of boundaries on the network's own drawings and on the others, and
   // the second stage on the others.
@@ -234,8 +273,7 @@ int main(int argc, char** argv) {
   std::vector<double> sy;
   for (const Record& r : records) {
     if (r.y == 0) continue;
-    double s = 0;
-    for (const detail::Patch& p : r.ends) s += detail::patch_score(*net, p);
+    const double s = score[&r - records.data()];
     if (r.drawing < net_cases) {
       ++in_total;
       in_right += s * r.y > 0;
@@ -272,6 +310,11 @@ int main(int argc, char** argv) {
   net->patch_weight = w[1];
 
   if (write.empty()) return 0;
+  if (!writable) {
+    std::fprintf(stderr, "only one patch file and %d hidden units can be written\n",
+                 detail::kPatchHidden);
+    return 1;
+  }
   std::FILE* f = std::fopen(write.c_str(), "w");
   if (f == nullptr) {
     std::fprintf(stderr, "cannot write %s\n", write.c_str());

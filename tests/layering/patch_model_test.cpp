@@ -1,0 +1,182 @@
+// The junction patch model (layering/src/patch_model.h, internal: the test
+// sees layering/src): rasterisation on a hand-built T-junction, the exact
+// antisymmetry of its score, and bad input.
+#include "patch_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "hair25d/core/error.h"
+#include "hair25d/layering/boundary_graph.h"
+#include "hair25d/layering/layering.h"
+#include "hair25d/layering/metrics.h"
+
+namespace hair25d::layering::detail {
+namespace {
+
+// 40 × 30: region 1 above y = 15, region 2 below and left of x = 20,
+// region 3 below and right of it; a T-junction at the corner (20, 15).
+LabelMap t_junction() {
+  LabelMap m(40, 30, 1);
+  for (int y = 15; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) m.at(x, y) = x < 20 ? 2 : 3;
+  return m;
+}
+
+float cell(const Patch& p, int i, int j, int channel) {
+  return p[(j * kPatchCells + i) * kPatchChannels + channel];
+}
+
+TEST(JunctionPatch, RasterisesTheTJunctionInTheBoundarysFrame) {
+  // The boundary between 1 and 2 leaves the junction toward −x; walking
+  // that way on the screen (y down), region 2 is on the left. One pixel per
+  // cell (radius 8), so every cell lies in one region.
+  const Patch p = junction_patch(t_junction(), Vec2(20, 15), Vec2(-1, 0), 2, 1, true, 8.0);
+  for (int j = 0; j < kPatchCells; ++j)
+    for (int i = 0; i < kPatchCells; ++i) {
+      // u = along the boundary (x = 20 − u), v = toward A (y = 15 + v).
+      const bool toward_a = j >= kPatchCells / 2;
+      const bool ahead = i >= kPatchCells / 2;
+      const float diff = toward_a ? (ahead ? 1.0f : 0.0f) : -1.0f;
+      const float other = toward_a && !ahead ? 1.0f : 0.0f;  // region 3
+      EXPECT_EQ(cell(p, i, j, 0), diff) << i << "," << j;
+      EXPECT_EQ(cell(p, i, j, 1), other) << i << "," << j;
+    }
+  // Beyond the image: neither channel.
+  const Patch edge = junction_patch(t_junction(), Vec2(0, 0), Vec2(1, 0), 1, 2, true, 8.0);
+  EXPECT_EQ(cell(edge, 0, 0, 0), 0.0f);
+  EXPECT_EQ(cell(edge, 0, 0, 1), 0.0f);
+}
+
+TEST(JunctionPatch, MixedCellsHoldShares) {
+  // Radius 16: two pixels per cell, 2 × 2 samples, so the cell across x = 20
+  // still falls on one side; a diagonal direction gives shares in quarters.
+  const Patch p =
+      junction_patch(t_junction(), Vec2(20, 15), Vec2(-1, 1).normalized(), 2, 1, true, 16.0);
+  for (float v : p) {
+    EXPECT_GE(v, -1.0f);
+    EXPECT_LE(v, 1.0f);
+    EXPECT_EQ(std::fmod(v * 4.0f, 1.0f), 0.0f);
+  }
+}
+
+TEST(JunctionPatch, SwappedTwiceIsTheSamePatch) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1, 1);
+  Patch p;
+  for (float& v : p) v = u(rng);
+  EXPECT_EQ(swapped(swapped(p)), p);
+  const Patch s = swapped(p);
+  EXPECT_EQ(s[1], p[((kPatchCells - 1) * kPatchCells) * kPatchChannels + 1]);
+  EXPECT_EQ(s[0], -p[((kPatchCells - 1) * kPatchCells) * kPatchChannels]);
+}
+
+TEST(PatchScore, ExchangingTheRegionsFlipsTheSignExactly) {
+  const PatchNet& net = patch_weights();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-1, 1);
+  int nonzero = 0;
+  for (int k = 0; k < 20; ++k) {
+    Patch p;
+    for (float& v : p) v = u(rng);
+    const double s = patch_score(net, p);
+    EXPECT_EQ(patch_score(net, swapped(p)), -s);
+    nonzero += s != 0;
+  }
+  EXPECT_GT(nonzero, 15);
+}
+
+TEST(PatchScore, WalkingTheBoundaryBackwardsFlipsTheSignExactly) {
+  const LabelMap m = t_junction();
+  const BoundaryGraph g = build_boundary_graph(m);
+  const PatchNet& net = patch_weights();
+  int hair = 0;
+  for (const Boundary& b : g.boundaries) {
+    if (b.closed() || b.left <= 0 || b.right <= 0) continue;
+    ++hair;
+    const Polyline back(b.points.rbegin(), b.points.rend());
+    const Vec2 start = leaving_direction(b.points, 12.0), end = leaving_direction(back, 12.0);
+    Boundary r = b;
+    std::swap(r.left, r.right);
+    std::swap(r.start, r.end);
+    r.points = back;
+    const std::vector<Patch> forward = boundary_patches(m, g, b, start, end, 12.0);
+    const std::vector<Patch> backward = boundary_patches(m, g, r, end, start, 12.0);
+    ASSERT_EQ(forward.size(), 2u);
+    ASSERT_EQ(backward.size(), 2u);
+    // The reversed walk's start is the forward walk's end, regions exchanged.
+    EXPECT_EQ(backward[0], swapped(forward[1]));
+    EXPECT_EQ(backward[1], swapped(forward[0]));
+    const double s = patch_score(net, forward[0]) + patch_score(net, forward[1]);
+    const double t = patch_score(net, backward[1]) + patch_score(net, backward[0]);
+    EXPECT_EQ(t, -s);
+  }
+  EXPECT_GE(hair, 2);
+}
+
+TEST(PatchScore, TheBarOfTheTIsAbove) {
+  // Region 1 is the bar: its outline runs straight through the junction, 2
+  // and 3 end on it. The trained network should read that from one end.
+  const LabelMap m = t_junction();
+  const PatchNet& net = patch_weights();
+  const Patch bar_over_2 = junction_patch(m, Vec2(20, 15), Vec2(-1, 0), 1, 2, false, 12.0);
+  const Patch bar_over_3 = junction_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 3, true, 12.0);
+  EXPECT_GT(patch_score(net, bar_over_2), 0.0);
+  EXPECT_GT(patch_score(net, bar_over_3), 0.0);
+}
+
+TEST(JunctionPatch, BadInputThrows) {
+  const LabelMap m = t_junction();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 2, true, 0.0), Error);
+  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 2, true, -3.0), Error);
+  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 2, true, nan), Error);
+  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(0, 0), 1, 2, true, 8.0), Error);
+  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(nan, 1), 1, 2, true, 8.0), Error);
+}
+
+TEST(Layering, PatchesJoinTheLearnedLogOddsOnlyWhenAsked) {
+  // A T drawn with outlines (label 0) on a non-square map: region 1 is the
+  // bar, regions 2 and 3 end on it, mirror images of each other.
+  Image image(60, 44);
+  LabelMap regions(60, 44, 0);
+  for (int y = 4; y < 40; ++y)
+    for (int x = 4; x < 56; ++x) {
+      const bool line = y == 20 || y == 21 || ((x == 29 || x == 30) && y > 20);
+      regions.at(x, y) = line ? 0 : y < 20 ? 1 : x < 30 ? 2 : 3;
+    }
+  for (int y = 0; y < 44; ++y)
+    for (int x = 0; x < 60; ++x) {
+      const bool dark = regions.at(x, y) == 0 && x >= 3 && x <= 56 && y >= 3 && y <= 40;
+      image.at(x, y) = dark ? Rgba{20, 20, 20, 255} : Rgba{200, 170, 120, 255};
+    }
+  Options on, off;
+  off.junction_patches = false;
+  const Result with = layer_regions(image, regions, on);
+  const Result without = layer_regions(image, regions, off);
+  const PatchNet& net = patch_weights();
+  int read = 0;
+  for (std::size_t i = 0; i < with.boundaries.size(); ++i) {
+    const BoundaryReport& a = with.boundaries[i];
+    const BoundaryReport& b = without.boundaries[i];
+    EXPECT_EQ(a.learned, b.learned);
+    EXPECT_EQ(b.patch, 0.0);
+    if (!a.occluding || a.left <= 0 || a.right <= 0) continue;
+    ++read;
+    if (a.left == 1 || a.right == 1) {
+      // The bar lies over both regions ending on it.
+      EXPECT_GT(a.left == 1 ? a.patch : -a.patch, 0.0) << a.left << "|" << a.right;
+    } else {
+      // The stem between 2 and 3 is mirror-symmetric: no side is preferred.
+      EXPECT_EQ(a.patch, 0.0);
+    }
+    EXPECT_DOUBLE_EQ(a.patch_log_odds, net.order_weight * a.learned + net.patch_weight * a.patch);
+  }
+  EXPECT_GE(read, 2);
+}
+
+}  // namespace
+}  // namespace hair25d::layering::detail
