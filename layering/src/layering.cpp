@@ -107,8 +107,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   // Grey levels are made on a second core meanwhile (line_response.h).
   detail::LineResponse lines(image, &regions);
   OutlineFill fill;
+  detail::LabelBox filled_box;  // of out.labels' non-zero labels, with the fill
   if (options.fill_outlines) {
-    fill = detail::fill_outlines(regions, &pool);
+    fill = detail::fill_outlines(regions, &pool, &filled_box);
     out.labels = std::move(fill.labels);
   } else {
     out.labels = regions;
@@ -117,7 +118,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                    : fill.line_width > 0  ? fill.line_width
                                           : detail::LineResponse::estimate_line_width(image);
   // The grey levels are smoothed on a second core while the boundaries are traced.
-  lines.prepare(out.line_width, out.labels);
+  lines.prepare(out.line_width, out.labels, options.fill_outlines ? &filled_box : nullptr);
   out.graph = build_boundary_graph(out.labels);
   const BoundaryGraph& graph = out.graph;
   const auto& bs = graph.boundaries;

@@ -282,7 +282,7 @@ LineResponse::~LineResponse() {
   if (converting_.valid()) converting_.wait();
 }
 
-void LineResponse::prepare(double line_width, const LabelMap& filled) {
+void LineResponse::prepare(double line_width, const LabelMap& filled, const LabelBox* box) {
   if (smoothing_.valid() || filled.width() != image_->width() ||
       filled.height() != image_->height())
     return;
@@ -295,10 +295,11 @@ void LineResponse::prepare(double line_width, const LabelMap& filled) {
   // its first band.
   next_early_band_ = 0;
   early_ready_ = false;
-  auto blur = [this, lw = std::max(1.0, line_width), &filled] {
+  auto blur = [this, lw = std::max(1.0, line_width), &filled, known = box != nullptr,
+               given = box != nullptr ? *box : LabelBox{}] {
     if (converting_.valid()) converting_.get();  // (not after a first smooth())
-    int bx0, by0, bx1, by1;
-    if (!detail::label_box(filled, &bx0, &by0, &bx1, &by1)) return;
+    int bx0 = given.x0, by0 = given.y0, bx1 = given.x1, by1 = given.y1;
+    if (known ? !given.any : !detail::label_box(filled, &bx0, &by0, &bx1, &by1)) return;
     const Image& image = *image_;
     const int margin = window_margin(lw);
     const int x0 = std::max(0, bx0 - margin), y0 = std::max(0, by0 - margin);

@@ -19,6 +19,7 @@
 namespace hair25d::layering::detail {
 
 using Rgb3f = std::array<float, 3>;
+struct LabelBox;  // raster_scan.h
 
 // What is measured along one boundary.
 struct BoundaryLine {
@@ -62,8 +63,10 @@ class LineResponse {
   // the non-zero labels of `filled` (the map whose boundaries will be
   // measured) grown by window_margin(line_width); smooth() with the same
   // line width then uses it if it holds smooth()'s window. `filled` must
-  // stay unchanged until smooth().
-  void prepare(double line_width, const LabelMap& filled);
+  // stay unchanged until smooth(). With `box`, the box of `filled`'s
+  // non-zero labels (label_box's answer; fill_outlines gives it), which is
+  // then not looked for.
+  void prepare(double line_width, const LabelMap& filled, const LabelBox* box = nullptr);
 
   LineResponse(const LineResponse&) = delete;
   LineResponse& operator=(const LineResponse&) = delete;

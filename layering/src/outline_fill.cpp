@@ -252,7 +252,8 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
 namespace detail {
 
 OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
-                                   int max_bands, int min_band_rows, bool wide_rows, Pool* pool) {
+                                   int max_bands, int min_band_rows, bool wide_rows, Pool* pool,
+                                   LabelBox* filled_box) {
   std::string why;
   if (!options.is_valid(&why)) throw Error("layering: " + why);
   if (labels.empty()) throw Error("layering: label map is empty; need at least one pixel");
@@ -262,6 +263,7 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   const int limit = static_cast<int>(std::ceil(std::min(reach * kUnit, 60000.0)));
   OutlineFill out;
   int bx0, by0, bx1, by1;
+  if (filled_box != nullptr) *filled_box = LabelBox{};
   if (!detail::label_box(labels, &bx0, &by0, &bx1, &by1)) {
     out.labels = labels;
     out.radius = options.max_distance > 0 ? options.max_distance : 0.0;
@@ -327,12 +329,18 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
                                         : (out.line_width > 0 ? out.line_width + 1.5 : 0.0);
   out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
   const int radius = static_cast<int>(std::floor(out.radius * kUnit));
+  // The filled map's non-zero labels: the regions' and the pixels given to them.
+  LabelBox filled{true, bx0, by0, bx1, by1};
   for (const Growth& g : growth) {
     for (int i : g.reached) {
       if (g.dist[i] > radius) continue;
-      out.labels.at(g.box.x_of(i), g.box.y_of(i)) = g.owner[i];
+      const int x = g.box.x_of(i), y = g.box.y_of(i);
+      out.labels.at(x, y) = g.owner[i];
+      filled.x0 = std::min(filled.x0, x), filled.x1 = std::max(filled.x1, x);
+      filled.y0 = std::min(filled.y0, y), filled.y1 = std::max(filled.y1, y);
     }
   }
+  if (filled_box != nullptr) *filled_box = filled;
   return out;
 }
 

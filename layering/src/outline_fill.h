@@ -5,6 +5,7 @@
 
 #include "hair25d/layering/boundary_graph.h"
 #include "parallel.h"
+#include "raster_scan.h"
 
 namespace hair25d::layering::detail {
 
@@ -20,14 +21,17 @@ inline constexpr int kMinFillBandRows = 96;
 // whole map (max_bands = 1) in every pixel, the line width and the radius.
 // With `wide_rows` (where the processor has AVX2) the rows are prepared
 // sixteen pixels at a time; the result is the same (for tests). The bands
-// run on `pool`'s helpers where one is given.
+// run on `pool`'s helpers where one is given. With `filled_box`, the box of
+// the filled map's non-zero labels is written there (label_box's answer
+// on it, without reading the map again).
 OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
                                    int max_bands, int min_band_rows, bool wide_rows = true,
-                                   Pool* pool = nullptr);
+                                   Pool* pool = nullptr, LabelBox* filled_box = nullptr);
 
-// fill_outlines with its bands on `pool`'s helpers.
-inline OutlineFill fill_outlines(const LabelMap& labels, Pool* pool) {
-  return fill_outlines_in_bands(labels, {}, kFillBands, kMinFillBandRows, true, pool);
+// fill_outlines with its bands on `pool`'s helpers, and the filled map's box.
+inline OutlineFill fill_outlines(const LabelMap& labels, Pool* pool,
+                                 LabelBox* filled_box = nullptr) {
+  return fill_outlines_in_bands(labels, {}, kFillBands, kMinFillBandRows, true, pool, filled_box);
 }
 
 }  // namespace hair25d::layering::detail

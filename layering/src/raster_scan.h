@@ -55,6 +55,13 @@ inline void not_equal(const int* a, const int* b, int n, std::uint8_t* out) {
   for (; i < n; ++i) out[i] = static_cast<std::uint8_t>(a[i] != b[i]);
 }
 
+// The box of a map's non-zero labels (inclusive), where one was found
+// otherwise (label_box's answer, kept to pass on).
+struct LabelBox {
+  bool any = false;
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+};
+
 // Rows and columns holding non-zero labels; false if there are none. Rows
 // are scanned only outside the box found so far: from the top and the bottom
 // for its rows, then within those from each side up to its columns.

@@ -508,6 +508,48 @@ TEST(FillBands, WideRowsFillLikeNarrowOnes) {
   }
 }
 
+// The box the fill gives is label_box's answer on the filled map (which the
+// early blur would otherwise look for): generated maps, lines beyond the
+// regions' box, and maps with no regions.
+TEST(FillBands, FilledBoxIsTheLabelBoxOfTheFilledMap) {
+  std::mt19937 rng(23);
+  for (int trial = 0; trial < 16; ++trial) {
+    const int w = 20 + static_cast<int>(rng() % 160), h = 15 + static_cast<int>(rng() % 120);
+    LabelMap m = strand_map(w, h, 700 + trial, 1 + trial % 5);
+    if (trial % 4 == 3) m = LabelMap(w, h, 0);
+    const double reach = trial % 3 == 0 ? 0.0 : 0.5 + (rng() % 90) / 10.0;
+    detail::LabelBox box;
+    box.any = trial % 4 != 3;  // the fill must say "none" itself
+    const OutlineFill f = detail::fill_outlines_in_bands(m, {.max_distance = reach}, 1 + trial % 4,
+                                                         1, true, nullptr, &box);
+    int x0 = -7, y0 = -7, x1 = -7, y1 = -7;
+    const bool any = detail::label_box(f.labels, &x0, &y0, &x1, &y1);
+    ASSERT_EQ(box.any, any) << "trial " << trial;
+    if (!any) continue;
+    EXPECT_EQ(box.x0, x0) << "trial " << trial;
+    EXPECT_EQ(box.y0, y0) << "trial " << trial;
+    EXPECT_EQ(box.x1, x1) << "trial " << trial;
+    EXPECT_EQ(box.y1, y1) << "trial " << trial;
+  }
+  // Background pixels given to the regions grow the box beyond the regions'.
+  LabelMap m(12, 9, 0);
+  for (int y = 2; y < 7; ++y)
+    for (int x = 3; x < 6; ++x) m.at(x, y) = 4;
+  for (int y = 2; y < 7; ++y) m.at(7, y) = 5;
+  detail::LabelBox box;
+  const OutlineFill f = detail::fill_outlines_in_bands(m, {}, 1, 1, true, nullptr, &box);
+  ASSERT_EQ(f.labels.at(6, 4), 4);
+  EXPECT_TRUE(box.any);
+  EXPECT_LT(box.x0, 3);  // region 4 starts at x = 3
+  EXPECT_GT(box.y1, 6);  // and ends at y = 6
+  int x0, y0, x1, y1;
+  ASSERT_TRUE(detail::label_box(f.labels, &x0, &y0, &x1, &y1));
+  EXPECT_EQ(box.x0, x0);
+  EXPECT_EQ(box.x1, x1);
+  EXPECT_EQ(box.y0, y0);
+  EXPECT_EQ(box.y1, y1);
+}
+
 // The public fill splits large maps; it equals one growth there too (a
 // 640 x 480 drawing-like map, the bands of fill_outlines).
 TEST(FillBands, PublicFillOnALargeMapEqualsOneGrowth) {
