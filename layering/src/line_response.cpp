@@ -217,6 +217,14 @@ bool LineResponse::wide_vectors_available() {
 #endif
 }
 
+bool LineResponse::widest_vectors_available() {
+#if defined(HAIR25D_LAYERING_AVX2)
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("avx512f");
+#else
+  return false;
+#endif
+}
+
 int LineResponse::window_margin(double line_width) {
   const double lw = std::max(1.0, line_width);
   const Reach reach = reach_of(lw);
@@ -229,6 +237,7 @@ int LineResponse::window_margin(double line_width) {
 
 LineResponse::LineResponse(const Image& image, const LabelMap* regions) : image_(&image) {
   wide_vectors_ = wide_vectors_available();
+  widest_vectors_ = widest_vectors_available();
   const int w = image.width(), h = image.height();
   raw_ = std::make_unique_for_overwrite<float[]>(static_cast<std::size_t>(w) * h);
   // The grey levels need nothing but the image: a second core converts them
@@ -445,6 +454,9 @@ Rgb3f LineResponse::smoothed_colour(int x, int y) const {
       translucent_rows_[yi + r + 1] == translucent_rows_[yi - r]) {
     const Rgba* centre = window + static_cast<std::size_t>(yi) * iw + xi - r;
 #if defined(HAIR25D_LAYERING_AVX2)
+    if (widest_vectors_)
+      return colour_sum_avx512(centre, iw, r, groups, colour_kernel_.data(),
+                               colour_weights_.data());
     if (wide_vectors_)
       return colour_sum_avx2(centre, iw, r, groups, colour_kernel_.data(), colour_weights_.data());
 #endif

@@ -121,6 +121,12 @@ __attribute__((target("avx2"))) Rgb3f colour_sum_avx2(const Rgba* centre, std::p
                                                       int groups, const float* kernel,
                                                       const float* column_weights);
 
+// The same with four pixels per register (AVX-512F).
+__attribute__((target("avx2,avx512f"))) Rgb3f colour_sum_avx512(const Rgba* centre,
+                                                                std::ptrdiff_t iw, int r,
+                                                                int groups, const float* kernel,
+                                                                const float* column_weights);
+
 // `offsets`: the centre search's steps along the normal, `count` of them
 // padded to a multiple of four by repeating the last; the paper search
 // steps 1, 2, ... up to `paper_steps`.

@@ -7,8 +7,8 @@
 // growth over the whole map; the region ids of a map against LabelMap::labels;
 // grey levels converted four pixels at a time against the formula, and
 // converted only near the regions against the whole image; parallel_for
-// against a plain loop, and the helper thread's job order; the AVX2 paths
-// against the SSE2 and scalar ones.
+// against a plain loop, and the helper thread's job order; the AVX2 and
+// AVX-512 paths against the SSE2 and scalar ones.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -233,23 +233,29 @@ TEST(LineSpeed, UncheckedSamplesMeasureLikeCheckedOnes) {
   }
 }
 
-// The AVX2 paths (eight floats or four doubles at a time) against the SSE2
-// and scalar ones, to the bit: every pixel's smoothed colour (windows cut by
-// the image's edges, translucent rows, kernels of 9 to 53 taps), and every
-// measurement along the boundaries of a map.
+// The AVX2 paths (eight floats or four doubles at a time) and the AVX-512
+// colour sums (sixteen floats) against the SSE2 and scalar ones, to the
+// bit: every pixel's smoothed colour (windows cut by the image's edges,
+// translucent rows, kernels of 9 to 53 taps), and every measurement along
+// the boundaries of a map.
 TEST(LineSpeed, WideVectorsSmoothColoursLikeNarrowOnes) {
   if (!LineResponse::wide_vectors_available()) GTEST_SKIP() << "no AVX2 on this processor";
   for (const bool translucent : {false, true}) {
     const Image image = test_image(151, 97, 12, translucent);
     for (const double lw : {1.0, 4.6, 13.0}) {
       LineResponse wide(image, lw, 9, 5, 140, 93);
+      wide.use_widest_vectors(false);
       LineResponse narrow(image, lw, 9, 5, 140, 93);
       narrow.use_wide_vectors(false);
-      int differ = 0;
+      LineResponse widest(image, lw, 9, 5, 140, 93);  // four pixels a register, with AVX-512
+      int differ = 0, differ_widest = 0;
       for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
+        for (int x = 0; x < image.width(); ++x) {
           differ += wide.smoothed_colour(x, y) != narrow.smoothed_colour(x, y);
+          differ_widest += widest.smoothed_colour(x, y) != narrow.smoothed_colour(x, y);
+        }
       EXPECT_EQ(differ, 0) << "line width " << lw << (translucent ? ", translucent" : "");
+      EXPECT_EQ(differ_widest, 0) << "line width " << lw << (translucent ? ", translucent" : "");
     }
   }
 }
@@ -276,7 +282,9 @@ TEST(ParallelFor, CallsEveryItemOnceAndWaitsForThem) {
   for (const int helpers : {-1, 0, 1, 3}) {
     std::optional<detail::Pool> pool;
     if (helpers >= 0) pool.emplace(helpers);
-    if (pool) ASSERT_EQ(pool->helpers(), helpers);
+    if (pool) {
+      ASSERT_EQ(pool->helpers(), helpers);
+    }
     detail::Pool* p = pool ? &*pool : nullptr;
     for (const int n : {0, 1, 2, 7, 8, 9, 64, 257})
       for (const auto& [threads, per] :
