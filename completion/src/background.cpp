@@ -160,7 +160,11 @@ BackgroundResult fill_background(const Image& image, const LabelMap& hole,
   for (std::size_t i = 0; i < n; ++i) barrier[i] &= in_hole[i];
   std::vector<int> seed;
   const Image original = crop;
-  result.unreached = detail::flat_fill(crop, in_hole, ink, barrier, options.seam_radius, &seed);
+  const int edges = (box.x == 0 ? detail::kLeftEdge : 0) | (box.y == 0 ? detail::kTopEdge : 0) |
+                    (box.x + cw == w ? detail::kRightEdge : 0) |
+                    (box.y + ch == h ? detail::kBottomEdge : 0);
+  result.unreached =
+      detail::flat_fill(crop, in_hole, ink, barrier, options.seam_radius, &seed, edges);
   if (options.ink_seams) {
     // The seam line looks like the lines that enter the hole.
     Rgba colour{40, 30, 30, 255};

@@ -56,9 +56,14 @@ void draw_strokes(Image& image, const Mask& hole, const std::vector<Stroke>& str
 // filled colour across them. Seams are straightened by a median of radius
 // `seam_radius` away from barriers. `seed` (if not null) receives, per hole
 // pixel, the index of the known pixel its colour came from (−1 if none).
+// `drawing_edges` says which sides of `image` are the drawing's own edges
+// (kLeftEdge | kTopEdge | kRightEdge | kBottomEdge; the rest are a crop's):
+// what runs off the drawing is larger than it shows.
 // Returns the number of hole pixels no known pixel reached.
+constexpr int kLeftEdge = 1, kTopEdge = 2, kRightEdge = 4, kBottomEdge = 8;
 int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barrier, int seam_radius,
-              std::vector<int>* seed);
+              std::vector<int>* seed,
+              int drawing_edges = kLeftEdge | kTopEdge | kRightEdge | kBottomEdge);
 
 // Draws a line of `colour` and `width` along the seams of the flat fill in
 // `filled` between two colours that `original` (the drawing, hole unknown)

@@ -226,9 +226,10 @@ void propagate(int w, int h, const Mask& pass, const std::vector<int>& seeds,
   }
 }
 
-// How far each known pixel is from the nearest ink or colour border of the
-// drawing (not counting the hole's rim), in pixels.
-cv::Mat region_depth(const Image& image, const Mask& hole, const Mask& ink) {
+// 255 where a known pixel is neither ink nor on a colour border of the
+// drawing (a step of more than 24 in a channel to its right or lower
+// neighbour; all transparent pixels one colour), and on the hole.
+cv::Mat colour_free(const Image& image, const Mask& hole, const Mask& ink) {
   const int w = image.width(), h = image.height();
   cv::Mat free(h, w, CV_8U, cv::Scalar(255));
   auto differ = [](const Rgba& a, const Rgba& b) {
@@ -247,18 +248,29 @@ cv::Mat region_depth(const Image& image, const Mask& hole, const Mask& ink) {
         border = differ(image.data()[i], image.data()[i + w]);
       if (border) free.at<std::uint8_t>(y, x) = 0;
     }
+  return free;
+}
+
+// How far each known pixel is from the nearest ink or colour border of the
+// drawing (not counting the hole's rim), in pixels.
+cv::Mat region_depth(const cv::Mat& free) {
   cv::Mat depth;
   cv::distanceTransform(free, depth, cv::DIST_L1, cv::DIST_MASK_3);  // only compared to 10 px
   return depth;
 }
 
-// The known materials around the hole: connected known, non-ink areas of the
-// crop (4-connected, so a line closes them). One that lies on the hair (most
-// of its rim within a line's width of the hole: a headband or a clip lying on
-// the hair, a highlight the segmentation left) is no part of what is behind
-// the hair: it continues only as far as it is thick (its largest inscribed
-// radius). The face, the skin and the paper, cut by the hair, reach on.
-Materials find_materials(const Mask& hole, const Mask& ink, int w, int h) {
+// The known materials around the hole: connected known areas of one colour
+// (4-connected, bounded by ink and by colour borders, so a line or a step
+// of colour closes them; soft shading stays one). One that lies on the hair
+// (most of its rim within a line's width of the hole: a headband or a clip
+// lying on the hair, a highlight the segmentation left) is no part of what
+// is behind the hair: it continues only as far as it is thick (its largest
+// inscribed radius). The face, the skin and the paper, cut by the hair,
+// reach on. (Bounded by ink only, lucy's dress, collar, sleeves, skin and
+// paper were one material: their soft lines are no ink. The grey inside
+// of her collar then filled the hair's place from the neck to the sleeve.)
+Materials find_materials(const Image& image, const Mask& hole, const Mask& ink, const cv::Mat& free,
+                         int drawing_edges) {
   constexpr int kRimReach = 6;       // px: a rim pixel this near the hole borders it
   constexpr double kOnHair = 0.6;    // share of the rim bordering the hole
   constexpr float kMinReach = 3.0f;  // px
@@ -267,11 +279,34 @@ Materials find_materials(const Mask& hole, const Mask& ink, int w, int h) {
   // only as far as it is thick. On wikipe-tan a clip's grey filled the hair
   // beside the head; the paper and the body, large, reach on.
   constexpr double kSmall = 0.25;
+  const int w = image.width(), h = image.height();
   const std::size_t n = static_cast<std::size_t>(w) * h;
   cv::Mat known(h, w, CV_8U);
-  for (std::size_t i = 0; i < n; ++i) known.data[i] = !hole[i] && !ink[i] ? 255 : 0;
+  for (std::size_t i = 0; i < n; ++i) known.data[i] = !hole[i] && free.data[i] ? 255 : 0;
   cv::Mat labels;
   const int count = cv::connectedComponents(known, labels, 4, CV_32S);
+  int* lab = labels.ptr<int>();
+  // A pixel on a colour border belongs to the neighbour of the nearest
+  // colour (one pass down, one up, so that borders 2 px wide are reached).
+  auto adopt = [&](std::size_t i, int x, int y) {
+    if (lab[i] != 0 || hole[i] || ink[i]) return;
+    const Rgba& c = image.data()[i];
+    int best = INT_MAX;
+    const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
+    for (int k = 0; k < 4; ++k) {
+      if (nx[k] < 0 || ny[k] < 0 || nx[k] >= w || ny[k] >= h) continue;
+      const std::size_t j = static_cast<std::size_t>(ny[k]) * w + nx[k];
+      if (lab[j] == 0) continue;
+      const Rgba& d = image.data()[j];
+      const int diff =
+          std::abs(c.r - d.r) + std::abs(c.g - d.g) + std::abs(c.b - d.b) + std::abs(c.a - d.a);
+      if (diff < best) best = diff, lab[i] = lab[j];
+    }
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) adopt(static_cast<std::size_t>(y) * w + x, x, y);
+  for (int y = h - 1; y >= 0; --y)
+    for (int x = w - 1; x >= 0; --x) adopt(static_cast<std::size_t>(y) * w + x, x, y);
   cv::Mat hole_m(h, w, CV_8U, const_cast<std::uint8_t*>(hole.data())), near_hole;
   cv::dilate(hole_m, near_hole,
              cv::getStructuringElement(cv::MORPH_RECT, {2 * kRimReach + 1, 2 * kRimReach + 1}));
@@ -280,7 +315,10 @@ Materials find_materials(const Mask& hole, const Mask& ink, int w, int h) {
   const std::size_t k_count = static_cast<std::size_t>(count);
   std::vector<int> rim(k_count, 0), rim_near(k_count, 0);
   std::vector<float> thick(k_count, 0.0f);
-  const int* lab = labels.ptr<int>();
+  // A material running off the drawing is larger than it shows (the body
+  // below its lower edge): never small. (Off a crop's side it is not: a
+  // hair clip cut by the hole's box.)
+  std::vector<std::uint8_t> cut(k_count, 0);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
@@ -288,8 +326,12 @@ Materials find_materials(const Mask& hole, const Mask& ink, int w, int h) {
       if (c == 0) continue;
       const std::size_t k = static_cast<std::size_t>(c);
       thick[k] = std::max(thick[k], inside.ptr<float>(y)[x]);
-      const bool edge = x == 0 || y == 0 || x + 1 == w || y + 1 == h || lab[i - 1] != c ||
-                        lab[i + 1] != c || lab[i - w] != c || lab[i + w] != c;
+      const bool side = x == 0 || y == 0 || x + 1 == w || y + 1 == h;
+      cut[k] |= (x == 0 && (drawing_edges & kLeftEdge)) || (y == 0 && (drawing_edges & kTopEdge)) ||
+                (x + 1 == w && (drawing_edges & kRightEdge)) ||
+                (y + 1 == h && (drawing_edges & kBottomEdge));
+      const bool edge =
+          side || lab[i - 1] != c || lab[i + 1] != c || lab[i - w] != c || lab[i + w] != c;
       if (!edge) continue;
       ++rim[k];
       if (near_hole.data[i]) ++rim_near[k];
@@ -305,7 +347,8 @@ Materials find_materials(const Mask& hole, const Mask& ink, int w, int h) {
   m.reach.assign(k_count, INT_MAX);
   for (std::size_t k = 1; k < k_count; ++k)
     if ((rim[k] > 0 && rim_near[k] >= kOnHair * rim[k]) ||
-        (rim_near[k] > 0 && static_cast<double>(area[k]) < kSmall * static_cast<double>(holes)))
+        (rim_near[k] > 0 && !cut[k] &&
+         static_cast<double>(area[k]) < kSmall * static_cast<double>(holes)))
       m.reach[k] = static_cast<int>(std::lround(5.0f * std::max(kMinReach, thick[k])));
   return m;
 }
@@ -313,7 +356,7 @@ Materials find_materials(const Mask& hole, const Mask& ink, int w, int h) {
 }  // namespace
 
 int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barrier, int seam_radius,
-              std::vector<int>* seed) {
+              std::vector<int>* seed, int drawing_edges) {
   const int w = image.width(), h = image.height();
   const std::size_t n = static_cast<std::size_t>(w) * h;
   cv::Mat hole_m(h, w, CV_8U, const_cast<std::uint8_t*>(hole.data()));
@@ -354,12 +397,13 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
   // Thin bands along the hole (a shadow the hair casts, a highlight on a
   // clip's rim) start behind: they continue a little way, thick regions win.
   std::vector<int> start(seeds.size(), 0);
-  const cv::Mat depth = region_depth(image, hole, ink);
+  const cv::Mat free = colour_free(image, hole, ink);
+  const cv::Mat depth = region_depth(free);
   for (std::size_t k = 0; k < seeds.size(); ++k) {
     const float t = depth.at<float>(seeds[k] / w, seeds[k] % w);
     start[k] = static_cast<int>(std::lround(kThinPenalty * std::max(0.0f, kThinDepth - t)));
   }
-  const Materials materials = find_materials(hole, ink, w, h);
+  const Materials materials = find_materials(image, hole, ink, free, drawing_edges);
   propagate(w, h, pass, seeds, start, origin, &materials);
   // Pockets closed off by barriers or ink (and the barrier pixels
   // themselves) take the nearest colour across them.

@@ -249,6 +249,45 @@ TEST(Background, AccessoryLyingOnTheHairIsNotContinuedBehindIt) {
   EXPECT_GT(skin_below, 0.9 * below) << "the skin below still continues up";
 }
 
+// Soft-lined drawings (lucy) separate their areas by steps of colour, not
+// by ink: a dress, a grey band along it (the inside of a collar, 8 px wide)
+// and the paper are one area without ink. The grey band borders the hair
+// (the hole) along its length; behind the hair lie the paper and the dress,
+// and the band's grey continues no farther than it is thick. (Before, the
+// areas were told apart by ink only: the grey filled the hole's right half
+// as its nearest colour, as lucy's collar filled her hair's place.)
+TEST(Background, NarrowBandOfAColourWithoutInkIsNotContinuedFar) {
+  constexpr int kW = 300, kH = 230;
+  constexpr Rgba kGrey{196, 196, 200, 255};
+  constexpr Rgba kDress{170, 214, 172, 255};
+  const Box hair{100, 40, 220, 200}, band{220, 80, 228, 200};
+  Image drawing(kW, kH, kPaper);
+  LabelMap hole(kW, kH);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (y >= 200) drawing.at(x, y) = kDress;
+      if (x >= band.x0 && x < band.x1 && y >= band.y0 && y < band.y1) drawing.at(x, y) = kGrey;
+      const bool in_hair = x >= hair.x0 && x < hair.x1 && y >= hair.y0 && y < hair.y1;
+      if (in_hair) drawing.at(x, y) = kHair;
+      hole.at(x, y) = in_hair;
+    }
+  const BackgroundResult r = fill_background(drawing, hole);
+  expect_known_untouched(drawing, r.image, hole);
+  EXPECT_EQ(r.unreached, 0);
+  int far = 0, grey_far = 0, near = 0, grey_near = 0;
+  for (int y = hair.y0; y < hair.y1; ++y)
+    for (int x = hair.x0; x < hair.x1; ++x) {
+      const bool grey = colour_distance(r.image.at(x, y), kGrey) <= 10;
+      if (y >= band.y0 + 10 && y < band.y1 - 10 && x >= band.x0 - 3) ++near, grey_near += grey;
+      if (x < band.x0 - 10) ++far, grey_far += grey;
+    }
+  ASSERT_GT(far, 15000);
+  EXPECT_EQ(grey_far, 0) << "the band's grey filled the hair's place";
+  // Along the band its colour continues a little (it is a colour of the
+  // drawing there, not a hole).
+  EXPECT_GE(grey_near, near * 9 / 10);
+}
+
 TEST(Background, EmptyHoleLeavesTheImage) {
   const Face f;
   const BackgroundResult r = fill_background(f.drawing, LabelMap(Face::kW, Face::kH));
