@@ -136,6 +136,49 @@ TEST(MassJoins, BackHairOverATailIsJoined) {
   EXPECT_EQ(tail->regions, (std::vector<int>{6}));
 }
 
+// Region 2 of the fan drawing hanging two locks, one lying on the other:
+// the lower lock 6 (x 300..335) and the upper lock 8 (x 305..330, from under
+// 2 down past 6's end) lying on it.
+Drawing back_hair_over_stacked_locks() {
+  Drawing d = back_hair_under_fan(kBack);
+  paint(
+      d, [](double x, double y) { return x > 300 && x < 335 && y > 40 && y < 150; }, kFan, 6);
+  paint(
+      d, [](double x, double y) { return x > 305 && x < 330 && y > 100 && y < 180; }, kFan, 8);
+  paint(
+      d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, kBack, 2);
+  d.relations.push_back(below(6, 2));
+  d.relations.push_back(below(8, 2));
+  d.relations.push_back(below(6, 8));
+  return d;
+}
+
+TEST(MassJoins, BackHairOverStackedLocksIsJoined) {
+  // The upper lock lies on a region, so 2 lay on other hair before and was
+  // no back hair; it lies on locks only, hanging from under 2: a stacked
+  // tail, and 2 is back hair joined to 1 across the fan. Both locks stay
+  // strands of their own.
+  const Drawing d = back_hair_over_stacked_locks();
+  const Result r = run(d);
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(r, 6), (std::vector<int>{6}));
+  EXPECT_EQ(test::regions_with(r, 8), (std::vector<int>{8}));
+}
+
+TEST(MassJoins, StackedLocksUnderOtherHairDoNotMakeBackHair) {
+  // As above, but strand 7 lies over the upper lock and over region 2 (which
+  // lies on the locks): the upper lock no longer hangs from under back hair
+  // alone, so 2 lies on other hair and is not joined across the fan.
+  Drawing d = back_hair_over_stacked_locks();
+  paint(
+      d, [](double x, double y) { return x > 285 && x < 310 && y > 20 && y < 190; }, kFan, 7);
+  d.relations.push_back(below(2, 7));
+  d.relations.push_back(below(8, 7));
+  d.relations.push_back(below(6, 7));
+  const Result r = run(d);
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
+}
+
 TEST(MassJoins, PiecesLyingOnOtherHairAreNotBackHair) {
   // As above, but a strand (7) lies over both the lock and region 2: the
   // lock is no tail of 2 (other hair covers it), so 2 lies on other hair,
