@@ -548,7 +548,7 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
   std::vector<double> centre_steps;
   for (double s = -half; s <= half + 1e-9; s += 0.5) centre_steps.push_back(s);
   const int centre_count = static_cast<int>(centre_steps.size());
-  while (centre_steps.size() % 4 != 0) centre_steps.push_back(centre_steps.back());
+  while (centre_steps.size() % 8 != 0) centre_steps.push_back(centre_steps.back());
   int paper_steps = 0;
   for (double s = 1.0; s <= reach; s += 1.0) ++paper_steps;
   double along = 0.0;
@@ -585,9 +585,12 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
       double paper_left = -1.0, paper_right = -1.0;
 #if defined(HAIR25D_LAYERING_AVX2)
       if (decltype(fast)::value && wide_vectors_ && centre_count > 0) {
+        const int count = static_cast<int>(centre_steps.size());
         const PointSamples got =
-            point_samples_avx2(grey, label, px, py, nx, ny, centre_steps.data(),
-                               static_cast<int>(centre_steps.size()), paper_steps, left, right);
+            widest_vectors_ ? point_samples_avx512(grey, label, px, py, nx, ny, centre_steps.data(),
+                                                   count, paper_steps, left, right)
+                            : point_samples_avx2(grey, label, px, py, nx, ny, centre_steps.data(),
+                                                 count, paper_steps, left, right);
         centre = got.centre, paper_left = got.paper_left, paper_right = got.paper_right;
       } else
 #endif

@@ -7,6 +7,12 @@
 #if defined(HAIR25D_LAYERING_AVX2)
 #include <immintrin.h>
 
+// GCC 12's AVX-512 intrinsics start many results from an "undefined"
+// register, which its uninitialised-use check reports wherever they are
+// inlined.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+
 namespace hair25d::layering::detail {
 namespace {
 
@@ -89,9 +95,7 @@ __attribute__((target("avx2"))) inline __m256d label_mask_avx2(const LabelView& 
   return _mm256_castsi256_pd(_mm256_cvtepi32_epi64(hit));
 }
 
-// Sixteen 16-bit lanes (four pixels) to sixteen floats, in order. (The
-// zero-masked forms: the plain ones start from an undefined register, which
-// GCC 12 warns about.)
+// Sixteen 16-bit lanes (four pixels) to sixteen floats, in order.
 __attribute__((target("avx2,avx512f"))) inline __m512 to_float_avx512(__m256i sixteen) {
   return _mm512_maskz_cvtepi32_ps(0xFFFF, _mm512_maskz_cvtepu16_epi32(0xFFFF, sixteen));
 }
@@ -99,6 +103,73 @@ __attribute__((target("avx2,avx512f"))) inline __m512 to_float_avx512(__m256i si
 template <int kQuarter>
 __attribute__((target("avx2,avx512f"))) inline __m128 quarter_avx512(__m512 v) {
   return _mm512_maskz_extractf32x4_ps(0xF, v, kQuarter);
+}
+// Eight pixels (at grey + index[k] + offset) with their right-hand
+// neighbours, one 8-byte load per lane, as pairs of floats.
+__attribute__((target("avx2,avx512f"))) inline __m512i pixel_pairs_avx512(const float* grey,
+                                                                          const int* index,
+                                                                          int offset) {
+  return _mm512_maskz_inserti64x4(0xFF,
+                                  _mm512_castsi256_si512(pixel_pairs_avx2(grey, index, offset)),
+                                  pixel_pairs_avx2(grey, index + 4, offset), 1);
+}
+// Floats 0..7 (kHalf 0) or 8..15 (kHalf 1) of a register, as doubles.
+template <int kHalf>
+__attribute__((target("avx2,avx512f"))) inline __m512d half_to_double_avx512(__m512i v) {
+  const __m256i part =
+      kHalf == 0 ? _mm512_castsi512_si256(v) : _mm512_maskz_extracti64x4_epi64(0xF, v, 1);
+  return _mm512_cvtps_pd(_mm256_castsi256_ps(part));
+}
+// Bilinear samples at (x, y) (eight lanes), as GreyView::sample_inside:
+// bilinear_avx2's products and sums per lane (no fused multiply-adds).
+__attribute__((target("avx2,avx512f"), optimize("fp-contract=off"))) inline __m512d bilinear_avx512(
+    const GreyView& g, __m512d x, __m512d y) {
+  const __m512d half = _mm512_set1_pd(0.5);
+  x = _mm512_sub_pd(_mm512_sub_pd(x, half), _mm512_set1_pd(g.x0));
+  y = _mm512_sub_pd(_mm512_sub_pd(y, half), _mm512_set1_pd(g.y0));
+  const __m256i xi = _mm512_maskz_cvttpd_epi32(0xFF, x), yi = _mm512_maskz_cvttpd_epi32(0xFF, y);
+  const __m512d fx = _mm512_sub_pd(x, _mm512_maskz_cvtepi32_pd(0xFF, xi));
+  const __m512d fy = _mm512_sub_pd(y, _mm512_maskz_cvtepi32_pd(0xFF, yi));
+  const __m256i at = _mm256_add_epi32(_mm256_mullo_epi32(yi, _mm256_set1_epi32(g.w)), xi);
+  alignas(32) int index[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(index), at);
+  // Lanes 0..7 the pixels, 8..15 their right-hand neighbours.
+  const __m512i split = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15);
+  const __m512i t =
+      _mm512_maskz_permutexvar_epi32(0xFFFF, split, pixel_pairs_avx512(g.grey, index, 0));
+  const __m512i b =
+      _mm512_maskz_permutexvar_epi32(0xFFFF, split, pixel_pairs_avx512(g.grey, index, g.w));
+  const __m512d p0 = half_to_double_avx512<0>(t), p1 = half_to_double_avx512<1>(t);
+  const __m512d p2 = half_to_double_avx512<0>(b), p3 = half_to_double_avx512<1>(b);
+  const __m512d one = _mm512_set1_pd(1.0);
+  const __m512d gx = _mm512_sub_pd(one, fx), gy = _mm512_sub_pd(one, fy);
+  const __m512d upper = _mm512_add_pd(_mm512_mul_pd(gx, p0), _mm512_mul_pd(fx, p1));
+  const __m512d lower = _mm512_add_pd(_mm512_mul_pd(gx, p2), _mm512_mul_pd(fx, p3));
+  return _mm512_add_pd(_mm512_mul_pd(gy, upper), _mm512_mul_pd(fy, lower));
+}
+// The least and the largest of eight lanes.
+__attribute__((target("avx2,avx512f"))) inline double min_of_avx512(__m512d v) {
+  return min_of_avx2(
+      _mm256_min_pd(_mm512_castpd512_pd256(v), _mm512_maskz_extractf64x4_pd(0xF, v, 1)));
+}
+__attribute__((target("avx2,avx512f"))) inline double max_of_avx512(__m512d v) {
+  return max_of_avx2(
+      _mm256_max_pd(_mm512_castpd512_pd256(v), _mm512_maskz_extractf64x4_pd(0xF, v, 1)));
+}
+// The lanes whose pixel of `label` holds `want`.
+__attribute__((target("avx2,avx512f"))) inline __mmask8 label_mask_avx512(const LabelView& label,
+                                                                          __m512d x, __m512d y,
+                                                                          int want) {
+  const __m256i at = _mm256_add_epi32(
+      _mm256_mullo_epi32(_mm512_maskz_cvttpd_epi32(0xFF, y), _mm256_set1_epi32(label.w)),
+      _mm512_maskz_cvttpd_epi32(0xFF, x));
+  alignas(32) int index[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(index), at);
+  const int* l = label.labels;
+  const __m256i got = _mm256_setr_epi32(l[index[0]], l[index[1]], l[index[2]], l[index[3]],
+                                        l[index[4]], l[index[5]], l[index[6]], l[index[7]]);
+  return static_cast<__mmask8>(
+      _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(got, _mm256_set1_epi32(want)))));
 }
 }  // namespace
 
@@ -198,6 +269,39 @@ __attribute__((target("avx2,avx512f"), optimize("fp-contract=off"))) Rgb3f colou
 // `offsets`: the centre search's steps along the normal, `count` of them
 // padded to a multiple of four by repeating the last; the paper search
 // steps 1, 2, ... up to `paper_steps`.
+// point_samples_avx2 eight samples at a time: the same values per lane
+// (bilinear_avx512), and min / max do not depend on the order.
+__attribute__((target("avx2,avx512f"), optimize("fp-contract=off"))) PointSamples
+point_samples_avx512(const GreyView& grey, const LabelView& label, double px, double py, double nx,
+                     double ny, const double* offsets, int count, int paper_steps, int left,
+                     int right) {
+  const __m512d vpx = _mm512_set1_pd(px), vpy = _mm512_set1_pd(py);
+  const __m512d vnx = _mm512_set1_pd(nx), vny = _mm512_set1_pd(ny);
+  __m512d centre = _mm512_set1_pd(1e9);
+  for (int k = 0; k < count; k += 8) {
+    const __m512d sv = _mm512_loadu_pd(offsets + k);
+    centre = _mm512_min_pd(centre, bilinear_avx512(grey, _mm512_add_pd(vpx, _mm512_mul_pd(sv, vnx)),
+                                                   _mm512_add_pd(vpy, _mm512_mul_pd(sv, vny))));
+  }
+  const __m512d none = _mm512_set1_pd(-1.0);
+  __m512d paper_left = none, paper_right = none;
+  for (int k = 1; k <= paper_steps; k += 8) {
+    __m512d sv = _mm512_setr_pd(k, k + 1, k + 2, k + 3, k + 4, k + 5, k + 6, k + 7);
+    // Steps past the last repeat it (max ignores the repeat).
+    sv = _mm512_min_pd(sv, _mm512_set1_pd(paper_steps));
+    const __m512d ox = _mm512_mul_pd(sv, vnx), oy = _mm512_mul_pd(sv, vny);
+    const __m512d lx = _mm512_add_pd(vpx, ox), ly = _mm512_add_pd(vpy, oy);
+    const __m512d rx = _mm512_sub_pd(vpx, ox), ry = _mm512_sub_pd(vpy, oy);
+    paper_left =
+        _mm512_max_pd(paper_left, _mm512_mask_blend_pd(label_mask_avx512(label, lx, ly, left), none,
+                                                       bilinear_avx512(grey, lx, ly)));
+    paper_right =
+        _mm512_max_pd(paper_right, _mm512_mask_blend_pd(label_mask_avx512(label, rx, ry, right),
+                                                        none, bilinear_avx512(grey, rx, ry)));
+  }
+  return {min_of_avx512(centre), max_of_avx512(paper_left), max_of_avx512(paper_right)};
+}
+
 __attribute__((target("avx2"))) PointSamples point_samples_avx2(
     const GreyView& grey, const LabelView& label, double px, double py, double nx, double ny,
     const double* offsets, int count, int paper_steps, int left, int right) {

@@ -128,9 +128,14 @@ __attribute__((target("avx2,avx512f"))) Rgb3f colour_sum_avx512(const Rgba* cent
                                                                 const float* column_weights);
 
 // `offsets`: the centre search's steps along the normal, `count` of them
-// padded to a multiple of four by repeating the last; the paper search
+// padded to a multiple of four (eight for AVX-512) by repeating the last;
+// the paper search
 // steps 1, 2, ... up to `paper_steps`.
 __attribute__((target("avx2"))) PointSamples point_samples_avx2(
+    const GreyView& grey, const LabelView& label, double px, double py, double nx, double ny,
+    const double* offsets, int count, int paper_steps, int left, int right);
+// The same eight samples at a time (AVX-512F); `count` a multiple of eight.
+__attribute__((target("avx2,avx512f"))) PointSamples point_samples_avx512(
     const GreyView& grey, const LabelView& label, double px, double py, double nx, double ny,
     const double* offsets, int count, int paper_steps, int left, int right);
 #endif

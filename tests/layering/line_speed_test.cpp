@@ -29,6 +29,7 @@
 #include "boundary_trace.h"
 #include "hair25d/layering/boundary_graph.h"
 #include "line_response.h"
+#include "line_samples.h"
 #include "outline_fill.h"
 #include "parallel.h"
 #include "raster_scan.h"
@@ -260,6 +261,49 @@ TEST(LineSpeed, WideVectorsSmoothColoursLikeNarrowOnes) {
   }
 }
 
+#if defined(HAIR25D_LAYERING_AVX2)
+// The point samples eight at a time (AVX-512) against four at a time (AVX2),
+// point by point: random points and normals well inside a random grey window
+// and label map, centre searches of 1 to 12 steps, paper searches of 1 to 20.
+TEST(LineSpeed, WidestPointSamplesEqualWideOnes) {
+  if (!LineResponse::widest_vectors_available()) GTEST_SKIP() << "no AVX-512F on this processor";
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int w = 173, h = 131;
+  std::vector<float> grey(static_cast<std::size_t>(w) * h);
+  for (float& g : grey) g = static_cast<float>(255.0 * unit(rng));
+  LabelMap labels(w + 40, h + 40, 0);
+  for (int y = 0; y < labels.height(); ++y)
+    for (int x = 0; x < labels.width(); ++x) labels.at(x, y) = static_cast<int>(rng() % 3);
+  const detail::GreyView view{grey.data(), w, h, 20.0, 20.0, w - 1.0, h - 1.0};
+  const detail::LabelView lv{labels.data(), labels.width(), labels.height()};
+  int compared = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int steps = 1 + static_cast<int>(rng() % 12), paper = 1 + static_cast<int>(rng() % 20);
+    std::vector<double> offsets;
+    for (int k = 0; k < steps; ++k) offsets.push_back(-0.5 * (steps / 2) + 0.5 * k);
+    while (offsets.size() % 8 != 0) offsets.push_back(offsets.back());
+    const double angle = 6.283185307179586 * unit(rng);
+    const double nx = std::cos(angle), ny = std::sin(angle);
+    // The farthest sample stays a pixel inside the window (20 + 1 .. 20 + w - 2).
+    const double reach = std::max(paper, steps) + 1.0;
+    const double px = 20.0 + reach + 1.0 + (w - 2 * reach - 3.0) * unit(rng);
+    const double py = 20.0 + reach + 1.0 + (h - 2 * reach - 3.0) * unit(rng);
+    const int left = static_cast<int>(rng() % 3), right = static_cast<int>(rng() % 3);
+    const int count = static_cast<int>(offsets.size());
+    const detail::PointSamples a = detail::point_samples_avx2(
+        view, lv, px, py, nx, ny, offsets.data(), count, paper, left, right);
+    const detail::PointSamples b = detail::point_samples_avx512(
+        view, lv, px, py, nx, ny, offsets.data(), count, paper, left, right);
+    ASSERT_EQ(a.centre, b.centre) << "trial " << trial;
+    ASSERT_EQ(a.paper_left, b.paper_left) << "trial " << trial;
+    ASSERT_EQ(a.paper_right, b.paper_right) << "trial " << trial;
+    compared += a.paper_left >= 0 && a.paper_right >= 0;
+  }
+  EXPECT_GT(compared, 1000);
+}
+#endif
+
 TEST(LineSpeed, WideVectorsMeasureLikeNarrowOnes) {
   if (!LineResponse::wide_vectors_available()) GTEST_SKIP() << "no AVX2 on this processor";
   const Image image = test_image(313, 229, 13, true);
@@ -268,10 +312,14 @@ TEST(LineSpeed, WideVectorsMeasureLikeNarrowOnes) {
     for (int x = y / 5; x < 313; ++x) labels.at(x, y) = 1 + (x / 31 + y / 23 + x * y / 900) % 6;
   const BoundaryGraph graph = build_boundary_graph(labels);
   for (const double lw : {1.0, 2.5, 4.6, 9.0}) {
+    LineResponse widest(image, lw, 15, 10, 290, 215);  // AVX-512 where there is one
     LineResponse wide(image, lw, 15, 10, 290, 215);
+    wide.use_widest_vectors(false);
     LineResponse narrow(image, lw, 15, 10, 290, 215);
     narrow.use_wide_vectors(false);
     EXPECT_GT(same_measurements(narrow, wide, graph, labels, lw, true), 10) << "line width " << lw;
+    EXPECT_GT(same_measurements(narrow, widest, graph, labels, lw, true), 10)
+        << "line width " << lw;
   }
 }
 
