@@ -7,9 +7,10 @@
 namespace hair25d::layering::detail {
 
 // build_boundary_graph; with `wide_rows` (where the processor has AVX2) the
-// corners are scanned eight at a time and the scan for closed loops is
-// skipped when the traces walked every crack edge between rows. The graph is
-// the same either way (for tests).
-BoundaryGraph build_boundary_graph(const LabelMap& labels, bool wide_rows);
+// corners are scanned eight at a time (sixteen with `widest_rows` where it
+// has AVX-512F) and the scan for closed loops is skipped when the traces
+// walked every crack edge between rows. The graph is the same either way
+// (for tests).
+BoundaryGraph build_boundary_graph(const LabelMap& labels, bool wide_rows, bool widest_rows = true);
 
 }  // namespace hair25d::layering::detail
