@@ -16,6 +16,10 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define HAIR25D_SCAN_AVX512 1
+#endif
 
 namespace hair25d::layering::detail {
 
@@ -102,29 +106,52 @@ inline bool label_box(const LabelMap& labels, int* x0, int* y0, int* x1, int* y1
 }
 
 // The distinct non-zero labels of labels[from, to) into `seen`, in one pass.
+#if defined(HAIR25D_SCAN_AVX512)
+// From i on, the first block of sixteen labels (i + 16k) not all equal to
+// `last`, or the last block start before n: one compare a block (AVX-512F).
+__attribute__((target("avx512f"))) inline std::size_t skip_same_avx512(const int* data,
+                                                                       std::size_t i, std::size_t n,
+                                                                       int last) {
+  const __m512i same = _mm512_set1_epi32(last);
+  for (; i + 16 <= n; i += 16)
+    if (_mm512_cmpneq_epi32_mask(_mm512_loadu_si512(data + i), same) != 0) break;
+  return i;
+}
+#endif
+
 // Runs of one label are long: blocks of sixteen pixels equal to the last
-// label are skipped by one compare each (SSE2), and a label met again
-// (across a line, the same few regions alternate) is found in a small cache
-// before the set is asked.
+// label are skipped by one compare each (four with SSE2), and a label met
+// again (across a line, the same few regions alternate) is found in a small
+// cache before the set is asked.
 inline void distinct_labels_into(const int* data, std::size_t from, std::size_t to,
-                                 std::set<int>& seen) {
+                                 std::set<int>& seen, bool widest_blocks = true) {
   std::array<int, 64> cache;  // cache[v & 63] == v: v is in `seen` (or 0)
   cache.fill(0);
   int last = 0;
   const std::size_t n = to;
   constexpr std::size_t kBlock = 16;
+#if defined(HAIR25D_SCAN_AVX512)
+  const bool widest = widest_blocks && __builtin_cpu_supports("avx512f");
+#else
+  constexpr bool widest = false;
+  (void)widest_blocks;
+#endif
   for (std::size_t i = from; i < n;) {
+#if defined(HAIR25D_SCAN_AVX512)
+    if (widest) i = skip_same_avx512(data, i, n, last);
+#endif
 #if defined(__SSE2__)
     const __m128i same = _mm_set1_epi32(last);
     auto equal = [&](std::size_t at) {
       return _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(data + at)), same);
     };
-    for (; i + kBlock <= n; i += kBlock) {
+    for (; !widest && i + kBlock <= n; i += kBlock) {
       const __m128i all = _mm_and_si128(_mm_and_si128(equal(i), equal(i + 4)),
                                         _mm_and_si128(equal(i + 8), equal(i + 12)));
       if (_mm_movemask_epi8(all) != 0xFFFF) break;
     }
 #else
+    (void)widest;
     for (; i + kBlock <= n; i += kBlock) {
       int differs = 0;
       for (std::size_t k = 0; k < kBlock; ++k) differs |= data[i + k] ^ last;
@@ -145,15 +172,21 @@ inline void distinct_labels_into(const int* data, std::size_t from, std::size_t 
 
 // The distinct non-zero labels of `map`, sorted (LabelMap::labels sorts
 // every pixel). The pass reads the whole map, so a large map is read in two
-// halves on two cores (`pool`'s helper where one is given).
-inline std::vector<int> distinct_labels(const LabelMap& map, Pool* pool = nullptr) {
+// halves on two cores (`pool`'s helper where one is given). With
+// `widest_blocks` false, blocks are compared four labels at a time even
+// where the processor has AVX-512F (the same labels, for tests).
+inline std::vector<int> distinct_labels(const LabelMap& map, Pool* pool = nullptr,
+                                        bool widest_blocks = true) {
   const std::size_t n = map.size();
   constexpr std::size_t kSplit = std::size_t{1} << 18;  // pixels below which one pass is quicker
   const int parts = n >= kSplit ? 2 : 1;
   std::array<std::set<int>, 2> seen;
   parallel_for(
       pool, parts,
-      [&](int p) { distinct_labels_into(map.data(), n * p / parts, n * (p + 1) / parts, seen[p]); },
+      [&](int p) {
+        distinct_labels_into(map.data(), n * p / parts, n * (p + 1) / parts, seen[p],
+                             widest_blocks);
+      },
       2, 1);
   seen[0].insert(seen[1].begin(), seen[1].end());
   return {seen[0].begin(), seen[0].end()};

@@ -668,7 +668,8 @@ TEST(TraceRows, WideRowsTraceLikeNarrowOnes) {
 // The region ids the layering reads off the input map (skipping runs of one
 // label, a cache of labels met before) are LabelMap::labels: on strand maps,
 // noise, negative and large labels, more labels than the cache has slots,
-// maps narrower than a block, and a map large enough to be read in halves.
+// maps narrower than a block, and a map large enough to be read in halves;
+// blocks compared sixteen labels at a time (AVX-512) and four (SSE2).
 TEST(DistinctLabels, EqualLabelMapLabels) {
   std::mt19937 rng(3);
   for (int trial = 0; trial < 30; ++trial) {
@@ -680,6 +681,7 @@ TEST(DistinctLabels, EqualLabelMapLabels) {
           if (rng() % 5 == 0) m.at(x, y) = static_cast<int>(rng() % 300) - 100;
     if (trial % 3 == 2) m.at(w - 1, h - 1) = 1 << 30;
     EXPECT_EQ(detail::distinct_labels(m), m.labels()) << "trial " << trial;
+    EXPECT_EQ(detail::distinct_labels(m, nullptr, false), m.labels()) << "trial " << trial;
   }
   LabelMap aliased(40, 3, 0);  // 5, 69, 133 share a cache slot
   for (int x = 0; x < 40; ++x) aliased.at(x, x % 3) = std::array{5, 69, 133, 0}[x % 4];
@@ -692,6 +694,7 @@ TEST(DistinctLabels, EqualLabelMapLabels) {
   large.at(699, 450) = -7;
   for (int x = 0; x < 700; ++x) large.at(x, 225) = 55;
   EXPECT_EQ(detail::distinct_labels(large), large.labels());
+  EXPECT_EQ(detail::distinct_labels(large, nullptr, false), large.labels());
 }
 
 // Eight or four pixels at a time (AVX2 where the processor has it, SSE2)
