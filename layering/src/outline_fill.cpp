@@ -72,9 +72,9 @@ struct Growth {
 #if defined(HAIR25D_FILL_AVX2)
 // start_row and seed_row sixteen pixels at a time; they return how many
 // pixels they did.
-__attribute__((target("avx2"))) int start_row_avx2(const int* row, int n, std::uint16_t* out) {
+__attribute__((target("avx2"))) int start_row_avx2(const int* row, int n, std::uint16_t* out,
+                                                   int x) {
   const __m256i zero = _mm256_setzero_si256();
-  int x = 0;
   for (; x + 16 <= n; x += 16) {
     // −1 (kUnreached) where the label is 0; packs keeps −1 and 0, in lanes
     // ordered per 128-bit half, which the permute puts back in order.
@@ -93,9 +93,8 @@ __attribute__((target("avx2"))) inline __m256i at(const std::uint16_t* p) {
 }
 
 __attribute__((target("avx2"))) int seed_row_avx2(const std::uint16_t* mid, int stride, int n,
-                                                  std::vector<int>& seeds) {
+                                                  std::vector<int>& seeds, int x) {
   const __m256i zero = _mm256_setzero_si256();
-  int x = 0;
   for (; x + 16 <= n; x += 16) {
     const std::uint16_t* u = mid - stride + x;
     const std::uint16_t* m = mid + x;
@@ -114,16 +113,57 @@ __attribute__((target("avx2"))) int seed_row_avx2(const std::uint16_t* mid, int 
   }
   return x;
 }
+
+// start_row and seed_row thirty-two pixels at a time (AVX-512F and BW), from
+// x = 0; they return how many pixels they did.
+__attribute__((target("avx2,avx512f,avx512bw"))) int start_row_avx512(const int* row, int n,
+                                                                      std::uint16_t* out) {
+  const __m512i zero = _mm512_setzero_si512();
+  int x = 0;
+  for (; x + 32 <= n; x += 32) {
+    const std::uint32_t low = _mm512_cmpeq_epi32_mask(_mm512_loadu_si512(row + x), zero);
+    const std::uint32_t high = _mm512_cmpeq_epi32_mask(_mm512_loadu_si512(row + x + 16), zero);
+    // All ones (kUnreached) in the lanes of label 0.
+    _mm512_storeu_si512(out + x, _mm512_movm_epi16(low | high << 16));
+  }
+  return x;
+}
+
+__attribute__((target("avx2,avx512f"))) inline __m512i at512(const std::uint16_t* p) {
+  return _mm512_loadu_si512(p);
+}
+
+__attribute__((target("avx2,avx512f,avx512bw"))) int seed_row_avx512(const std::uint16_t* mid,
+                                                                     int stride, int n,
+                                                                     std::vector<int>& seeds) {
+  int x = 0;
+  for (; x + 32 <= n; x += 32) {
+    const std::uint16_t* u = mid - stride + x;
+    const std::uint16_t* m = mid + x;
+    const std::uint16_t* d = mid + stride + x;
+    const __m512i around =
+        _mm512_or_si512(_mm512_or_si512(_mm512_or_si512(at512(u - 1), at512(u)),
+                                        _mm512_or_si512(at512(u + 1), at512(m - 1))),
+                        _mm512_or_si512(_mm512_or_si512(at512(m + 1), at512(d - 1)),
+                                        _mm512_or_si512(at512(d), at512(d + 1))));
+    // One bit per pixel: a region pixel with a label-0 neighbour.
+    std::uint32_t bits = _mm512_cmpeq_epi16_mask(at512(m), _mm512_setzero_si512()) &
+                         _mm512_test_epi16_mask(around, around);
+    for (; bits != 0; bits &= bits - 1) seeds.push_back(x + std::countr_zero(bits));
+  }
+  return x;
+}
 #endif
 
 // A row of the distance map before the growth: kUnreached on label 0, else
 // 0 (out[x] from row[x], x in [0, n)).
-void start_row(const int* row, int n, std::uint16_t* out, bool wide) {
+void start_row(const int* row, int n, std::uint16_t* out, bool wide, bool widest) {
   int x = 0;
 #if defined(HAIR25D_FILL_AVX2)
-  if (wide) x = start_row_avx2(row, n, out);
+  if (widest) x = start_row_avx512(row, n, out);
+  if (wide) x = start_row_avx2(row, n, out, x);
 #else
-  (void)wide;
+  (void)wide, (void)widest;
 #endif
   for (; x < n; ++x) out[x] = row[x] == 0 ? kUnreached : 0;
 }
@@ -132,14 +172,16 @@ void start_row(const int* row, int n, std::uint16_t* out, bool wide) {
 // appended to `seeds` in increasing x: region pixels (0) with a label-0
 // neighbour (kUnreached). Every distance is 0 or kUnreached yet, so "a
 // label-0 neighbour" is an OR of the eight.
-void seed_row(const std::uint16_t* mid, int stride, int n, std::vector<int>& seeds, bool wide) {
+void seed_row(const std::uint16_t* mid, int stride, int n, std::vector<int>& seeds, bool wide,
+              bool widest) {
   const std::uint16_t* up = mid - stride;
   const std::uint16_t* down = mid + stride;
   int x = 0;
 #if defined(HAIR25D_FILL_AVX2)
-  if (wide) x = seed_row_avx2(mid, stride, n, seeds);
+  if (widest) x = seed_row_avx512(mid, stride, n, seeds);
+  if (wide) x = seed_row_avx2(mid, stride, n, seeds, x);
 #else
-  (void)wide;
+  (void)wide, (void)widest;
 #endif
   for (; x < n; ++x) {
     const std::uint16_t around = up[x - 1] | up[x] | up[x + 1] | mid[x - 1] | mid[x + 1] |
@@ -148,10 +190,18 @@ void seed_row(const std::uint16_t* mid, int stride, int n, std::vector<int>& see
   }
 }
 
-// Whether start_row and seed_row may use AVX2.
+// Whether start_row and seed_row may use AVX2, and AVX-512.
 bool wide_rows_available() {
 #if defined(HAIR25D_FILL_AVX2)
   return __builtin_cpu_supports("avx2");
+#else
+  return false;
+#endif
+}
+bool widest_rows_available() {
+#if defined(HAIR25D_FILL_AVX2)
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("avx512f") &&
+         __builtin_cpu_supports("avx512bw");
 #else
   return false;
 #endif
@@ -175,7 +225,7 @@ bool wide_rows_available() {
 // own (the +2: seeds are found from their neighbours), its own rows get the
 // distances, owners and ties of one growth over the whole box.
 Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0, int own1,
-            int limit, bool wide) {
+            int limit, bool wide, bool widest) {
   const int w = labels.width();
   Growth g;
   Window& win = g.box;
@@ -197,7 +247,7 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
     std::uint16_t* out = dist + win.at(win.x0, win.y0 + y);
     out[-1] = 0;
     out[win.w] = 0;
-    start_row(row, win.w, out, wide);
+    start_row(row, win.w, out, wide, widest);
   }
   // Only region pixels on the edge of label 0 start a front, found a row at
   // a time (seed_row), in raster order. A front carries its owner, so a
@@ -209,7 +259,7 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
   for (int y = 0; y < win.h; ++y) {
     const int base = win.at(win.x0, win.y0 + y);
     seeds.clear();
-    seed_row(dist + base, stride, win.w, seeds, wide);
+    seed_row(dist + base, stride, win.w, seeds, wide, widest);
     const int* row = labels.data() + static_cast<std::size_t>(win.y0 + y) * w + win.x0;
     for (int x : seeds) ring[0].push_back({base + x, row[x]});
   }
@@ -253,7 +303,7 @@ namespace detail {
 
 OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
                                    int max_bands, int min_band_rows, bool wide_rows, Pool* pool,
-                                   LabelBox* filled_box) {
+                                   LabelBox* filled_box, bool widest_rows) {
   std::string why;
   if (!options.is_valid(&why)) throw Error("layering: " + why);
   if (labels.empty()) throw Error("layering: label map is empty; need at least one pixel");
@@ -281,6 +331,7 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   // the rows within reach (grow()), to the same result as one growth.
   const int reach_rows = limit / kOrtho + 2;
   const bool wide = wide_rows && wide_rows_available();
+  const bool widest = wide && widest_rows && widest_rows_available();
   const int bands = std::clamp(std::min(max_bands, box.h / std::max(1, min_band_rows)), 1, 64);
   std::vector<Growth> growth(bands);
   std::vector<std::vector<int>> meets(bands);
@@ -296,8 +347,9 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
         }
         const int own0 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * b / bands);
         const int own1 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * (b + 1) / bands);
-        growth[b] = grow(labels, box, std::max(box.y0, own0 - reach_rows),
-                         std::min(box.y0 + box.h, own1 + reach_rows), own0, own1, limit, wide);
+        growth[b] =
+            grow(labels, box, std::max(box.y0, own0 - reach_rows),
+                 std::min(box.y0 + box.h, own1 + reach_rows), own0, own1, limit, wide, widest);
         // Where fronts of two regions meet inside label-0 pixels, each side
         // has come about half a line width: the typical meeting distance
         // measures the lines. Each pair of 4-neighbours is counted once, from

@@ -20,13 +20,15 @@ inline constexpr int kMinFillBandRows = 96;
 // rows within the growth's reach: the result equals one growth over the
 // whole map (max_bands = 1) in every pixel, the line width and the radius.
 // With `wide_rows` (where the processor has AVX2) the rows are prepared
-// sixteen pixels at a time; the result is the same (for tests). The bands
-// run on `pool`'s helpers where one is given. With `filled_box`, the box of
-// the filled map's non-zero labels is written there (label_box's answer
-// on it, without reading the map again).
+// sixteen pixels at a time (thirty-two with `widest_rows` where it has
+// AVX-512F and BW); the result is the same (for tests). The bands run on
+// `pool`'s helpers where one is given. With `filled_box`, the box of the
+// filled map's non-zero labels is written there (label_box's answer on it,
+// without reading the map again).
 OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
                                    int max_bands, int min_band_rows, bool wide_rows = true,
-                                   Pool* pool = nullptr, LabelBox* filled_box = nullptr);
+                                   Pool* pool = nullptr, LabelBox* filled_box = nullptr,
+                                   bool widest_rows = true);
 
 // fill_outlines with its bands on `pool`'s helpers, and the filled map's box.
 inline OutlineFill fill_outlines(const LabelMap& labels, Pool* pool,

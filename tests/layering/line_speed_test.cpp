@@ -548,18 +548,23 @@ TEST(FillBands, GeneratedMapsFillAsOneGrowth) {
   }
 }
 
-// Rows prepared sixteen pixels at a time (AVX2) fill like rows prepared one
-// pixel at a time: maps narrower and wider than a block, lines of 1–5 px.
+// Rows prepared sixteen pixels at a time (AVX2) or thirty-two (AVX-512) fill
+// like rows prepared one pixel at a time: maps narrower and wider than a
+// block, lines of 1–5 px.
 TEST(FillBands, WideRowsFillLikeNarrowOnes) {
   std::mt19937 rng(17);
   for (int trial = 0; trial < 12; ++trial) {
     const int w = 5 + static_cast<int>(rng() % 200), h = 4 + static_cast<int>(rng() % 90);
     const LabelMap m = strand_map(w, h, 500 + trial, 1 + trial % 5);
     for (const int bands : {1, 3}) {
-      const OutlineFill wide = detail::fill_outlines_in_bands(m, {}, bands, 1, true);
+      const OutlineFill widest = detail::fill_outlines_in_bands(m, {}, bands, 1, true);
+      const OutlineFill wide =
+          detail::fill_outlines_in_bands(m, {}, bands, 1, true, nullptr, nullptr, false);
       const OutlineFill narrow = detail::fill_outlines_in_bands(m, {}, bands, 1, false);
       EXPECT_EQ(wide.line_width, narrow.line_width) << "trial " << trial;
       EXPECT_TRUE(wide.labels == narrow.labels) << "trial " << trial;
+      EXPECT_EQ(widest.line_width, narrow.line_width) << "trial " << trial;
+      EXPECT_TRUE(widest.labels == narrow.labels) << "trial " << trial;
     }
   }
 }
