@@ -237,29 +237,63 @@ __attribute__((target("avx2"))) Rgb3f colour_sum_avx2(const Rgba* centre, std::p
   return {out[0], out[1], out[2]};
 }
 
+// The column sums of kGroups groups of four pixels (groups g0 .. g0 +
+// kGroups − 1), each group's in one 512-bit register, weighted into `sum`
+// group by group. The groups' sums are independent chains of adds, run side
+// by side (one alone waits on each add's latency).
+template <int kGroups>
+__attribute__((target("avx2,avx512f"), optimize("fp-contract=off"))) inline __m128
+colour_groups_avx512(const Rgba* centre, std::ptrdiff_t iw, int r, int g0, const float* kernel,
+                     const float* column_weights, __m128 sum) {
+  __m512 c[kGroups];
+  const __m512 w0 = _mm512_set1_ps(kernel[r]);
+  for (int k = 0; k < kGroups; ++k)
+    c[k] = _mm512_mul_ps(w0, to_float_avx512(widen_avx2(centre + 4 * (g0 + k))));
+  const Rgba* above = centre + 4 * g0;
+  const Rgba* below = centre + 4 * g0;
+  for (int j = 1; j <= r; ++j) {
+    above -= iw;
+    below += iw;
+    const __m512 w = _mm512_set1_ps(kernel[r + j]);
+    for (int k = 0; k < kGroups; ++k) {
+      const __m256i pair = _mm256_add_epi16(widen_avx2(above + 4 * k), widen_avx2(below + 4 * k));
+      c[k] = _mm512_add_ps(c[k], _mm512_mul_ps(w, to_float_avx512(pair)));
+    }
+  }
+  for (int k = 0; k < kGroups; ++k) {
+    const float* wg = column_weights + 16 * (g0 + k);
+    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg), quarter_avx512<0>(c[k])));
+    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 4), quarter_avx512<1>(c[k])));
+    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 8), quarter_avx512<2>(c[k])));
+    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 12), quarter_avx512<3>(c[k])));
+  }
+  return sum;
+}
+
 // colour_sum_avx2 with the four pixels of a group in one 512-bit register:
 // every lane does the same float products and sums in the same order, and
 // fused multiply-adds (which AVX-512 has) are kept out, so the same floats.
+// Up to four groups' column sums are made side by side, then weighted in
+// the groups' order.
 __attribute__((target("avx2,avx512f"), optimize("fp-contract=off"))) Rgb3f colour_sum_avx512(
     const Rgba* centre, std::ptrdiff_t iw, int r, int groups, const float* kernel,
     const float* column_weights) {
   __m128 sum = _mm_setzero_ps();
-  for (int g = 0; g < groups; ++g) {
-    const Rgba* mid = centre + 4 * g;
-    __m512 c = _mm512_mul_ps(_mm512_set1_ps(kernel[r]), to_float_avx512(widen_avx2(mid)));
-    const Rgba* above = mid;
-    const Rgba* below = mid;
-    for (int j = 1; j <= r; ++j) {
-      above -= iw;
-      below += iw;
-      const __m256i pair = _mm256_add_epi16(widen_avx2(above), widen_avx2(below));
-      c = _mm512_add_ps(c, _mm512_mul_ps(_mm512_set1_ps(kernel[r + j]), to_float_avx512(pair)));
-    }
-    const float* wg = column_weights + 16 * g;
-    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg), quarter_avx512<0>(c)));
-    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 4), quarter_avx512<1>(c)));
-    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 8), quarter_avx512<2>(c)));
-    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_loadu_ps(wg + 12), quarter_avx512<3>(c)));
+  int g = 0;
+  for (; g + 4 <= groups; g += 4)
+    sum = colour_groups_avx512<4>(centre, iw, r, g, kernel, column_weights, sum);
+  switch (groups - g) {
+    case 3:
+      sum = colour_groups_avx512<3>(centre, iw, r, g, kernel, column_weights, sum);
+      break;
+    case 2:
+      sum = colour_groups_avx512<2>(centre, iw, r, g, kernel, column_weights, sum);
+      break;
+    case 1:
+      sum = colour_groups_avx512<1>(centre, iw, r, g, kernel, column_weights, sum);
+      break;
+    default:
+      break;
   }
   alignas(16) float out[4];
   _mm_store_ps(out, sum);

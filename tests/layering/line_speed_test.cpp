@@ -243,7 +243,9 @@ TEST(LineSpeed, WideVectorsSmoothColoursLikeNarrowOnes) {
   if (!LineResponse::wide_vectors_available()) GTEST_SKIP() << "no AVX2 on this processor";
   for (const bool translucent : {false, true}) {
     const Image image = test_image(151, 97, 12, translucent);
-    for (const double lw : {1.0, 4.6, 13.0}) {
+    // Kernels of 3, 4, 6, 9 and 14 groups of four columns (every remainder
+    // of four).
+    for (const double lw : {1.0, 3.0, 4.6, 8.0, 13.0}) {
       LineResponse wide(image, lw, 9, 5, 140, 93);
       wide.use_widest_vectors(false);
       LineResponse narrow(image, lw, 9, 5, 140, 93);
