@@ -52,7 +52,7 @@ inline Float4 colour_value(const Rgba& p) {
 // `translucent`, if given, gets a flag per row of `r`: does it hold a pixel
 // with alpha below 255?
 void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& grey,
-               std::uint8_t* translucent = nullptr, bool wide = false) {
+               std::uint8_t* translucent = nullptr, bool wide = false, bool widest = false) {
   static_assert(sizeof(Rgba) == 4);
   for (int y = r.y; y < r.y + r.height; ++y) {
     float* row = grey.ptr<float>(y) + r.x;
@@ -60,9 +60,10 @@ void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& g
     unsigned alpha = 255;
     int x = 0;
 #if defined(HAIR25D_LAYERING_AVX2)
-    if (wide) x = grey_row_avx2(src, r.width, row, &alpha);
+    if (wide && widest) x = grey_row_avx512(src, r.width, row, &alpha);
+    if (wide) x += grey_row_avx2(src + x, r.width - x, row + x, &alpha);
 #else
-    (void)wide;
+    (void)wide, (void)widest;
 #endif
 #if defined(__SSE2__)
     // Four pixels at a time, two per double vector: the same products and
@@ -106,7 +107,7 @@ void grey_into(const Image& image, int x0, int y0, const cv::Rect& r, cv::Mat& g
 cv::Mat grey_of(const Image& image, int x0, int y0, int w, int h) {
   cv::Mat grey(h, w, CV_32F);
   grey_into(image, x0, y0, cv::Rect(0, 0, w, h), grey, nullptr,
-            LineResponse::wide_vectors_available());
+            LineResponse::wide_vectors_available(), LineResponse::widest_vectors_available());
   return grey;
 }
 
@@ -203,10 +204,11 @@ float laplacian_at(const float* grey, int w, int h, std::ptrdiff_t stride, int x
   return s;
 }
 
-void grey_levels(const Image& image, int x0, int y0, int w, int h, float* out) {
+void grey_levels(const Image& image, int x0, int y0, int w, int h, float* out, bool widest) {
   cv::Mat grey(h, w, CV_32F, out);
   grey_into(image, x0, y0, cv::Rect(0, 0, w, h), grey, nullptr,
-            LineResponse::wide_vectors_available());
+            LineResponse::wide_vectors_available(),
+            widest && LineResponse::widest_vectors_available());
 }
 
 bool LineResponse::wide_vectors_available() {
@@ -244,7 +246,7 @@ LineResponse::LineResponse(const Image& image, const LabelMap* regions) : image_
   // while the caller fills outlines and traces boundaries. It writes only
   // raw_, its box and image_translucent_, which nothing reads before
   // prepare()'s blur or smooth() waits.
-  auto convert = [this, regions, w, h, wide = wide_vectors_] {
+  auto convert = [this, regions, w, h, wide = wide_vectors_, widest = widest_vectors_] {
     // Grey levels are needed in the window of the filled boundaries and a
     // kernel's reach around it: near the regions, within the outline fill's
     // reach and the window's margin at the line widths of most drawings
@@ -259,7 +261,7 @@ LineResponse::LineResponse(const Image& image, const LabelMap* regions) : image_
     }
     image_translucent_ = translucent_rows_of(*image_);
     cv::Mat raw(h, w, CV_32F, raw_.get());
-    grey_into(*image_, 0, 0, cv::Rect(x0, y0, x1 - x0, y1 - y0), raw, nullptr, wide);
+    grey_into(*image_, 0, 0, cv::Rect(x0, y0, x1 - x0, y1 - y0), raw, nullptr, wide, widest);
     raw_x0_ = x0, raw_y0_ = y0, raw_x1_ = x1, raw_y1_ = y1;
   };
   converting_ = worker_.submit(convert);
@@ -271,8 +273,8 @@ void LineResponse::ensure_raw(int x0, int y0, int x1, int y1) {
   x1 = std::min(image.width(), x1), y1 = std::min(image.height(), y1);
   if (x0 >= raw_x0_ && y0 >= raw_y0_ && x1 <= raw_x1_ && y1 <= raw_y1_) return;
   cv::Mat raw(image.height(), image.width(), CV_32F, raw_.get());
-  grey_into(image, 0, 0, cv::Rect(0, 0, image.width(), image.height()), raw, nullptr,
-            wide_vectors_);
+  grey_into(image, 0, 0, cv::Rect(0, 0, image.width(), image.height()), raw, nullptr, wide_vectors_,
+            widest_vectors_);
   raw_x0_ = 0, raw_y0_ = 0, raw_x1_ = image.width(), raw_y1_ = image.height();
 }
 

@@ -34,7 +34,9 @@ struct BoundaryLine {
 // Grey levels of [x0, x0 + w) × [y0, y0 + h) of `image` into `out` (w × h,
 // row-major): 0.299 r + 0.587 g + 0.114 b summed in double, as float;
 // translucent pixels blended over white paper. What LineResponse measures on.
-void grey_levels(const Image& image, int x0, int y0, int w, int h, float* out);
+// With `widest` false, not sixteen pixels at a time even where the processor
+// has AVX-512F (the same floats, for tests).
+void grey_levels(const Image& image, int x0, int y0, int w, int h, float* out, bool widest = true);
 
 // The 4-neighbour Laplacian at (x, y) of the w × h grey levels `grey` (rows
 // `stride` floats apart), edges reflected (BORDER_REFLECT_101): the float

@@ -114,6 +114,9 @@ struct PointSamples {
 // it did, a multiple of 8, and ANDs their alphas into `alpha`).
 __attribute__((target("avx2"))) int grey_row_avx2(const Rgba* src, int n, float* row,
                                                   unsigned* alpha);
+// The same sixteen pixels at a time (AVX-512F).
+__attribute__((target("avx2,avx512f"))) int grey_row_avx512(const Rgba* src, int n, float* row,
+                                                            unsigned* alpha);
 
 // smoothed_colour's opaque path, two pixels per register: the weighted sum
 // of `groups` groups of four columns.

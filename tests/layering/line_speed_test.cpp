@@ -704,7 +704,7 @@ TEST(DistinctLabels, EqualLabelMapLabels) {
   EXPECT_EQ(detail::distinct_labels(large, nullptr, false), large.labels());
 }
 
-// Eight or four pixels at a time (AVX2 where the processor has it, SSE2)
+// Sixteen, eight or four pixels at a time (AVX-512, AVX2, SSE2)
 // against the formula pixel by pixel, to the bit: odd widths (the tails),
 // windows, translucent rows.
 TEST(GreyLevels, EqualTheFormula) {
@@ -721,17 +721,20 @@ TEST(GreyLevels, EqualTheFormula) {
     for (const auto& [x0, y0, ww, hh] :
          {std::array{0, 0, w, h}, std::array{1, 2, w - 1, h - 2}, std::array{w / 3, h / 2, 2, 1}}) {
       if (ww <= 0 || hh <= 0) continue;
-      std::vector<float> got(static_cast<std::size_t>(ww) * hh);
-      detail::grey_levels(image, x0, y0, ww, hh, got.data());
-      int differ = 0;
-      for (int y = 0; y < hh; ++y)
-        for (int x = 0; x < ww; ++x) {
-          const Rgba& p = image.at(x0 + x, y0 + y);
-          const double a = p.a / 255.0, lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
-          const float want = static_cast<float>(p.a == 255 ? lum : a * lum + (1.0 - a) * 255.0);
-          differ += got[static_cast<std::size_t>(y) * ww + x] != want;
-        }
-      EXPECT_EQ(differ, 0) << w << "x" << h << " window at " << x0 << "," << y0;
+      for (const bool widest : {true, false}) {
+        std::vector<float> got(static_cast<std::size_t>(ww) * hh);
+        detail::grey_levels(image, x0, y0, ww, hh, got.data(), widest);
+        int differ = 0;
+        for (int y = 0; y < hh; ++y)
+          for (int x = 0; x < ww; ++x) {
+            const Rgba& p = image.at(x0 + x, y0 + y);
+            const double a = p.a / 255.0, lum = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
+            const float want = static_cast<float>(p.a == 255 ? lum : a * lum + (1.0 - a) * 255.0);
+            differ += got[static_cast<std::size_t>(y) * ww + x] != want;
+          }
+        EXPECT_EQ(differ, 0) << w << "x" << h << " window at " << x0 << "," << y0
+                             << (widest ? ", AVX-512 where there is one" : "");
+      }
     }
   }
 }
