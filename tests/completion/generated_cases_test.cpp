@@ -159,14 +159,15 @@ TEST(GeneratedCases, BackHairPiecesAreJoined) {
 
 // The generator hangs tails under the back hair, so the back hair's pieces
 // over them lie above a region; flat and two-tone seeds 112-115 (the seeds
-// with such pieces among 101-116) measured 0.875 / 0.574 (70 right of 122
-// pairs, 10 wrong; 0.805 while tails still took part in face joins), and
-// 0.681 / 0.508 when back hair over tails is no mass-join source or target
-// (face joins as then), so both floors fail without it.
+// with such pieces among 101-116) measured 0.881 / 0.607 (74 right of 122
+// pairs, 10 wrong); 0.875 / 0.574 while a lock lying on another lock kept
+// the back hair over it from being back hair (session 6, stacked locks:
+// the recall floor fails without them), 0.681 / 0.508 when back hair over
+// tails is no mass-join source or target, so both floors fail without it.
 TEST(GeneratedCases, BackHairOverTailsIsJoined) {
   const test::PairScore total =
       score_generated({generator::Shading::kFlat, generator::Shading::kTwoTone}, 112, 115, true);
-  expect_at_least("flat and two-tone, seeds 112-115", total, 0.85, 0.55);
+  expect_at_least("flat and two-tone, seeds 112-115", total, 0.86, 0.59);
 }
 
 // Screentone drawings, seeds 1-4: the tone's dots move an 11 x 11 window's
