@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace hair25d::layering::detail {
 namespace {
@@ -85,15 +87,22 @@ void add_island_neighbours(const BoundaryGraph& graph, double island_perimeter, 
     const int x = static_cast<int>(std::floor(p.x())), y = static_cast<int>(std::floor(p.y()));
     return x < 0 || y < 0 || x >= labels.width() || y >= labels.height() ? 0 : labels.at(x, y);
   };
+  // A boundary's labels across are read first, then looked at: the loads
+  // (far apart in the map, mostly cache misses) overlap instead of each
+  // waiting behind the branches on the one before.
+  std::vector<std::pair<int, int>> across;  // (left, right) per point looked across
   for (const Boundary& b : bs) {
     if (b.left <= 0 || b.right <= 0) continue;
     const int n = static_cast<int>(b.points.size());
+    across.clear();
     for (int i = 2; i + 2 < n; i += 2) {
       const Vec2 t = b.points[i + 2] - b.points[i - 2];
       if (t.squaredNorm() == 0) continue;
       const Vec2 normal = Vec2(t.y(), -t.x()).normalized();
-      const int l = label_at(b.points[i] + sliver_reach * normal);
-      const int r = label_at(b.points[i] - sliver_reach * normal);
+      across.emplace_back(label_at(b.points[i] + sliver_reach * normal),
+                          label_at(b.points[i] - sliver_reach * normal));
+    }
+    for (const auto& [l, r] : across) {
       // Beyond the right region lies r: a neighbour of the left one, and so on.
       if (r > 0 && r != b.left && r != b.right) {
         members.insert(members.end(), {std::min(b.left, r), std::max(b.left, r)});
