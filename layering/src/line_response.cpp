@@ -546,11 +546,13 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
   const double paint_far = r.paint_far;
   const double farthest = std::max({half, reach, paint_far}) + 1.0;
   // The steps of the centre and paper searches below, made as they make
-  // them, for the wide-vector path (padded to four by repeating the last).
+  // them, for the wide-vector paths: padded to eight (AVX-512) by repeating
+  // the last; AVX2 reads them up to the next multiple of four.
   std::vector<double> centre_steps;
   for (double s = -half; s <= half + 1e-9; s += 0.5) centre_steps.push_back(s);
   const int centre_count = static_cast<int>(centre_steps.size());
   while (centre_steps.size() % 8 != 0) centre_steps.push_back(centre_steps.back());
+  const int centre_count4 = (centre_count + 3) / 4 * 4;
   int paper_steps = 0;
   for (double s = 1.0; s <= reach; s += 1.0) ++paper_steps;
   double along = 0.0;
@@ -587,12 +589,12 @@ BoundaryLine LineResponse::measure(const Polyline& curve, double skip, const Lab
       double paper_left = -1.0, paper_right = -1.0;
 #if defined(HAIR25D_LAYERING_AVX2)
       if (decltype(fast)::value && wide_vectors_ && centre_count > 0) {
-        const int count = static_cast<int>(centre_steps.size());
         const PointSamples got =
             widest_vectors_ ? point_samples_avx512(grey, label, px, py, nx, ny, centre_steps.data(),
-                                                   count, paper_steps, left, right)
+                                                   static_cast<int>(centre_steps.size()),
+                                                   paper_steps, left, right)
                             : point_samples_avx2(grey, label, px, py, nx, ny, centre_steps.data(),
-                                                 count, paper_steps, left, right);
+                                                 centre_count4, paper_steps, left, right);
         centre = got.centre, paper_left = got.paper_left, paper_right = got.paper_right;
       } else
 #endif
