@@ -217,6 +217,33 @@ TEST(Completion, HiddenRootIsGrownAndGivesARootHint) {
   EXPECT_GT(s->root_hint->x(), 190);
 }
 
+// The strand of hidden_tip() whose hidden end lies under two occluders, one
+// above the other (§5.2: neighbouring occluding edges are merged).
+Drawing root_under_two_occluders() {
+  Drawing d = hidden_tip();
+  paint(
+      d, [](double x, double y) { return x > 190 && x < 310 && y >= 70 && y < 130; }, kFront, 3);
+  d.relations = {below(1, 2), below(1, 3)};
+  return d;
+}
+
+TEST(Completion, EdgesUnderNeighbouringOccludersAreGrownAsOne) {
+  const Drawing d = root_under_two_occluders();
+  const Result r = run(d, Vec2(420, 70));
+  // One root grown under both, not one under each occluder.
+  EXPECT_EQ(r.roots, 1);
+  EXPECT_EQ(r.tips, 0);
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  expect_under(r, *s, {2, 3});
+  int under[4] = {0, 0, 0, 0};
+  for (int y = 0; y < s->mask.height(); ++y)
+    for (int x = 0; x < s->mask.width(); ++x)
+      if (s->mask.at(x, y) == 2) ++under[r.regions.at(x + s->origin.x(), y + s->origin.y())];
+  EXPECT_GT(under[2], 50);
+  EXPECT_GT(under[3], 50);
+}
+
 TEST(Completion, BackgroundHasTheHairRemoved) {
   const Drawing d = crossed_bands();
   const Result r = run(d);
