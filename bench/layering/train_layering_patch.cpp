@@ -37,6 +37,7 @@ struct Record {
   int y = 0;          // +1 left above, -1 below, 0 same depth
   float learned = 0;  // the order model's log-odds as the layering uses them
   float length_widths = 0;
+  float equal = 0;  // the same-depth model's log-odds (files written with it only)
   std::vector<detail::Patch> ends;
 };
 
@@ -70,6 +71,7 @@ std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor)
       rec.y = t->second == Relation::kAbove ? 1 : t->second == Relation::kBelow ? -1 : 0;
       rec.learned = static_cast<float>(rep.learned);
       rec.length_widths = static_cast<float>(rep.length / r.line_width);
+      rec.equal = static_cast<float>(rep.equal);
       const hair25d::Polyline back(b.points.rbegin(), b.points.rend());
       rec.ends = detail::boundary_patches(
           r.labels, r.graph, b, layering::leaving_direction(b.points, reach),
@@ -83,7 +85,7 @@ std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor)
 
 void save(const std::string& path, const std::vector<Record>& records) {
   std::ofstream f(path, std::ios::binary);
-  const int n = static_cast<int>(records.size());
+  const int n = -static_cast<int>(records.size());  // negative: records hold `equal`
   f.write(reinterpret_cast<const char*>(&n), sizeof n);
   for (const Record& r : records) {
     const int ends = static_cast<int>(r.ends.size());
@@ -91,6 +93,7 @@ void save(const std::string& path, const std::vector<Record>& records) {
     f.write(reinterpret_cast<const char*>(&r.y), sizeof r.y);
     f.write(reinterpret_cast<const char*>(&r.learned), sizeof r.learned);
     f.write(reinterpret_cast<const char*>(&r.length_widths), sizeof r.length_widths);
+    f.write(reinterpret_cast<const char*>(&r.equal), sizeof r.equal);
     f.write(reinterpret_cast<const char*>(&ends), sizeof ends);
     for (const detail::Patch& p : r.ends)
       f.write(reinterpret_cast<const char*>(p.data()), sizeof(float) * p.size());
@@ -101,13 +104,15 @@ std::vector<Record> load(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   int n = 0;
   f.read(reinterpret_cast<char*>(&n), sizeof n);
-  std::vector<Record> out(std::max(n, 0));
+  const bool with_equal = n < 0;
+  std::vector<Record> out(std::abs(n));
   for (Record& r : out) {
     int ends = 0;
     f.read(reinterpret_cast<char*>(&r.drawing), sizeof r.drawing);
     f.read(reinterpret_cast<char*>(&r.y), sizeof r.y);
     f.read(reinterpret_cast<char*>(&r.learned), sizeof r.learned);
     f.read(reinterpret_cast<char*>(&r.length_widths), sizeof r.length_widths);
+    if (with_equal) f.read(reinterpret_cast<char*>(&r.equal), sizeof r.equal);
     f.read(reinterpret_cast<char*>(&ends), sizeof ends);
     r.ends.resize(std::clamp(ends, 0, 2));
     for (detail::Patch& p : r.ends)
@@ -117,26 +122,166 @@ std::vector<Record> load(const std::string& path) {
   return out;
 }
 
-// Two-weight logistic regression without intercept by Newton's method.
-Eigen::Vector2d fit_stage(const std::vector<Eigen::Vector2d>& x, const std::vector<double>& y,
-                          double ridge) {
-  Eigen::Vector2d w = Eigen::Vector2d::Zero();
+// Logistic regression by Newton's method (an intercept is a constant term),
+// each sample weighted.
+template <class V>
+V fit_stage(const std::vector<V>& x, const std::vector<double>& y, double ridge,
+            const std::vector<double>* weight = nullptr) {
+  const int d = x.empty() ? 0 : static_cast<int>(x.front().size());
+  V w = V::Zero(d);
   for (int it = 0; it < 50; ++it) {
-    Eigen::Vector2d grad = ridge * w;
-    Eigen::Matrix2d hess = ridge * Eigen::Matrix2d::Identity();
+    V grad = ridge * w;
+    Eigen::MatrixXd hess = ridge * Eigen::MatrixXd::Identity(d, d);
     for (std::size_t k = 0; k < x.size(); ++k) {
+      const double c = weight ? (*weight)[k] : 1.0;
       const double m = y[k] * w.dot(x[k]);
       const double p = 1.0 / (1.0 + std::exp(m));
-      grad -= y[k] * p * x[k];
-      hess += p * (1 - p) * x[k] * x[k].transpose();
+      grad -= c * y[k] * p * x[k];
+      hess += c * p * (1 - p) * x[k] * x[k].transpose();
     }
-    const Eigen::Vector2d step = hess.ldlt().solve(grad);
+    const V step = hess.ldlt().solve(grad);
     w -= step;
     if (step.norm() < 1e-12) break;
   }
   return w;
 }
 
+cv::Ptr<cv::ml::ANN_MLP> train_network(const cv::Mat& x, const cv::Mat& t, const cv::Mat& weight,
+                                       int hidden, int iterations, std::uint64_t seed) {
+  cv::setNumThreads(1);  // the same sums in the same order: the same weights
+  cv::theRNG().state = seed;
+  cv::Ptr<cv::ml::ANN_MLP> mlp = cv::ml::ANN_MLP::create();
+  const cv::Mat sizes = (cv::Mat_<int>(1, 3) << x.cols, hidden, 1);
+  mlp->setLayerSizes(sizes);
+  mlp->setActivationFunction(cv::ml::ANN_MLP::SIGMOID_SYM, 0, 0);
+  // RPROP's default first step (0.1) saturates 1024 inputs at once.
+  mlp->setTrainMethod(cv::ml::ANN_MLP::RPROP, 0.01);
+  mlp->setTermCriteria(
+      cv::TermCriteria(cv::TermCriteria::MAX_ITER + cv::TermCriteria::EPS, iterations, 1e-6));
+  const cv::Ptr<cv::ml::TrainData> data =
+      weight.empty() ? cv::ml::TrainData::create(x, cv::ml::ROW_SAMPLE, t)
+                     : cv::ml::TrainData::create(x, cv::ml::ROW_SAMPLE, t, cv::noArray(),
+                                                 cv::noArray(), weight);
+  mlp->train(data, cv::ml::ANN_MLP::NO_INPUT_SCALE + cv::ml::ANN_MLP::NO_OUTPUT_SCALE);
+  return mlp;
+}
+
+// A network trained on the first scales only weighs the others 0.
+void copy_weights(const cv::ml::ANN_MLP& mlp, detail::PatchNet& net) {
+  const cv::Mat l1 = mlp.getWeights(1), l2 = mlp.getWeights(2);  // (inputs + 1) × outputs
+  const int inputs = l1.rows - 1;
+  for (int h = 0; h < detail::kPatchHidden; ++h) {
+    for (int k = 0; k < detail::kPatchInputs; ++k)
+      net.w1[k][h] = k < inputs ? static_cast<float>(l1.at<double>(k, h)) : 0.0f;
+    net.b1[h] = static_cast<float>(l1.at<double>(inputs, h));
+    net.w2[h] = static_cast<float>(l2.at<double>(h, 0));
+  }
+  net.b2 = static_cast<float>(l2.at<double>(detail::kPatchHidden, 0));
+}
+
+void write_net(std::FILE* f, const detail::PatchNet& net) {
+  std::fprintf(f, "{{{");
+  for (int k = 0; k < detail::kPatchInputs; ++k) {
+    std::fprintf(f, "%s{", k ? ",\n       " : "");
+    for (int h = 0; h < detail::kPatchHidden; ++h)
+      std::fprintf(f, "%s%#.7gf", h ? (h % 8 ? ", " : ",\n        ") : "", net.w1[k][h]);
+    std::fprintf(f, "}");
+  }
+  std::fprintf(f, "}},\n      {");
+  for (int h = 0; h < detail::kPatchHidden; ++h)
+    std::fprintf(f, "%s%#.7gf", h ? ", " : "", net.b1[h]);
+  std::fprintf(f, "},\n      {");
+  for (int h = 0; h < detail::kPatchHidden; ++h)
+    std::fprintf(f, "%s%#.7gf", h ? ", " : "", net.w2[h]);
+  std::fprintf(f, "},\n      %#.7gf,\n      %.17g,\n      %.17g,\n      %.17g,\n      %.17g}",
+               net.b2, net.alpha, net.beta, net.order_weight, net.patch_weight);
+}
+
+// Same depth or ordered, from the same patches: a network whose score
+// h(P) + h(swapped P) does not change when A and B swap, trained on every
+// end of the first drawings' occluding boundaries (same-depth ones weighted
+// up to half the total), joined with the same-depth model's log-odds by a
+// logistic stage with intercept on the other drawings, weighted by
+// √(length / line width) as that model is trained.
+detail::SameDepthNet train_same_depth(const std::vector<Record>& records, int net_cases,
+                                      int iterations, std::uint64_t seed, std::string* report) {
+  int n = 0, positives = 0, total = 0;
+  for (const Record& r : records)
+    if (r.drawing < net_cases) n += static_cast<int>(r.ends.size()), ++total, positives += r.y == 0;
+  cv::Mat x(2 * n, detail::kPatchInputs, CV_32F), t(2 * n, 1, CV_32F), w(2 * n, 1, CV_32F);
+  int row = 0;
+  for (const Record& r : records) {
+    if (r.drawing >= net_cases) continue;
+    const double share = r.y == 0 ? positives : total - positives;
+    const float weight = static_cast<float>(total / (2.0 * std::max(share, 1.0)));
+    for (const detail::Patch& p : r.ends)
+      for (const detail::Patch& q : {p, detail::swapped(p)}) {
+        std::copy(q.begin(), q.end(), x.ptr<float>(row));
+        t.at<float>(row) = r.y == 0 ? 1.0f : -1.0f;
+        w.at<float>(row++) = weight;
+      }
+  }
+  std::printf("same depth: %d ends, %d of %d boundaries same depth ...\n", n, positives, total);
+  std::fflush(stdout);
+  const cv::Ptr<cv::ml::ANN_MLP> mlp =
+      train_network(x, t, w, detail::kPatchHidden, iterations, seed);
+  detail::SameDepthNet out;
+  copy_weights(*mlp, out.net);
+  {
+    // Our forward pass against OpenCV's on the first ends.
+    double worst = 0;
+    for (int k = 0; k < std::min(n, 2000); ++k) {
+      cv::Mat o;
+      mlp->predict(x.row(k), o);
+      const detail::Patch& p = *reinterpret_cast<const detail::Patch*>(x.ptr<float>(k));
+      worst = std::max(worst, std::abs(o.at<float>(0) - detail::patch_net(out.net, p)));
+    }
+    std::printf("same-depth network against OpenCV's forward pass: largest difference %.3g\n",
+                worst);
+  }
+  // The stage on the other drawings: (1, 6c log-odds, score) → same depth.
+  std::vector<Eigen::VectorXd> sx[2];
+  std::vector<double> sy[2], sw[2];
+  int k = 0;
+  for (const Record& r : records) {
+    if (r.drawing < net_cases) continue;
+    double q = 0;
+    for (const detail::Patch& p : r.ends) q += detail::patch_same_score(out.net, p);
+    Eigen::VectorXd v(3);
+    v << 1.0, r.equal, q;
+    const int half = k++ % 2;
+    sx[half].push_back(v);
+    sy[half].push_back(r.y == 0 ? 1.0 : -1.0);
+    sw[half].push_back(std::sqrt(std::max(r.length_widths, 0.0f)));
+  }
+  auto rate = [&](const Eigen::VectorXd& h, int half, bool model_only) {
+    double right = 0, sum = 0, found = 0, same = 0;
+    for (std::size_t i = 0; i < sx[half].size(); ++i) {
+      const double z = model_only ? sx[half][i][1] : h.dot(sx[half][i]);
+      sum += sw[half][i];
+      right += sw[half][i] * (z * sy[half][i] > 0);
+      if (sy[half][i] > 0) ++same, found += z > 0;
+    }
+    char line[200];
+    std::snprintf(line, sizeof line, "%.2f%% (same depth found %g of %g)", 100 * right / sum, found,
+                  same);
+    return std::string(line);
+  };
+  const Eigen::VectorXd h0 = fit_stage(sx[0], sy[0], 1.0, &sw[0]);
+  std::vector<Eigen::VectorXd> all = sx[0];
+  all.insert(all.end(), sx[1].begin(), sx[1].end());
+  std::vector<double> ally = sy[0], allw = sw[0];
+  ally.insert(ally.end(), sy[1].begin(), sy[1].end());
+  allw.insert(allw.end(), sw[1].begin(), sw[1].end());
+  const Eigen::VectorXd h = fit_stage(all, ally, 1.0, &allw);
+  out.intercept = h[0];
+  out.net.order_weight = h[1];
+  out.net.patch_weight = h[2];
+  *report = "same depth, weighted, other drawings' second half: model " + rate(h, 1, true) +
+            ", with patches (stage fitted on the first half) " + rate(h0, 1, false);
+  std::printf("%s\n", report->c_str());
+  return out;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -150,14 +295,17 @@ int main(int argc, char** argv) {
                  "the network learns from the first this many drawings, the second stage from "
                  "the rest");
   app.add_option("--iterations", iterations, "RPROP iterations")->check(CLI::PositiveNumber);
-  std::string method = "rprop";
-  app.add_option("--method", method, "rprop or backprop");
   int hidden = detail::kPatchHidden;
   double radius_factor = 1.0;
   std::vector<std::string> also;
   app.add_option("--hidden", hidden, "hidden units (only the built-in count can be written)");
   app.add_option("--radius-factor", radius_factor, "patch radius × the fit length (for --dump)");
   app.add_option("--also", also, "more patch files of the same ends, read side by side");
+  int same_iterations = 400, order_scales = 1;
+  app.add_option("--order-scales", order_scales, "scales the order network reads (1 or 2)")
+      ->check(CLI::Range(1, detail::kPatchScales));
+  app.add_option("--same-iterations", same_iterations, "RPROP iterations, same-depth network")
+      ->check(CLI::PositiveNumber);
   app.add_option("--dump", dump, "write the patches here and stop");
   app.add_option("--from", from, "read the patches from here instead of drawing");
   app.add_option("--write", write, "write layering/src/patch_weights.cpp here");
@@ -203,23 +351,14 @@ int main(int argc, char** argv) {
       t.at<float>(row++) = -static_cast<float>(records[r].y);
     }
   }
-  cv::setNumThreads(1);  // the same sums in the same order: the same weights
-  cv::theRNG().state = seed;
-  cv::Ptr<cv::ml::ANN_MLP> mlp = cv::ml::ANN_MLP::create();
-  const cv::Mat sizes = (cv::Mat_<int>(1, 3) << d, hidden, 1);
-  mlp->setLayerSizes(sizes);
-  mlp->setActivationFunction(cv::ml::ANN_MLP::SIGMOID_SYM, 0, 0);
-  if (method == "backprop")
-    mlp->setTrainMethod(cv::ml::ANN_MLP::BACKPROP, 0.001, 0.1);
-  else
-    mlp->setTrainMethod(cv::ml::ANN_MLP::RPROP, 0.01);
-  mlp->setTermCriteria(
-      cv::TermCriteria(cv::TermCriteria::MAX_ITER + cv::TermCriteria::EPS, iterations, 1e-6));
   std::printf("training the network on %d ends (%d samples, %d inputs, %d hidden) ...\n", n, 2 * n,
               d, hidden);
   std::fflush(stdout);
-  mlp->train(cv::ml::TrainData::create(x, cv::ml::ROW_SAMPLE, t),
-             cv::ml::ANN_MLP::NO_INPUT_SCALE + cv::ml::ANN_MLP::NO_OUTPUT_SCALE);
+  // The order network may read the fine scale only: the wide one carries the
+  // generator's strand shapes, which real drawings need not share.
+  const int used = parts == 1 ? order_scales * detail::kPatchScaleInputs : d;
+  const cv::Ptr<cv::ml::ANN_MLP> mlp =
+      train_network(x.colRange(0, used).clone(), t, cv::Mat(), hidden, iterations, seed);
 
   // Scores of every boundary by OpenCV's forward pass: Σ over its ends of
   // net(P) − net(swapped P).
@@ -234,7 +373,7 @@ int main(int argc, char** argv) {
         end_row(r, e, false, all.ptr<float>(k++));
         end_row(r, e, true, all.ptr<float>(k++));
       }
-    mlp->predict(all, out);
+    mlp->predict(all.colRange(0, used).clone(), out);
     k = 0;
     for (std::size_t r = 0; r < records.size(); ++r)
       for (std::size_t e = 0; e < records[r].ends.size(); ++e, k += 2)
@@ -243,14 +382,7 @@ int main(int argc, char** argv) {
   const bool writable = parts == 1 && hidden == detail::kPatchHidden;
   auto net = std::make_unique<detail::PatchNet>();
   if (writable) {
-    const cv::Mat l1 = mlp->getWeights(1), l2 = mlp->getWeights(2);  // (inputs + 1) × outputs
-    for (int h = 0; h < detail::kPatchHidden; ++h) {
-      for (int k = 0; k < detail::kPatchInputs; ++k)
-        net->w1[h][k] = static_cast<float>(l1.at<double>(k, h));
-      net->b1[h] = static_cast<float>(l1.at<double>(detail::kPatchInputs, h));
-      net->w2[h] = static_cast<float>(l2.at<double>(h, 0));
-    }
-    net->b2 = static_cast<float>(l2.at<double>(detail::kPatchHidden, 0));
+    copy_weights(*mlp, *net);
     // Our forward pass against OpenCV's.
     double worst = 0;
     for (std::size_t r = 0; r < records.size(); ++r) {
@@ -306,6 +438,22 @@ int main(int argc, char** argv) {
       "second stage: fitted on half, the other half %.1f%%; on all %.1f%% (weights %g %g)\n",
       100.0 * half_right / std::max<std::size_t>(bx.size(), 1),
       100.0 * all_right / std::max<std::size_t>(sx.size(), 1), w[0], w[1]);
+  {
+    // Exploratory: with products, so one trusts the other where it is unsure.
+    auto terms = [](const Eigen::Vector2d& v) {
+      Eigen::VectorXd t(4);
+      t << v[0], v[1], v[0] * std::abs(v[1]), v[1] * std::abs(v[0]);
+      return t;
+    };
+    std::vector<Eigen::VectorXd> tx, ux;
+    for (const auto& v : ax) tx.push_back(terms(v));
+    for (const auto& v : bx) ux.push_back(terms(v));
+    const Eigen::VectorXd h4 = fit_stage(tx, ay, 1.0);
+    int r4 = 0;
+    for (std::size_t k = 0; k < ux.size(); ++k) r4 += h4.dot(ux[k]) * by[k] > 0;
+    std::printf("with products: the other half %.1f%%\n",
+                100.0 * r4 / std::max<std::size_t>(ux.size(), 1));
+  }
   net->order_weight = w[0];
   net->patch_weight = w[1];
 
@@ -315,6 +463,9 @@ int main(int argc, char** argv) {
                  detail::kPatchHidden);
     return 1;
   }
+  std::string same_report;
+  const detail::SameDepthNet same =
+      train_same_depth(records, net_cases, same_iterations, seed, &same_report);
   std::FILE* f = std::fopen(write.c_str(), "w");
   if (f == nullptr) {
     std::fprintf(stderr, "cannot write %s\n", write.c_str());
@@ -326,30 +477,29 @@ int main(int argc, char** argv) {
                "// Written by bench/layering/train_layering_patch.cpp on generated drawings only\n"
                "// (never the annotated cases), Release build:\n"
                "//   train_layering_patch --cases %d --seed %llu --net-cases %d --iterations %d\n"
-               "// The network learnt from the %d ends of ordered boundaries of the first %d\n"
-               "// drawings (and each exchanged); boundary sign right there %.1f%%, on the\n"
-               "// other drawings %.1f%% (order model %.1f%%), where the second stage was fitted.\n"
+               "//     --same-iterations %d --order-scales %d\n"
+               "// Weights input-major (w1[input][hidden]). The network learnt from the %d\n"
+               "// ends of ordered boundaries of the first %d drawings (and each exchanged);\n"
+               "// boundary sign right there %.1f%%, on the other drawings %.1f%% (order\n"
+               "// model %.1f%%), where the second stage was fitted.\n"
                "const PatchNet& patch_weights() {\n"
-               "  static const PatchNet kNet = {\n      {{",
-               cases, static_cast<unsigned long long>(seed), net_cases, iterations, n, net_cases,
-               100.0 * in_right / std::max(in_total, 1),
+               "  static const PatchNet kNet = ",
+               cases, static_cast<unsigned long long>(seed), net_cases, iterations, same_iterations,
+               order_scales, n, net_cases, 100.0 * in_right / std::max(in_total, 1),
                100.0 * out_right_patch / std::max(out_total, 1),
                100.0 * out_right_order / std::max(out_total, 1));
-  for (int h = 0; h < detail::kPatchHidden; ++h) {
-    std::fprintf(f, "%s{", h ? ",\n       " : "");
-    for (int k = 0; k < detail::kPatchInputs; ++k)
-      std::fprintf(f, "%s%.7gf", k ? (k % 8 ? ", " : ",\n        ") : "", net->w1[h][k]);
-    std::fprintf(f, "}");
-  }
-  std::fprintf(f, "}},\n      {");
-  for (int h = 0; h < detail::kPatchHidden; ++h)
-    std::fprintf(f, "%s%.7gf", h ? ", " : "", net->b1[h]);
-  std::fprintf(f, "},\n      {");
-  for (int h = 0; h < detail::kPatchHidden; ++h)
-    std::fprintf(f, "%s%.7gf", h ? ", " : "", net->w2[h]);
-  std::fprintf(f, "},\n      %.7gf,\n      %.17g,\n      %.17g,\n      %.17g,\n      %.17g};\n",
-               net->b2, net->alpha, net->beta, net->order_weight, net->patch_weight);
-  std::fprintf(f, "  return kNet;\n}\n\n}  // namespace hair25d::layering::detail\n");
+  write_net(f, *net);
+  std::fprintf(f,
+               ";\n  return kNet;\n}\n\n"
+               "// Same program, same drawings: same depth or ordered, from every end of\n"
+               "// the first drawings' occluding boundaries; its stage on the others.\n"
+               "// %s.\n"
+               "const SameDepthNet& patch_same_weights() {\n"
+               "  static const SameDepthNet kNet = {",
+               same_report.c_str());
+  write_net(f, same.net);
+  std::fprintf(f, ", %.17g};\n  return kNet;\n}\n\n}  // namespace hair25d::layering::detail\n",
+               same.intercept);
   std::fclose(f);
   return 0;
 }

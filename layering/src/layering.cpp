@@ -442,6 +442,32 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     rep.equal_features = equal_features(e);
     rep.equal = equal_metric(rep.equal_features);
   });
+  // --- Junction patches (an addition): the label map about both ends of
+  // each occluding hair boundary, read by two small networks (patch_model.h):
+  // one for the order, joined with 6b's log-odds below, one for same depth,
+  // joined with 6c's here. ---
+  const bool use_patches = options.metric == Metric::kLearned && options.junction_patches;
+  auto patched = [&](int i) {
+    const Boundary& b = bs[i];
+    return out.boundaries[i].occluding && b.left > 0 && b.right > 0 && !b.closed();
+  };
+  if (use_patches) {
+    const detail::PatchNet& order_net = detail::patch_weights();
+    const detail::SameDepthNet& same = detail::patch_same_weights();
+    const double radius = detail::patch_radius(reach);
+    detail::parallel_for(&pool, nb, [&](int i) {
+      const Boundary& b = bs[i];
+      BoundaryReport& rep = out.boundaries[i];
+      if (!patched(i)) return;
+      for (const detail::Patch& p : detail::boundary_patches(
+               out.labels, graph, b, leave_start[i].near, leave_end[i].near, radius)) {
+        rep.patch += detail::patch_score(order_net, p);
+        rep.patch_equal += detail::patch_same_score(same.net, p);
+      }
+      rep.equal = same.intercept + same.net.order_weight * rep.equal +
+                  same.net.patch_weight * rep.patch_equal;
+    });
+  }
   // A drawn line between two halves of one strand ends on the strand's
   // outline in what looks like a T-junction, but nothing is occluded there:
   // like the ends of a non-occluding boundary (§4.1), the junctions of a
@@ -461,23 +487,14 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     }
   }
 
-  // --- Junction patches (an addition): the label map about both ends of
-  // each occluding hair boundary, read by a small network (patch_model.h),
-  // joined with the order model's log-odds by a second logistic stage. ---
-  const bool use_patches = options.metric == Metric::kLearned && options.junction_patches;
+  // The order network's score joins the order model's final log-odds.
   if (use_patches) {
     const detail::PatchNet& net = detail::patch_weights();
-    const double radius = detail::patch_radius(reach);
-    detail::parallel_for(nb, [&](int i) {
-      const Boundary& b = bs[i];
+    for (int i = 0; i < nb; ++i) {
       BoundaryReport& rep = out.boundaries[i];
-      rep.patch_log_odds = rep.learned;
-      if (!rep.occluding || b.left <= 0 || b.right <= 0 || b.closed()) return;
-      for (const detail::Patch& p : detail::boundary_patches(
-               out.labels, graph, b, leave_start[i].near, leave_end[i].near, radius))
-        rep.patch += detail::patch_score(net, p);
-      rep.patch_log_odds = net.order_weight * rep.learned + net.patch_weight * rep.patch;
-    });
+      rep.patch_log_odds =
+          patched(i) ? net.order_weight * rep.learned + net.patch_weight * rep.patch : rep.learned;
+    }
   }
 
   // --- Region context (an addition): each boundary's log-odds weighed with

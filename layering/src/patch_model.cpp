@@ -21,30 +21,33 @@ Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& dir
   const Vec2 left(u.y(), -u.x());
   const Vec2 v = a_on_left ? left : Vec2(-left);
   Patch p{};
-  const double cell = 2 * radius / kPatchCells;
-  for (int j = 0; j < kPatchCells; ++j) {
-    for (int i = 0; i < kPatchCells; ++i) {
-      float diff = 0, other = 0;
-      for (int sj = 0; sj < 2; ++sj) {
-        for (int si = 0; si < 2; ++si) {
-          const double cu = -radius + (i + 0.25 + 0.5 * si) * cell;
-          const double cv = -radius + (j + 0.25 + 0.5 * sj) * cell;
-          const Vec2 q = centre + cu * u + cv * v;
-          const int x = static_cast<int>(std::floor(q.x()));
-          const int y = static_cast<int>(std::floor(q.y()));
-          if (!labels.contains(x, y)) continue;
-          const int l = labels.at(x, y);
-          if (l == a)
-            diff += 0.25f;
-          else if (l == b)
-            diff -= 0.25f;
-          else if (l > 0)
-            other += 0.25f;
+  for (int scale = 0; scale < kPatchScales; ++scale) {
+    const double r = scale == 0 ? radius : kPatchWide * radius;
+    const double cell = 2 * r / kPatchCells;
+    for (int j = 0; j < kPatchCells; ++j) {
+      for (int i = 0; i < kPatchCells; ++i) {
+        float diff = 0, other = 0;
+        for (int sj = 0; sj < 2; ++sj) {
+          for (int si = 0; si < 2; ++si) {
+            const double cu = -r + (i + 0.25 + 0.5 * si) * cell;
+            const double cv = -r + (j + 0.25 + 0.5 * sj) * cell;
+            const Vec2 q = centre + cu * u + cv * v;
+            const int x = static_cast<int>(std::floor(q.x()));
+            const int y = static_cast<int>(std::floor(q.y()));
+            if (!labels.contains(x, y)) continue;
+            const int l = labels.at(x, y);
+            if (l == a)
+              diff += 0.25f;
+            else if (l == b)
+              diff -= 0.25f;
+            else if (l > 0)
+              other += 0.25f;
+          }
         }
+        const int k = scale * kPatchScaleInputs + (j * kPatchCells + i) * kPatchChannels;
+        p[k] = diff;
+        p[k + 1] = other;
       }
-      const int k = (j * kPatchCells + i) * kPatchChannels;
-      p[k] = diff;
-      p[k + 1] = other;
     }
   }
   return p;
@@ -52,33 +55,43 @@ Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& dir
 
 Patch swapped(const Patch& patch) {
   Patch s{};
-  for (int j = 0; j < kPatchCells; ++j)
-    for (int i = 0; i < kPatchCells; ++i) {
-      const int from = (j * kPatchCells + i) * kPatchChannels;
-      const int to = ((kPatchCells - 1 - j) * kPatchCells + i) * kPatchChannels;
-      s[to] = -patch[from];
-      s[to + 1] = patch[from + 1];
-    }
+  for (int scale = 0; scale < kPatchScales; ++scale)
+    for (int j = 0; j < kPatchCells; ++j)
+      for (int i = 0; i < kPatchCells; ++i) {
+        const int base = scale * kPatchScaleInputs;
+        const int from = base + (j * kPatchCells + i) * kPatchChannels;
+        const int to = base + ((kPatchCells - 1 - j) * kPatchCells + i) * kPatchChannels;
+        s[to] = -patch[from];
+        s[to + 1] = patch[from + 1];
+      }
   return s;
 }
 
 double patch_radius(double reach) { return reach; }
 
 double patch_net(const PatchNet& net, const Patch& patch) {
+  // Most cells are background or one region on the fine scale's far side:
+  // only non-zero inputs are added, each into all hidden sums at once.
+  std::array<float, kPatchHidden> sum = net.b1;
+  for (int k = 0; k < kPatchInputs; ++k) {
+    const float x = patch[k];
+    if (x == 0) continue;
+    const std::array<float, kPatchHidden>& w = net.w1[k];
+    for (int h = 0; h < kPatchHidden; ++h) sum[h] += w[h] * x;
+  }
   // β (1 − e^{−αx}) / (1 + e^{−αx}), written so that it cannot overflow.
   auto activation = [&](double x) { return net.beta * std::tanh(0.5 * net.alpha * x); };
   double out = net.b2;
-  for (int h = 0; h < kPatchHidden; ++h) {
-    const std::array<float, kPatchInputs>& w = net.w1[h];
-    float sum = 0;
-    for (int k = 0; k < kPatchInputs; ++k) sum += w[k] * patch[k];
-    out += net.w2[h] * activation(sum + net.b1[h]);
-  }
+  for (int h = 0; h < kPatchHidden; ++h) out += net.w2[h] * activation(sum[h]);
   return activation(out);
 }
 
 double patch_score(const PatchNet& net, const Patch& patch) {
   return patch_net(net, patch) - patch_net(net, swapped(patch));
+}
+
+double patch_same_score(const PatchNet& net, const Patch& patch) {
+  return patch_net(net, patch) + patch_net(net, swapped(patch));
 }
 
 std::vector<Patch> boundary_patches(const LabelMap& labels, const BoundaryGraph& graph,

@@ -13,22 +13,27 @@
 
 namespace hair25d::layering::detail {
 
-// A patch is kPatchCells × kPatchCells cells about a junction, u along the
-// boundary leaving the junction (+u), v toward region A's side (+v), two
-// channels per cell (cell-major): the share of region A minus that of region
-// B, and the share of other hair regions (background and the outside of the
-// image are 0 in both). Each cell is the mean of 2 × 2 point samples.
+// A patch is kPatchCells × kPatchCells cells about a junction at each of
+// kPatchScales scales (radius r and kPatchWide × r: the junction itself and
+// the regions' shapes around it), u along the boundary leaving the junction
+// (+u), v toward region A's side (+v), two channels per cell (scale-major,
+// then cell-major): the share of region A minus that of region B, and the
+// share of other hair regions (background and the outside of the image are 0
+// in both). Each cell is the mean of 2 × 2 point samples.
 inline constexpr int kPatchCells = 16;
 inline constexpr int kPatchChannels = 2;
-inline constexpr int kPatchInputs = kPatchCells * kPatchCells * kPatchChannels;
+inline constexpr int kPatchScales = 2;
+inline constexpr double kPatchWide = 3.0;
+inline constexpr int kPatchScaleInputs = kPatchCells * kPatchCells * kPatchChannels;
+inline constexpr int kPatchInputs = kPatchScales * kPatchScaleInputs;
 using Patch = std::array<float, kPatchInputs>;
 
-// The cells cover [−radius, radius]² about `centre` (pixel-corner
-// coordinates, as junction positions). `direction` is the unit direction in
-// which the boundary leaves the junction; `a_on_left` says whether region a
-// lies on the left of that walk as seen on the screen (x right, y down).
-// Throws hair25d::Error for a radius that is not finite and > 0 or a
-// direction that is not a finite non-zero vector.
+// The cells of the first scale cover [−radius, radius]² about `centre`
+// (pixel-corner coordinates, as junction positions). `direction` is the unit
+// direction in which the boundary leaves the junction; `a_on_left` says
+// whether region a lies on the left of that walk as seen on the screen (x
+// right, y down). Throws hair25d::Error for a radius that is not finite and
+// > 0 or a direction that is not a finite non-zero vector.
 Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& direction, int a,
                      int b, bool a_on_left, double radius);
 
@@ -36,15 +41,16 @@ Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& dir
 // u axis, the A − B channel negated.
 Patch swapped(const Patch& patch);
 
-// The patch radius for a drawing's line width and junction fit length: the
-// fit length (layering's `reach`), where the sectors are measured.
+// The patch radius for a drawing's junction fit length (layering's `reach`,
+// where the sectors are measured).
 double patch_radius(double reach);
 
 // A one-hidden-layer perceptron in OpenCV's ANN_MLP form: every unit,
 // the output included, applies β (1 − e^{−αx}) / (1 + e^{−αx}).
 inline constexpr int kPatchHidden = 16;
 struct PatchNet {
-  std::array<std::array<float, kPatchInputs>, kPatchHidden> w1{};
+  // Input-major: w1[k][h] weighs input k into hidden unit h.
+  std::array<std::array<float, kPatchHidden>, kPatchInputs> w1{};
   std::array<float, kPatchHidden> b1{};
   std::array<float, kPatchHidden> w2{};
   float b2 = 0;
@@ -54,12 +60,23 @@ struct PatchNet {
   double patch_weight = 0.0;
 };
 
+// The same form for "same depth or ordered", whose score does not change
+// when A and B swap; its stage: log-odds of same depth = intercept +
+// order_weight · (6c log-odds) + patch_weight · score.
+struct SameDepthNet {
+  PatchNet net;
+  double intercept = 0.0;
+};
+
 // The network's raw output for one patch.
 double patch_net(const PatchNet& net, const Patch& patch);
 
 // Antisymmetric by construction: net(P) − net(swapped(P)), so exchanging A and
 // B flips its sign exactly and it cannot prefer a side.
 double patch_score(const PatchNet& net, const Patch& patch);
+
+// Symmetric by construction: net(P) + net(swapped(P)).
+double patch_same_score(const PatchNet& net, const Patch& patch);
 
 // The patches of both ends of boundary `b` of `graph` (none for a closed
 // loop; an end is left out when its direction is zero), region A = b.left.
@@ -70,5 +87,6 @@ std::vector<Patch> boundary_patches(const LabelMap& labels, const BoundaryGraph&
 
 // The weights in use (layering/src/patch_weights.cpp says how they were made).
 const PatchNet& patch_weights();
+const SameDepthNet& patch_same_weights();
 
 }  // namespace hair25d::layering::detail

@@ -89,6 +89,17 @@ TEST(PatchScore, ExchangingTheRegionsFlipsTheSignExactly) {
   EXPECT_GT(nonzero, 15);
 }
 
+TEST(PatchScore, TheSameDepthScoreIgnoresWhichSideIsWhich) {
+  const PatchNet& net = patch_same_weights().net;
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> u(-1, 1);
+  for (int k = 0; k < 20; ++k) {
+    Patch p;
+    for (float& v : p) v = u(rng);
+    EXPECT_EQ(patch_same_score(net, swapped(p)), patch_same_score(net, p));
+  }
+}
+
 TEST(PatchScore, WalkingTheBoundaryBackwardsFlipsTheSignExactly) {
   const LabelMap m = t_junction();
   const BoundaryGraph g = build_boundary_graph(m);
@@ -113,6 +124,9 @@ TEST(PatchScore, WalkingTheBoundaryBackwardsFlipsTheSignExactly) {
     const double s = patch_score(net, forward[0]) + patch_score(net, forward[1]);
     const double t = patch_score(net, backward[1]) + patch_score(net, backward[0]);
     EXPECT_EQ(t, -s);
+    const PatchNet& same = patch_same_weights().net;
+    EXPECT_EQ(patch_same_score(same, backward[1]) + patch_same_score(same, backward[0]),
+              patch_same_score(same, forward[0]) + patch_same_score(same, forward[1]));
   }
   EXPECT_GE(hair, 2);
 }

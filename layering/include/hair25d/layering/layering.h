@@ -105,9 +105,11 @@ struct BoundaryReport {
   double context_log_odds = 0.0;  // context_metric(learned, context)
   double patch = 0.0;             // junction patch score, both ends, left above
   double patch_log_odds = 0.0;    // learned joined with the patch score
+  double patch_equal = 0.0;       // junction patch score of same depth, both ends
   EqualCues equal_cues;           // what the same-depth model is computed from
   EqualFeatures equal_features{};
-  double equal = 0.0;  // equal_metric(equal_features), log-odds of same depth
+  double equal = 0.0;  // equal_metric(equal_features) (joined with patch_equal when
+                       // junction_patches), log-odds of same depth
   int state = 0;       // +1 left above, −1 right above, 0 no state
 };
 
