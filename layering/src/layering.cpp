@@ -324,11 +324,11 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
         // All the labels first: the loads (rows apart in the map, mostly
         // cache misses) overlap instead of each waiting for the counting of
         // the one before.
-        labels_on.clear();
-        for (const Vec2& d : circle) {
-          const int x = static_cast<int>(std::floor(centre.x() + d.x()));
-          const int y = static_cast<int>(std::floor(centre.y() + d.y()));
-          labels_on.push_back(lab.contains(x, y) ? lab.at(x, y) : kOutsideLabel);
+        labels_on.resize(circle.size());
+        for (int k = 0; k < samples; ++k) {
+          const int x = static_cast<int>(std::floor(centre.x() + circle[k].x()));
+          const int y = static_cast<int>(std::floor(centre.y() + circle[k].y()));
+          labels_on[k] = lab.contains(x, y) ? lab.at(x, y) : kOutsideLabel;
         }
         count.clear();
         for (const int label : labels_on) {

@@ -263,6 +263,9 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
     const int* row = labels.data() + static_cast<std::size_t>(win.y0 + y) * w + win.x0;
     for (int x : seeds) ring[0].push_back({base + x, row[x]});
   }
+  // Every bucket holds about as many fronts as there are seeds (one ring
+  // of pixels per step): reserving spares most regrowth and its copies.
+  for (std::size_t k = 1; k < ring.size(); ++k) ring[k].reserve(ring[0].size());
   // Neighbour offsets: right, left, down, up, then the diagonals.
   const std::array<int, 4> ortho = {1, -1, stride, -stride};
   const std::array<int, 4> diag = {stride + 1, -stride + 1, stride - 1, -stride - 1};
