@@ -1,5 +1,7 @@
 #include "patch_model.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -16,37 +18,64 @@ Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& dir
   if (!(std::isfinite(norm) && norm > 0))
     throw Error("layering::junction_patch: direction (" + std::to_string(direction.x()) + ", " +
                 std::to_string(direction.y()) + ") must be a finite non-zero vector");
+  if (!(centre.allFinite() && centre.cwiseAbs().maxCoeff() < 1e8 && radius < 1e6))
+    throw Error("layering::junction_patch: centre (" + std::to_string(centre.x()) + ", " +
+                std::to_string(centre.y()) + ") and radius " + std::to_string(radius) +
+                " must lie within 1e8 and 1e6 pixels");
   const Vec2 u = direction / norm;
   // On the screen (y down) the left of travel u is (u.y, −u.x).
   const Vec2 left(u.y(), -u.x());
   const Vec2 v = a_on_left ? left : Vec2(-left);
   Patch p{};
+  // Sample offsets along u and v, products taken once: each sample point is
+  // then (centre + cu·u) + cv·v, the same sums as written out per sample.
+  constexpr int kSamples = 2 * kPatchCells;
+  std::array<double, kSamples> ax{}, ay{}, bx{}, by{};
   for (int scale = 0; scale < kPatchScales; ++scale) {
     const double r = scale == 0 ? radius : kPatchWide * radius;
     const double cell = 2 * r / kPatchCells;
-    for (int j = 0; j < kPatchCells; ++j) {
-      for (int i = 0; i < kPatchCells; ++i) {
-        float diff = 0, other = 0;
-        for (int sj = 0; sj < 2; ++sj) {
-          for (int si = 0; si < 2; ++si) {
-            const double cu = -r + (i + 0.25 + 0.5 * si) * cell;
-            const double cv = -r + (j + 0.25 + 0.5 * sj) * cell;
-            const Vec2 q = centre + cu * u + cv * v;
-            const int x = static_cast<int>(std::floor(q.x()));
-            const int y = static_cast<int>(std::floor(q.y()));
-            if (!labels.contains(x, y)) continue;
-            const int l = labels.at(x, y);
-            if (l == a)
-              diff += 0.25f;
-            else if (l == b)
-              diff -= 0.25f;
-            else if (l > 0)
-              other += 0.25f;
-          }
+    for (int k = 0; k < kSamples; ++k) {
+      const double c = -r + (k / 2 + 0.25 + 0.5 * (k % 2)) * cell;
+      ax[k] = centre.x() + c * u.x();
+      ay[k] = centre.y() + c * u.y();
+      bx[k] = c * v.x();
+      by[k] = c * v.y();
+    }
+    float* out = p.data() + scale * kPatchScaleInputs;
+    auto add = [&](float* c, int l) {
+      if (l == a)
+        c[0] += 0.25f;
+      else if (l == b)
+        c[0] -= 0.25f;
+      else if (l > 0)
+        c[1] += 0.25f;
+    };
+    const auto [ax0, ax1] = std::minmax_element(ax.begin(), ax.end());
+    const auto [ay0, ay1] = std::minmax_element(ay.begin(), ay.end());
+    const auto [bx0, bx1] = std::minmax_element(bx.begin(), bx.end());
+    const auto [by0, by1] = std::minmax_element(by.begin(), by.end());
+    // Every sample a pixel or more inside the map (most junctions): no
+    // bounds checks, and truncation is the floor of a positive value.
+    const bool inside = *ax0 + *bx0 >= 1 && *ay0 + *by0 >= 1 && *ax1 + *bx1 < labels.width() - 1 &&
+                        *ay1 + *by1 < labels.height() - 1;
+    for (int sj = 0; sj < kSamples; ++sj) {
+      float* row = out + (sj / 2) * kPatchCells * kPatchChannels;
+      if (inside) {
+        for (int si = 0; si < kSamples; ++si) {
+          const int x = static_cast<int>(ax[si] + bx[sj]);
+          const int y = static_cast<int>(ay[si] + by[sj]);
+          add(row + (si / 2) * kPatchChannels, labels.at(x, y));
         }
-        const int k = scale * kPatchScaleInputs + (j * kPatchCells + i) * kPatchChannels;
-        p[k] = diff;
-        p[k + 1] = other;
+        continue;
+      }
+      for (int si = 0; si < kSamples; ++si) {
+        const double qx = ax[si] + bx[sj];
+        const double qy = ay[si] + by[sj];
+        // floor without a library call (the values are within 1e8)
+        int x = static_cast<int>(qx), y = static_cast<int>(qy);
+        x -= qx < x;
+        y -= qy < y;
+        if (labels.contains(x, y)) add(row + (si / 2) * kPatchChannels, labels.at(x, y));
       }
     }
   }

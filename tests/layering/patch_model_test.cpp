@@ -51,6 +51,60 @@ TEST(JunctionPatch, RasterisesTheTJunctionInTheBoundarysFrame) {
   EXPECT_EQ(cell(edge, 0, 0, 1), 0.0f);
 }
 
+// The patch as its header defines it, sample by sample.
+Patch reference_patch(const LabelMap& labels, const Vec2& centre, const Vec2& direction, int a,
+                      int b, bool a_on_left, double radius) {
+  const Vec2 u = direction.normalized();
+  const Vec2 left(u.y(), -u.x());
+  const Vec2 v = a_on_left ? left : Vec2(-left);
+  Patch p{};
+  for (int scale = 0; scale < kPatchScales; ++scale) {
+    const double r = scale == 0 ? radius : kPatchWide * radius;
+    const double cell = 2 * r / kPatchCells;
+    for (int j = 0; j < kPatchCells; ++j)
+      for (int i = 0; i < kPatchCells; ++i)
+        for (int sj = 0; sj < 2; ++sj)
+          for (int si = 0; si < 2; ++si) {
+            const double cu = -r + (i + 0.25 + 0.5 * si) * cell;
+            const double cv = -r + (j + 0.25 + 0.5 * sj) * cell;
+            const Vec2 q = centre + cu * u + cv * v;
+            const int x = static_cast<int>(std::floor(q.x()));
+            const int y = static_cast<int>(std::floor(q.y()));
+            if (!labels.contains(x, y)) continue;
+            const int l = labels.at(x, y);
+            const int k = scale * kPatchScaleInputs + (j * kPatchCells + i) * kPatchChannels;
+            if (l == a)
+              p[k] += 0.25f;
+            else if (l == b)
+              p[k] -= 0.25f;
+            else if (l > 0)
+              p[k + 1] += 0.25f;
+          }
+  }
+  return p;
+}
+
+TEST(JunctionPatch, EqualsTheSampleBySampleDefinition) {
+  // Random blobs of 5 labels on a non-square map, random junctions,
+  // directions and radii, some reaching past the border.
+  std::mt19937 rng(3);
+  LabelMap m(53, 37, 0);
+  for (int y = 0; y < 37; ++y)
+    for (int x = 0; x < 53; ++x) m.at(x, y) = (x / 9 + 2 * (y / 7) + (x * y) % 3) % 5;
+  std::uniform_real_distribution<double> px(-5, 58), py(-5, 42), angle(0, 6.3), radius(1, 20);
+  for (int k = 0; k < 50; ++k) {
+    const Vec2 c(px(rng), py(rng));
+    const double t = angle(rng);
+    const Vec2 d(std::cos(t), std::sin(t));
+    const double r = radius(rng);
+    const bool left = k % 2 == 0;
+    EXPECT_EQ(junction_patch(m, c, d, 1, 2, left, r), reference_patch(m, c, d, 1, 2, left, r));
+  }
+  // Integer centres and axis directions put samples on pixel edges.
+  EXPECT_EQ(junction_patch(m, Vec2(20, 15), Vec2(0, 3), 3, 4, true, 8.0),
+            reference_patch(m, Vec2(20, 15), Vec2(0, 3), 3, 4, true, 8.0));
+}
+
 TEST(JunctionPatch, MixedCellsHoldShares) {
   // Radius 16: two pixels per cell, 2 × 2 samples, so the cell across x = 20
   // still falls on one side; a diagonal direction gives shares in quarters.
@@ -150,6 +204,8 @@ TEST(JunctionPatch, BadInputThrows) {
   EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 2, true, nan), Error);
   EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(0, 0), 1, 2, true, 8.0), Error);
   EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(nan, 1), 1, 2, true, 8.0), Error);
+  EXPECT_THROW(junction_patch(m, Vec2(nan, 15), Vec2(1, 0), 1, 2, true, 8.0), Error);
+  EXPECT_THROW(junction_patch(m, Vec2(1e12, 15), Vec2(1, 0), 1, 2, true, 8.0), Error);
 }
 
 TEST(Layering, PatchesJoinTheLearnedLogOddsOnlyWhenAsked) {
