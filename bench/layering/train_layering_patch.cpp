@@ -48,7 +48,11 @@ std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor)
     layering::Result r;
     try {
       c = hair25d::generator::generate_case(hair25d::layering_training::training_style(i, seed));
-      r = layering::layer_regions(c.image, c.regions);
+      // Without the patch models, so the order and same-depth log-odds are
+      // those the patch stages are joined with, whatever weights are built in.
+      layering::Options options;
+      options.junction_patches = false;
+      r = layering::layer_regions(c.image, c.regions, options);
     } catch (const hair25d::Error& e) {
       std::fprintf(stderr, "case %d skipped: %s\n", i, e.what());
       continue;

@@ -455,14 +455,17 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     const detail::PatchNet& order_net = detail::patch_weights();
     const detail::SameDepthNet& same = detail::patch_same_weights();
     const double radius = detail::patch_radius(reach);
+    const int order_inputs = detail::patch_inputs_used(order_net);
     detail::parallel_for(&pool, nb, [&](int i) {
       const Boundary& b = bs[i];
       BoundaryReport& rep = out.boundaries[i];
       if (!patched(i)) return;
       for (const detail::Patch& p : detail::boundary_patches(
                out.labels, graph, b, leave_start[i].near, leave_end[i].near, radius)) {
-        rep.patch += detail::patch_score(order_net, p);
-        rep.patch_equal += detail::patch_same_score(same.net, p);
+        const detail::PatchScores scores =
+            detail::patch_scores(order_net, order_inputs, same.net, p);
+        rep.patch += scores.order;
+        rep.patch_equal += scores.same;
       }
       rep.equal = same.intercept + same.net.order_weight * rep.equal +
                   same.net.patch_weight * rep.patch_equal;

@@ -98,11 +98,11 @@ Patch swapped(const Patch& patch) {
 
 double patch_radius(double reach) { return reach; }
 
-double patch_net(const PatchNet& net, const Patch& patch) {
+double patch_net(const PatchNet& net, const Patch& patch, int inputs) {
   // Most cells are background or one region on the fine scale's far side:
   // only non-zero inputs are added, each into all hidden sums at once.
   std::array<float, kPatchHidden> sum = net.b1;
-  for (int k = 0; k < kPatchInputs; ++k) {
+  for (int k = 0; k < inputs; ++k) {
     const float x = patch[k];
     if (x == 0) continue;
     const std::array<float, kPatchHidden>& w = net.w1[k];
@@ -121,6 +121,21 @@ double patch_score(const PatchNet& net, const Patch& patch) {
 
 double patch_same_score(const PatchNet& net, const Patch& patch) {
   return patch_net(net, patch) + patch_net(net, swapped(patch));
+}
+
+int patch_inputs_used(const PatchNet& net) {
+  int used = 0;
+  for (int k = 0; k < kPatchInputs; ++k)
+    for (float w : net.w1[k])
+      if (w != 0) used = k + 1;
+  return used;
+}
+
+PatchScores patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
+                         const Patch& patch) {
+  const Patch other = swapped(patch);
+  return {patch_net(order, patch, order_inputs) - patch_net(order, other, order_inputs),
+          patch_net(same, patch) + patch_net(same, other)};
 }
 
 std::vector<Patch> boundary_patches(const LabelMap& labels, const BoundaryGraph& graph,

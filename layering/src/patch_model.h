@@ -68,8 +68,13 @@ struct SameDepthNet {
   double intercept = 0.0;
 };
 
-// The network's raw output for one patch.
-double patch_net(const PatchNet& net, const Patch& patch);
+// The network's raw output for one patch, reading its first `inputs` inputs
+// (those past the last one with a non-zero weight add nothing).
+double patch_net(const PatchNet& net, const Patch& patch, int inputs = kPatchInputs);
+
+// One past the last input with a non-zero weight (the order network reads
+// the fine scale only).
+int patch_inputs_used(const PatchNet& net);
 
 // Antisymmetric by construction: net(P) − net(swapped(P)), so exchanging A and
 // B flips its sign exactly and it cannot prefer a side.
@@ -77,6 +82,15 @@ double patch_score(const PatchNet& net, const Patch& patch);
 
 // Symmetric by construction: net(P) + net(swapped(P)).
 double patch_same_score(const PatchNet& net, const Patch& patch);
+
+// Both scores of one patch, exchanging it once: patch_score(order, patch)
+// and patch_same_score(same, patch), to the bit; `order_inputs` is
+// patch_inputs_used(order).
+struct PatchScores {
+  double order = 0.0, same = 0.0;
+};
+PatchScores patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
+                         const Patch& patch);
 
 // The patches of both ends of boundary `b` of `graph` (none for a closed
 // loop; an end is left out when its direction is zero), region A = b.left.

@@ -154,6 +154,25 @@ TEST(PatchScore, TheSameDepthScoreIgnoresWhichSideIsWhich) {
   }
 }
 
+TEST(PatchScore, BothScoresAtOnceAreTheSameScores) {
+  const PatchNet& order = patch_weights();
+  const PatchNet& same = patch_same_weights().net;
+  const int used = patch_inputs_used(order);
+  EXPECT_GT(used, 0);
+  EXPECT_LE(used, kPatchInputs);
+  for (int k = used; k < kPatchInputs; ++k)
+    for (float w : order.w1[k]) ASSERT_EQ(w, 0.0f);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> u(-1, 1);
+  for (int k = 0; k < 10; ++k) {
+    Patch p;
+    for (float& v : p) v = u(rng);
+    const PatchScores s = patch_scores(order, used, same, p);
+    EXPECT_EQ(s.order, patch_score(order, p));
+    EXPECT_EQ(s.same, patch_same_score(same, p));
+  }
+}
+
 TEST(PatchScore, WalkingTheBoundaryBackwardsFlipsTheSignExactly) {
   const LabelMap m = t_junction();
   const BoundaryGraph g = build_boundary_graph(m);
