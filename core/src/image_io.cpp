@@ -90,8 +90,8 @@ Image to_rgba(const T* values, int w, int h, int channels, int alpha, Convert co
 
 int default_alpha(int channels) { return channels == 2 || channels >= 4 ? channels - 1 : -1; }
 
-png::Pixels read_png(const fs::path& path, const ImageLimits& limits) {
-  return png::read(path, [&](const png::Header& h) {
+png::Pixels read_png(const fs::path& path, const ImageLimits& limits, png::Samples samples) {
+  return png::read(path, samples, [&](const png::Header& h) {
     check_header(path, h.width, h.height, h.channels, limits);
   });
 }
@@ -163,7 +163,7 @@ void write_pixels(const fs::path& target, int w, int h, int channels, bool sixte
 Image load_image(const fs::path& path, const ImageLimits& limits) {
   check_file(path, limits);
   if (png::has_png_signature(path)) {
-    const png::Pixels p = read_png(path, limits);
+    const png::Pixels p = read_png(path, limits, png::Samples::kScaled);
     const png::Header& h = p.header;
     const int alpha = default_alpha(h.channels);
     if (h.bit_depth == 16)
@@ -179,7 +179,7 @@ Image load_image(const fs::path& path, const ImageLimits& limits) {
 LabelMap load_label_map(const fs::path& path, const ImageLimits& limits) {
   check_file(path, limits);
   if (png::has_png_signature(path)) {
-    const png::Pixels p = read_png(path, limits);
+    const png::Pixels p = read_png(path, limits, png::Samples::kStored);
     const png::Header& h = p.header;
     if (h.channels != 1) {
       throw Error(path.string() + ": " + std::to_string(h.channels) +

@@ -42,14 +42,22 @@ struct WriteStructs {
 
 // Sets up the same expansions OpenImageIO applies (palette to RGB, 1/2/4-bit
 // grey to 8 bits, tRNS to alpha); no gamma conversion: values stay as stored.
-bool read_info(png_structp png, png_infop info, std::FILE* file, Header* header) {
+// Label maps unpack 1/2/4-bit grey to one byte per pixel without scaling:
+// PNG optimisers store maps of <= 15 labels as 4-bit grey, and scaling would
+// turn label 1 into 17.
+bool read_info(png_structp png, png_infop info, std::FILE* file, Samples samples, Header* header) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_init_io(png, file);
   png_read_info(png, info);
   const int colour = png_get_color_type(png, info);
   const int depth = png_get_bit_depth(png, info);
   if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-  if (colour == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+  if (colour == PNG_COLOR_TYPE_GRAY && depth < 8) {
+    if (samples == Samples::kStored)
+      png_set_packing(png);
+    else
+      png_set_expand_gray_1_2_4_to_8(png);
+  }
   if (png_get_valid(png, info, PNG_INFO_tRNS)) png_set_tRNS_to_alpha(png);
   if (depth == 16 && std::endian::native == std::endian::little) png_set_swap(png);
   png_set_interlace_handling(png);
@@ -100,8 +108,8 @@ bool has_png_signature(const fs::path& path) {
   return std::fread(signature, 1, 8, file.get()) == 8 && png_sig_cmp(signature, 0, 8) == 0;
 }
 
-Pixels read_checked(const fs::path& path, void (*check)(const Header&, const void*),
-                    const void* context) {
+Pixels read_checked(const fs::path& path, Samples samples,
+                    void (*check)(const Header&, const void*), const void* context) {
   const File file(std::fopen(path.c_str(), "rb"));
   if (!file) throw Error(path.string() + ": cannot open the file");
   std::string message;
@@ -110,7 +118,7 @@ Pixels read_checked(const fs::path& path, void (*check)(const Header&, const voi
   if (s.png != nullptr) s.info = png_create_info_struct(s.png);
   if (s.png == nullptr || s.info == nullptr) throw Error(path.string() + ": out of memory");
   Pixels out;
-  if (!read_info(s.png, s.info, file.get(), &out.header)) {
+  if (!read_info(s.png, s.info, file.get(), samples, &out.header)) {
     throw Error(path.string() + ": not a readable image (" + or_default(message, "bad PNG") + ")");
   }
   const Header& h = out.header;

@@ -17,8 +17,13 @@ struct Header {
   int width = 0;
   int height = 0;
   int channels = 0;   // as decoded: palettes expanded, tRNS as alpha
-  int bit_depth = 0;  // 8 or 16 as decoded (1/2/4-bit grey is expanded to 8)
+  int bit_depth = 0;  // 8 or 16 as decoded (1/2/4-bit grey becomes 8, see Samples)
 };
+
+// How 1/2/4-bit grey is widened to 8 bits: kScaled to the full range, as
+// for images (4-bit 15 -> 255); kStored keeps the stored values, as label
+// maps need (4-bit 1 stays 1).
+enum class Samples { kScaled, kStored };
 
 // Pixels as decoded, row-major, `channels` interleaved; 16-bit in host order.
 struct Pixels {
@@ -31,16 +36,17 @@ struct Pixels {
 // beyond the limits, before anything is decoded), then decodes. Throws
 // hair25d::Error naming the file when it is not a readable PNG.
 template <typename Check>
-Pixels read(const std::filesystem::path& path, Check check);
+Pixels read(const std::filesystem::path& path, Samples samples, Check check);
 
 // The non-template core of read(): check is called through a pointer.
-Pixels read_checked(const std::filesystem::path& path,
+Pixels read_checked(const std::filesystem::path& path, Samples samples,
                     void (*check)(const Header&, const void* context), const void* context);
 
 template <typename Check>
-Pixels read(const std::filesystem::path& path, Check check) {
+Pixels read(const std::filesystem::path& path, Samples samples, Check check) {
   return read_checked(
-      path, [](const Header& h, const void* c) { (*static_cast<const Check*>(c))(h); }, &check);
+      path, samples, [](const Header& h, const void* c) { (*static_cast<const Check*>(c))(h); },
+      &check);
 }
 
 // Writes `data` (row-major, channels 1-4 interleaved, 8 or 16 bits in host

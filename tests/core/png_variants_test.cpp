@@ -159,6 +159,63 @@ TEST(PngVariants, EveryLayoutDecodesAsOpenImageIoDoes) {
   }
 }
 
+// Writes labels (each < 2^depth) as a 1/2/4-bit grey PNG, packed as PNG
+// optimisers store maps of few labels.
+bool write_packed_grey(const fs::path& path, const LabelMap& labels, int depth, bool interlaced) {
+  const int w = labels.width(), h = labels.height();
+  const int per_byte = 8 / depth;
+  const std::size_t row_bytes = (static_cast<std::size_t>(w) + per_byte - 1) / per_byte;
+  std::vector<png_byte> data(row_bytes * h, 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int shift = 8 - depth * (x % per_byte + 1);  // first pixel in the high bits
+      data[y * row_bytes + x / per_byte] |= static_cast<png_byte>(labels.at(x, y) << shift);
+    }
+  std::vector<png_bytep> rows(h);
+  for (int y = 0; y < h; ++y) rows[y] = data.data() + y * row_bytes;
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f == nullptr) return false;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    std::fclose(f);
+    return false;
+  }
+  png_init_io(png, f);
+  png_set_IHDR(png, info, w, h, depth, PNG_COLOR_TYPE_GRAY,
+               interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  png_write_image(png, rows.data());
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return std::fclose(f) == 0;
+}
+
+TEST(PngVariants, PackedGreyLabelMapsKeepTheStoredLabels) {
+  TempDir dir;
+  for (const int depth : {1, 2, 4}) {
+    for (const bool interlaced : {false, true}) {
+      const std::string name =
+          "labels" + std::to_string(depth) + (interlaced ? "_interlaced" : "") + ".png";
+      // 13 x 7 (not a multiple of the pixels per byte): every label 0..2^depth-1.
+      LabelMap labels(13, 7);
+      for (int y = 0; y < 7; ++y)
+        for (int x = 0; x < 13; ++x) labels.at(x, y) = (x * 3 + y * 5) % (1 << depth);
+      ASSERT_TRUE(write_packed_grey(dir / name, labels, depth, interlaced)) << name;
+      // Scaling to 8 bits would give label 1 as 255, 85 or 17.
+      EXPECT_EQ(load_label_map(dir / name), labels) << name;
+      // As an image the same file is still scaled to the full range.
+      const int top = (1 << depth) - 1;
+      const Image img = load_image(dir / name);
+      for (int y = 0; y < 7; ++y)
+        for (int x = 0; x < 13; ++x)
+          ASSERT_EQ(img.at(x, y).r, labels.at(x, y) * 255 / top) << name << " " << x << "," << y;
+    }
+  }
+}
+
 TEST(PngVariants, SixteenBitValuesRoundToTheNearestEightBitValue) {
   TempDir dir;
   // Every 16-bit value once: 256 × 256 grey.
