@@ -12,6 +12,7 @@
 #include "hair25d/core/model_io.h"
 #include "hair25d/layering/depth_order.h"
 #include "hair25d/pipeline/segment_stage.h"
+#include "strand_order.h"
 
 namespace hair25d::pipeline {
 namespace {
@@ -78,21 +79,19 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
   const std::map<int, int> region_depth = complete_depths(regions, relations, depth);
   std::vector<completion::CompletedStrand> done = std::move(run.completion.strands);
   run.completion.strands.clear();
-  // Strands are drawn in the order of their front-most piece.
-  std::vector<int> key(done.size(), 0);
-  for (std::size_t s = 0; s < done.size(); ++s)
-    for (int r : done[s].regions) {
-      auto it = region_depth.find(r);
-      if (it != region_depth.end()) key[s] = std::max(key[s], it->second);
-    }
+  // Strand depths come from the relations between strands, not from their
+  // pieces' region depths: a strand joined from pieces may lie above another
+  // strand through one piece and below it through another (strand_order.h).
+  std::vector<std::vector<int>> strand_regions;
+  for (const completion::CompletedStrand& c : done) strand_regions.push_back(c.regions);
+  std::vector<RegionRelation> model_relations = relations;
+  const StrandOrder strand_order = order_strands(strand_regions, region_depth, &model_relations);
+  const std::vector<int>& key = strand_order.depth;
   std::vector<int> order(done.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return key[a] != key[b] ? key[a] < key[b] : done[a].regions.front() < done[b].regions.front();
   });
-  std::set<int> distinct(key.begin(), key.end());
-  std::map<int, int> rank;
-  for (int k : distinct) rank.emplace(k, static_cast<int>(rank.size()));
 
   HairModel& m = run.model;
   m.width = image.width();
@@ -100,11 +99,11 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
   m.image = image;
   m.background = std::move(run.completion.background);
   m.head_center = run.completion.head_center;
-  m.relations = relations;
+  m.relations = std::move(model_relations);
   run.regions = std::move(run.completion.regions);
   std::map<int, int> strand_depth_of_region;
   for (int index : order)
-    for (int r : done[index].regions) strand_depth_of_region[r] = rank[key[index]];
+    for (int r : done[index].regions) strand_depth_of_region[r] = key[index];
 
   std::vector<std::optional<Vec2>> root_hints;
   int next = 0;
@@ -114,7 +113,7 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
     s.id = ++next;
     s.name = "strand " + std::to_string(s.id);
     s.regions = c.regions;
-    s.depth = rank[key[index]];
+    s.depth = key[index];
     s.outline = c.outline;
     s.texture = std::move(c.texture);
     s.texture_origin = c.origin;
@@ -217,6 +216,9 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
   for (const StrandReport& r : run.strands) problems += !r.problem.empty();
   summary << m.strands.size() << " strands (" << run.completion.summary << ")";
   if (problems > 0) summary << "; " << problems << " strands without skeleton or mesh";
+  if (strand_order.overridden > 0)
+    summary << "; " << strand_order.overridden
+            << " region relations overridden by the strands' drawing order";
   run.summary = summary.str();
   return run;
 }
