@@ -476,17 +476,33 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   // like the ends of a non-occluding boundary (§4.1), the junctions of a
   // same-depth boundary are cusps, and the cues are measured again.
   if (options.learned_equal && options.metric == Metric::kLearned) {
-    bool more = false;
+    std::vector<int> new_cusps;
     for (int i = 0; i < nb; ++i) {
       const Boundary& b = bs[i];
       if (b.closed() || b.left <= 0 || b.right <= 0) continue;
       if (!out.boundaries[i].occluding || out.boundaries[i].equal <= 0) continue;
       for (int j : {b.start, b.end})
-        if (!cusp[j]) cusp[j] = 1, more = true;
+        if (!cusp[j]) cusp[j] = 1, new_cusps.push_back(j);
     }
-    if (more) {
-      junction_cues();
-      unary_cues();
+    // junction_cues() and unary_cues() again, where they change: each end of
+    // a boundary belongs to one junction, and at a cusp junction_cues()
+    // leaves its ends as reset; every other end, and the unary cues of a
+    // boundary with no end at a new cusp, would come out as they are.
+    std::vector<char> again(nb, 0);
+    for (int j : new_cusps)
+      for (const Ray& r : rays[j]) {
+        BoundaryReport& rep = out.boundaries[r.boundary];
+        (r.at_start ? rep.cues.start : rep.cues.end) = EndAngles{};
+        (r.at_start ? rep.phi_j_start : rep.phi_j_end) = 0.0;
+        again[r.boundary] = 1;
+      }
+    for (int i = 0; i < nb; ++i) {
+      if (!again[i]) continue;
+      BoundaryReport& rep = out.boundaries[i];
+      rep.phi_j = 0.0 + rep.phi_j_start + rep.phi_j_end;
+      rep.phi = options.junction_weight * rep.phi_j + rep.phi_r;
+      rep.features = boundary_features(rep.cues);
+      rep.learned = learned_metric(rep.features);
     }
   }
 
