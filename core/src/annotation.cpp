@@ -172,33 +172,36 @@ std::vector<fs::path> find_annotated_cases(const fs::path& root) {
 }
 
 void write_annotated_case(const fs::path& folder, const AnnotatedCase& c) {
-  write_folder_atomically(folder, [&](const fs::path& tmp) {
-    save_image(tmp / "image.png", c.image);
-    save_label_map(tmp / "regions.png", c.regions);
-    json doc;
-    doc["format"] = kAnnotationFormat;
-    doc["image"] = "image.png";
-    doc["regions_image"] = "regions.png";
-    if (c.head_center) doc["head_center"] = {c.head_center->x(), c.head_center->y()};
-    json regions = json::array();
-    for (const AnnotatedRegion& r : c.region_list) {
-      regions.push_back({{"id", r.id}, {"strand", r.strand}, {"name", r.name}});
-    }
-    doc["regions"] = regions;
-    json pairs = json::array();
-    for (const AnnotatedPair& p : c.pairs) {
-      pairs.push_back({{"a", p.a}, {"b", p.b}, {"relation", to_string(p.relation)}});
-    }
-    doc["pairs"] = pairs;
-    write_text_atomically(tmp / "layering.json", doc.dump(1) + "\n");
-    if (c.strokes) write_strokes(tmp / "strokes.json", *c.strokes);
-    if (!c.strand_masks.empty()) {
-      fs::create_directory(tmp / "strands");
-      for (const auto& [strand, mask] : c.strand_masks) {
-        save_mask(tmp / "strands" / (std::to_string(strand) + ".png"), mask);
-      }
-    }
-  });
+  write_folder_atomically(
+      folder,
+      [&](const fs::path& tmp) {
+        save_image(tmp / "image.png", c.image);
+        save_label_map(tmp / "regions.png", c.regions);
+        json doc;
+        doc["format"] = kAnnotationFormat;
+        doc["image"] = "image.png";
+        doc["regions_image"] = "regions.png";
+        if (c.head_center) doc["head_center"] = {c.head_center->x(), c.head_center->y()};
+        json regions = json::array();
+        for (const AnnotatedRegion& r : c.region_list) {
+          regions.push_back({{"id", r.id}, {"strand", r.strand}, {"name", r.name}});
+        }
+        doc["regions"] = regions;
+        json pairs = json::array();
+        for (const AnnotatedPair& p : c.pairs) {
+          pairs.push_back({{"a", p.a}, {"b", p.b}, {"relation", to_string(p.relation)}});
+        }
+        doc["pairs"] = pairs;
+        write_text_atomically(tmp / "layering.json", doc.dump(1) + "\n");
+        if (c.strokes) write_strokes(tmp / "strokes.json", *c.strokes);
+        if (!c.strand_masks.empty()) {
+          fs::create_directory(tmp / "strands");
+          for (const auto& [strand, mask] : c.strand_masks) {
+            save_mask(tmp / "strands" / (std::to_string(strand) + ".png"), mask);
+          }
+        }
+      },
+      "annotated case");
 }
 
 }  // namespace hair25d

@@ -22,27 +22,57 @@ fs::path without_trailing_slash(const fs::path& target) {
   return target.has_filename() || !target.has_parent_path() ? target : target.parent_path();
 }
 
-// Left in every folder written here, so that a later run knows the folder is
-// an output (a model without textures has no strands/, the next one may).
+// Left in every folder written here, holding the kind of output, so that a
+// later run of the same command knows the folder is its own (a model without
+// textures has no strands/, the next one may) and another command does not
+// take it for its own (a generated case folder is input to segment).
 constexpr const char* kOutputMark = ".hair25d-output";
 
-// The first entry of `old` that `fresh` does not have, or "" when every one
-// does or `old` carries the output mark. Anything else is somebody's file
-// that replacing the folder would delete.
-std::string foreign_entry(const fs::path& old,
-                          const std::function<bool(const std::string&)>& ours) {
+std::string mark_text(const std::string& kind) { return "hair25d " + kind + "\n"; }
+
+bool marked_as(const fs::path& folder, const std::string& kind) {
+  std::ifstream in(folder / kOutputMark, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return in && text.str() == mark_text(kind);
+}
+
+// The first entry under `old` (relative path) that `ours` does not accept, or
+// "" when every one is accepted or `old` is marked as this kind of output.
+// Anything else is somebody's file that replacing the folder would delete.
+// Folders are looked into: strands/notes.txt is somebody's even where a
+// strands/ folder is ours.
+std::string foreign_entry(const fs::path& old, const std::string& kind,
+                          const std::function<bool(const fs::path&, bool folder)>& ours) {
+  if (marked_as(old, kind)) return "";
   std::error_code ec;
-  if (fs::exists(old / kOutputMark, ec)) return "";
-  for (const auto& entry : fs::directory_iterator(old)) {
-    const std::string name = entry.path().filename().string();
-    if (!ours(name)) return name;
+  for (auto it = fs::recursive_directory_iterator(old); it != fs::recursive_directory_iterator();
+       ++it) {
+    const fs::path relative = it->path().lexically_relative(old);
+    if (relative == kOutputMark) continue;  // another kind's mark: its entries decide
+    if (!ours(relative, it->is_directory(ec))) return relative.generic_string();
   }
   return "";
 }
 
-std::string foreign_entry(const fs::path& old, const fs::path& fresh) {
-  std::error_code ec;
-  return foreign_entry(old, [&](const std::string& name) { return fs::exists(fresh / name, ec); });
+// Against the new output itself: an entry is ours when the new folder holds
+// it too (the same kind: a file for a file, a folder for a folder).
+std::string foreign_entry(const fs::path& old, const fs::path& fresh, const std::string& kind) {
+  return foreign_entry(old, kind, [&](const fs::path& relative, bool folder) {
+    std::error_code ec;
+    return folder ? fs::is_directory(fresh / relative, ec)
+                  : fs::is_regular_file(fresh / relative, ec);
+  });
+}
+
+// A folder target must have a name of its own: "" and "." would replace the
+// current folder (and everything in it), ".." its parent.
+void check_folder_name(const fs::path& target, const std::string& what) {
+  const std::string name = target.filename().string();
+  if (target.empty() || name == "." || name == "..") {
+    throw Error(what + " \"" + target.string() +
+                "\": give the output folder a name of its own (not \"\", \".\" or \"..\")");
+  }
 }
 
 Error foreign_folder_error(const fs::path& target, const std::string& what,
@@ -111,18 +141,44 @@ void check_output_file(const fs::path& target, const std::string& what) {
 }
 
 void check_output_folder(const fs::path& target_in, const std::string& what,
-                         const std::vector<std::string>& names) {
+                         const std::vector<std::string>& names, const std::string& kind) {
   const fs::path target = without_trailing_slash(target_in);
+  check_folder_name(target, what);
   std::error_code ec;
   if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
     throw Error(what + " " + target.string() + ": exists and is not a folder");
   }
   check_parent_folders(target, what);
   if (!fs::is_directory(target, ec)) return;
-  const std::string foreign = foreign_entry(target, [&](const std::string& name) {
-    return std::find(names.begin(), names.end(), name) != names.end();
+  // Unmarked, only top-level names the command writes, and folders among them
+  // empty: what is inside a folder the command has not marked is unknown.
+  const std::string foreign = foreign_entry(target, kind, [&](const fs::path& relative, bool) {
+    const std::string top = relative.begin()->string();
+    return relative == top && std::find(names.begin(), names.end(), top) != names.end();
   });
   if (!foreign.empty()) throw foreign_folder_error(target, what, foreign);
+}
+
+bool lies_inside(const fs::path& path, const fs::path& folder) {
+  if (path.empty() || folder.empty()) return false;
+  std::error_code ec;
+  // Links and ".." resolved as far as the paths exist.
+  const fs::path out = fs::weakly_canonical(fs::absolute(without_trailing_slash(folder)), ec);
+  if (ec) return false;
+  const fs::path in = fs::weakly_canonical(fs::absolute(path), ec);
+  if (ec) return false;
+  const fs::path rel = in.lexically_relative(out);
+  return !rel.empty() && *rel.begin() != "..";
+}
+
+void check_inputs_outside(const fs::path& folder, const std::vector<fs::path>& inputs,
+                          const std::string& what) {
+  for (const fs::path& input : inputs) {
+    if (lies_inside(input, folder)) {
+      throw Error(what + " " + folder.string() + ": the input " + input.string() +
+                  " lies in it; writing the output there would replace it (give another folder)");
+    }
+  }
 }
 
 void write_text_atomically(const fs::path& target, const std::string& text) {
@@ -147,8 +203,10 @@ std::string read_text_file(const fs::path& path) {
 }
 
 void write_folder_atomically(const fs::path& target_in,
-                             const std::function<void(const fs::path&)>& fill) {
+                             const std::function<void(const fs::path&)>& fill,
+                             const std::string& kind) {
   const fs::path target = without_trailing_slash(target_in);
+  check_folder_name(target, "");
   std::error_code ec;
   if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
     throw Error(target.string() + ": exists and is not a folder; refusing to replace it");
@@ -161,13 +219,12 @@ void write_folder_atomically(const fs::path& target_in,
   try {
     fs::create_directory(tmp);
     fill(tmp);
-    std::ofstream(tmp / kOutputMark)
-        << "written by hair25d; the folder is replaced on the next run\n";
+    std::ofstream(tmp / kOutputMark) << mark_text(kind);
     // rename() cannot replace a non-empty folder: move the old one aside first,
     // so that at every moment either the old or the new complete folder exists.
     const bool had_old = fs::exists(target);
     if (had_old) {
-      const std::string foreign = foreign_entry(target, tmp);
+      const std::string foreign = foreign_entry(target, tmp, kind);
       if (!foreign.empty()) throw foreign_folder_error(target, "", foreign);
       fs::rename(target, old);
     }

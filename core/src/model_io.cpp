@@ -199,7 +199,8 @@ void write_model_into(const fs::path& folder, const HairModel& model) {
 
 void write_model(const fs::path& folder, const HairModel& model) {
   check_writable(folder, model);
-  write_folder_atomically(folder, [&](const fs::path& tmp) { write_contents(tmp, model); });
+  write_folder_atomically(
+      folder, [&](const fs::path& tmp) { write_contents(tmp, model); }, "model");
 }
 
 std::vector<std::string> model_folder_names() {

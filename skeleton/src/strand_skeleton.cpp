@@ -46,8 +46,10 @@ int nearest_node(const MedialGraph& g, const Vec2& p, const std::vector<bool>* a
   double best_d = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     if (allowed != nullptr && !(*allowed)[i]) continue;
-    const double d = (g.nodes[i] - p).squaredNorm();
-    if (d < best_d) {
+    // stableNorm: a hint far away (1e200) must not square to infinity for
+    // every node, which left no node nearest.
+    const double d = (g.nodes[i] - p).stableNorm();
+    if (best < 0 || d < best_d) {
       best_d = d;
       best = static_cast<int>(i);
     }

@@ -17,9 +17,9 @@ hair25d_cli_test(model_bad_hair_colour 1 STDERR "expected #RRGGBB"
 
 add_test(NAME cli.model_keeps_a_folder_of_other_files
   COMMAND bash -c "rm -rf keep && mkdir keep && echo mine > keep/notes.txt
-    ${hair25d} -q model ${case5}/image.png --regions ${case5}/regions.png -o keep 2> err.txt
-    status=$?; cat err.txt
-    test $status = 1 && grep -q '^hair25d: -o keep: .*notes.txt' err.txt &&
+    ${hair25d} -q model ${case5}/image.png --regions ${case5}/regions.png -o keep 2> model_keeps_a_folder_of_other_files.err
+    status=$?; cat model_keeps_a_folder_of_other_files.err
+    test $status = 1 && grep -q '^hair25d: -o keep: .*notes.txt' model_keeps_a_folder_of_other_files.err &&
       test \"$(cat keep/notes.txt)\" = mine &&
       test ! -e keep/model.json && test -z \"$(ls -A | grep '^\\.keep')\""
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
@@ -35,15 +35,15 @@ add_test(NAME cli.model_by_hair_colour_with_head
 # A bad --json path fails before any work, and no overlays are left behind.
 add_test(NAME cli.eval_layering_json_into_a_folder
   COMMAND bash -c "rm -rf ov_json && mkdir -p json_dir &&
-    ${hair25d} -q eval-layering ${annotated} --json json_dir --overlays ov_json 2> err.txt
-    status=$?; cat err.txt
-    test $status = 1 && grep -q 'is a folder' err.txt && test ! -e ov_json"
+    ${hair25d} -q eval-layering ${annotated} --json json_dir --overlays ov_json 2> eval_layering_json_into_a_folder.err
+    status=$?; cat eval_layering_json_into_a_folder.err
+    test $status = 1 && grep -q 'is a folder' eval_layering_json_into_a_folder.err && test ! -e ov_json"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 add_test(NAME cli.eval_layering_overlays_keep_other_files
   COMMAND bash -c "rm -rf ov_keep && mkdir ov_keep && echo mine > ov_keep/notes.txt
-    ${hair25d} -q eval-layering ${annotated} --overlays ov_keep > /dev/null 2> err.txt
-    status=$?; cat err.txt
-    test $status = 1 && grep -q '^hair25d: --overlays ov_keep: .*notes.txt' err.txt &&
+    ${hair25d} -q eval-layering ${annotated} --overlays ov_keep > /dev/null 2> eval_layering_overlays_keep_other_files.err
+    status=$?; cat eval_layering_overlays_keep_other_files.err
+    test $status = 1 && grep -q '^hair25d: --overlays ov_keep: .*notes.txt' eval_layering_overlays_keep_other_files.err &&
       test \"$(cat ov_keep/notes.txt)\" = mine && test ! -e ov_keep/case0.png"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 # A --json in a folder not made yet is written there; one under a file is
@@ -51,10 +51,49 @@ add_test(NAME cli.eval_layering_overlays_keep_other_files
 add_test(NAME cli.eval_layering_json_in_a_new_folder
   COMMAND bash -c "rm -rf new_json && ${hair25d} -q eval-layering ${annotated} --json new_json/a/r.json
       > /dev/null && test -s new_json/a/r.json && echo x > a_file &&
-    ! ${hair25d} -q eval-layering ${annotated} --json a_file/r.json 2> err.txt &&
-    grep -q 'a_file is a file' err.txt"
+    ! ${hair25d} -q eval-layering ${annotated} --json a_file/r.json 2> eval_layering_json_in_a_new_folder.err &&
+    grep -q 'a_file is a file' eval_layering_json_in_a_new_folder.err"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 add_test(NAME cli.eval_layering_overlays_written_whole
   COMMAND bash -c "rm -rf ov_whole && ${hair25d} -q eval-layering ${annotated} --overlays ov_whole/
       > /dev/null && test $(ls ov_whole | wc -l) = 6 && test -s ov_whole/case5.png"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+
+# Inputs the output would replace: the report over a case's own file, a
+# model folder holding its own drawing.
+add_test(NAME cli.eval_layering_json_never_over_a_case_file
+  COMMAND bash -c "rm -rf cases_copy && mkdir cases_copy && cp -r ${case5} cases_copy/ &&
+    cp cases_copy/case5/layering.json before.json
+    ! ${hair25d} -q eval-layering cases_copy --json cases_copy/case5/layering.json 2> eval_layering_json_never_over_a_case_file.err &&
+    grep -q '^hair25d: --json .*lies in the case folder' eval_layering_json_never_over_a_case_file.err &&
+    cmp -s before.json cases_copy/case5/layering.json &&
+    ${hair25d} -q eval-layering cases_copy --json cases_copy/report.json > /dev/null &&
+    test -s cases_copy/report.json"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+add_test(NAME cli.model_never_over_its_input
+  COMMAND bash -c "rm -rf own && mkdir own && cp ${case5}/image.png own/ &&
+    ! ${hair25d} -q model own/image.png --regions ${case5}/regions.png -o own 2> model_never_over_its_input.err &&
+    grep -q '^hair25d: -o own: the input own/image.png lies in it' model_never_over_its_input.err &&
+    cmp -s own/image.png ${case5}/image.png && test ! -e own/model.json"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# An output folder needs a name of its own: "" or "." would replace the
+# current folder; refused before any work.
+hair25d_cli_test(model_into_the_current_folder 1 STDERR "^hair25d: -o \".\": give the output folder a name"
+  ARGS -q model ${case5}/image.png --regions ${case5}/regions.png -o .)
+add_test(NAME cli.segment_into_no_folder
+  COMMAND bash -c "${hair25d} -q segment ${case5}/image.png --strokes ${case5}/strokes.json \\
+      -o '' 2> segment_into_no_folder.err; status=$?; cat segment_into_no_folder.err
+    test $status = 1 && grep -q '^hair25d: -o \"\": give the output folder a name' segment_into_no_folder.err"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# A head centre absurdly far (its squared distances overflowed in the
+# skeleton: a crash) is refused before any work, naming --head.
+hair25d_cli_test(model_head_far_away 1 STDERR "^hair25d: --head \\(1e\\+200, 100\\): the head centre must lie within"
+  ARGS -q model ${case5}/image.png --regions ${case5}/regions.png --head 1e200 100 -o model_far_head)
+hair25d_cli_test(model_head_not_a_number 1 STDERR "^hair25d: --head \\(nan, 100\\): the head centre must be finite"
+  ARGS -q model ${case5}/image.png --regions ${case5}/regions.png --head nan 100 -o model_nan_head)
+hair25d_cli_test(segment_hair_colour_with_signs 1 STDERR "expected #RRGGBB"
+  ARGS -q segment ${case5}/image.png --hair-colour "#-1-1-1" -o seg_signs)
+hair25d_cli_test(segment_colour_tolerance_nan 2 STDERR "--colour-tolerance: must be a finite number"
+  ARGS -q segment ${case5}/image.png --hair-colour "#5a82cc" --colour-tolerance nan -o seg_nan)
+hair25d_cli_test(model_colour_tolerance_needs_a_colour 2 STDERR "--colour-tolerance requires --hair-colour"
+  ARGS -q model ${case5}/image.png --regions ${case5}/regions.png --colour-tolerance 3 -o model_tol)

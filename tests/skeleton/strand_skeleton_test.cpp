@@ -68,6 +68,21 @@ TEST(StrandSkeleton, TaperedStrandGivesOnePathFromRootToTip) {
   EXPECT_LT(length, 270.0);
 }
 
+// A root hint so far away that squared distances overflow still picks the
+// end toward it (it crashed: no node was nearer than infinity).
+TEST(StrandSkeleton, RootHintFarAwayStillGivesARoot) {
+  const Polyline outline = tapered_strand({40, 30}, 220, 18, 25);
+  Input in;
+  in.outline = outline;
+  Options options;
+  for (const Vec2& hint : {Vec2(-1e200, 30), Vec2(-1e308, 1e308), Vec2(-1e20, 30)}) {
+    in.root_hint = hint;
+    const Result r = build_skeleton(in, options);
+    expect_well_formed(r.skeleton, outline, options.node_spacing);
+    EXPECT_LT(r.skeleton.nodes[0].x(), 50.0) << "hint " << hint.transpose();
+  }
+}
+
 TEST(StrandSkeleton, ForkedStrandGivesATreeWithTwoTips) {
   const Polyline outline = forked_strand({30, 80});
   Input in;

@@ -22,6 +22,9 @@ struct EvalLayeringArgs {
   bool from_strokes = false;
 };
 
+// The mark write_folder_atomically leaves in the overlays folder.
+constexpr const char* kOverlaysKind = "eval-layering overlays";
+
 }  // namespace
 
 void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
@@ -40,16 +43,26 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
   cmd->callback([args, &common] {
     pipeline::LayeringEvalOptions options;
     options.from_strokes = args->from_strokes;
-    if (!args->json_path.empty()) check_output_file(args->json_path, "--json");
+    const std::vector<std::filesystem::path> cases = find_annotated_cases(args->cases_dir);
+    if (!args->json_path.empty()) {
+      check_output_file(args->json_path, "--json");
+      // The report would replace a case's own file (its layering.json, its drawing).
+      for (const auto& c : cases) {
+        if (lies_inside(args->json_path, c))
+          throw Error("--json " + args->json_path + ": lies in the case folder " + c.string() +
+                      "; the report would replace the case's own files (write it elsewhere)");
+      }
+    }
     if (!args->overlays_dir.empty()) {
       std::vector<std::string> names;
-      for (const auto& c : find_annotated_cases(args->cases_dir)) {
+      for (const auto& c : cases) {
         // Named as read_annotated_case names a case.
         const std::string name =
             c.filename().empty() ? c.parent_path().filename().string() : c.filename().string();
         names.push_back(name + ".png");
       }
-      check_output_folder(args->overlays_dir, "--overlays", names);
+      check_output_folder(args->overlays_dir, "--overlays", names, kOverlaysKind);
+      check_inputs_outside(args->overlays_dir, {args->cases_dir}, "--overlays");
     }
     TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
     pipeline::LayeringEvalReport report;
@@ -58,10 +71,13 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
     } else {
       // The overlays go to a temporary folder renamed into place only when
       // every case has been scored: a failure leaves no partial set.
-      write_folder_atomically(args->overlays_dir, [&](const std::filesystem::path& tmp) {
-        options.overlays_dir = tmp;
-        report = pipeline::evaluate_layering(args->cases_dir, options, &progress);
-      });
+      write_folder_atomically(
+          args->overlays_dir,
+          [&](const std::filesystem::path& tmp) {
+            options.overlays_dir = tmp;
+            report = pipeline::evaluate_layering(args->cases_dir, options, &progress);
+          },
+          kOverlaysKind);
     }
     if (!args->json_path.empty()) {
       const std::filesystem::path json(args->json_path);

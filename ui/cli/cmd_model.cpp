@@ -7,9 +7,11 @@
 #include <string>
 
 #include "commands.h"
+#include "hair25d/core/atomic_file.h"
 #include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
 #include "hair25d/core/strokes.h"
+#include "hair25d/pipeline/head_center.h"
 #include "hair25d/pipeline/model_stage.h"
 #include "hair25d/pipeline/segment_stage.h"
 #include "hair_colour.h"
@@ -41,9 +43,7 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
       "--hair-colour", args->hair_colour,
       "Without strokes or regions: the regions of this colour (#RRGGBB) are the hair, one "
       "strand each");
-  cmd->add_option("--colour-tolerance", args->tolerance,
-                  "RGB distance (0-255) a region's mean colour may be from --hair-colour")
-      ->check(CLI::Range(0.0, 442.0));
+  add_colour_tolerance(cmd, &args->tolerance, colour);
   strokes->excludes(regions)->excludes(colour);
   regions->excludes(strokes)->excludes(colour);
   colour->excludes(strokes)->excludes(regions);
@@ -66,6 +66,7 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
                                  "--hair-colour #RRGGBB");
     }
     pipeline::check_model_folder(args->out, "-o");
+    check_inputs_outside(args->out, {args->image, args->strokes, args->regions}, "-o");
     std::optional<std::array<std::uint8_t, 3>> hair_colour;
     if (!args->hair_colour.empty()) hair_colour = parse_hair_colour(args->hair_colour);
     auto start = Clock::now();
@@ -74,6 +75,7 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
     TerminalProgress progress(stderr, TerminalProgress::pick_mode(stderr, common.quiet));
     std::optional<Vec2> head;
     if (args->head.size() == 2) head = Vec2(args->head[0], args->head[1]);
+    if (head) pipeline::check_head_center(*head, image.width(), image.height(), "--head");
     pipeline::ModelRun run;
     if (!args->regions.empty()) {
       const LabelMap regions = load_label_map(args->regions);
@@ -95,7 +97,11 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
       run.seconds["segment"] = segment_seconds;
     } else {
       Strokes s = read_strokes(args->strokes);
-      if (head) s.head_center = head;
+      if (head)
+        s.head_center = head;
+      else if (s.head_center)
+        pipeline::check_head_center(*s.head_center, image.width(), image.height(),
+                                    args->strokes + ": head_center");
       run = pipeline::run_model(image, &s, {}, &progress);
     }
     start = Clock::now();

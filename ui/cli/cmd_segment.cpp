@@ -6,6 +6,7 @@
 #include <string>
 
 #include "commands.h"
+#include "hair25d/core/atomic_file.h"
 #include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
 #include "hair25d/core/strokes.h"
@@ -29,18 +30,18 @@ void add_segment_command(CLI::App& app, const CommonOptions& common) {
   cmd->add_option("--strokes", args->strokes,
                   "strokes.json: labelled hair strokes; without it every face enclosed by "
                   "lines becomes a region");
-  cmd->add_option("--hair-colour", args->hair_colour,
-                  "Without strokes: take the regions of this colour (#RRGGBB) as the hair, one "
-                  "region each")
-      ->excludes(cmd->get_option("--strokes"));
-  cmd->add_option("--colour-tolerance", args->tolerance,
-                  "RGB distance (0-255) a region's mean colour may be from --hair-colour")
-      ->check(CLI::Range(0.0, 442.0));
+  CLI::Option* colour =
+      cmd->add_option("--hair-colour", args->hair_colour,
+                      "Without strokes: take the regions of this colour (#RRGGBB) as the hair, "
+                      "one region each")
+          ->excludes(cmd->get_option("--strokes"));
+  add_colour_tolerance(cmd, &args->tolerance, colour);
   cmd->add_option("-o,--output", args->out,
                   "Folder to write regions.png, segmentation.json and overlay.png into")
       ->required();
   cmd->callback([args, &common] {
     pipeline::check_segment_folder(args->out, "-o");
+    check_inputs_outside(args->out, {args->image, args->strokes}, "-o");
     const Image image = load_image(args->image);
     std::optional<Strokes> strokes;
     if (!args->strokes.empty()) strokes = read_strokes(args->strokes);

@@ -1,17 +1,43 @@
 #include "hair_colour.h"
 
-#include <cstdio>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
 
 #include "hair25d/core/error.h"
 
 namespace hair25d::cli {
 
 std::array<std::uint8_t, 3> parse_hair_colour(const std::string& text) {
-  unsigned r = 0, g = 0, b = 0;
-  char tail = 0;
-  if (text.size() != 7 || std::sscanf(text.c_str(), "#%2x%2x%2x%c", &r, &g, &b, &tail) != 3)
-    throw Error("--hair-colour \"" + text + "\": expected #RRGGBB, e.g. #8a5a3c");
-  return {static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), static_cast<std::uint8_t>(b)};
+  // Every digit checked: sscanf's %2x also takes signs and spaces ("#-1-1-1").
+  const bool hex = text.size() == 7 && text[0] == '#' &&
+                   std::all_of(text.begin() + 1, text.end(),
+                               [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+  if (!hex) throw Error("--hair-colour \"" + text + "\": expected #RRGGBB, e.g. #8a5a3c");
+  const auto channel = [&](int at) {
+    return static_cast<std::uint8_t>(std::stoi(text.substr(at, 2), nullptr, 16));
+  };
+  return {channel(1), channel(3), channel(5)};
+}
+
+CLI::Option* add_colour_tolerance(CLI::App* cmd, double* tolerance, CLI::Option* colour) {
+  // CLI::Range lets NaN through (every comparison with it is false).
+  const CLI::Validator finite(
+      [](std::string& text) {
+        try {
+          return std::isfinite(std::stod(text)) ? std::string() : "must be a finite number";
+        } catch (const std::exception&) {
+          return std::string("must be a number");
+        }
+      },
+      "FINITE");
+  return cmd
+      ->add_option("--colour-tolerance", *tolerance,
+                   "RGB distance (0-255) a region's mean colour may be from --hair-colour")
+      ->check(finite)
+      ->check(CLI::Range(0.0, 442.0))
+      ->needs(colour);
 }
 
 }  // namespace hair25d::cli

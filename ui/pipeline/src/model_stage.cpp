@@ -263,20 +263,23 @@ ModelRun run_model(const Image& image, const Strokes* strokes, const ModelOption
 
 void write_model_run(const std::filesystem::path& folder, const ModelRun& run) {
   // The contact sheet goes in before the rename: the folder is whole when it appears.
-  write_folder_atomically(folder, [&](const std::filesystem::path& tmp) {
-    // Encoded beside the model's own files (core encodes those on two threads).
-    auto sheet = std::async(std::launch::async, [&] {
-      if (!run.contact_sheet.empty()) save_image(tmp / "contact_sheet.png", run.contact_sheet);
-    });
-    write_model_into(tmp, run.model);
-    sheet.get();
-  });
+  write_folder_atomically(
+      folder,
+      [&](const std::filesystem::path& tmp) {
+        // Encoded beside the model's own files (core encodes those on two threads).
+        auto sheet = std::async(std::launch::async, [&] {
+          if (!run.contact_sheet.empty()) save_image(tmp / "contact_sheet.png", run.contact_sheet);
+        });
+        write_model_into(tmp, run.model);
+        sheet.get();
+      },
+      "model");
 }
 
 void check_model_folder(const std::filesystem::path& folder, const std::string& what) {
   std::vector<std::string> names = model_folder_names();
   names.push_back("contact_sheet.png");
-  check_output_folder(folder, what, names);
+  check_output_folder(folder, what, names, "model");
 }
 
 }  // namespace hair25d::pipeline

@@ -60,15 +60,19 @@ void write_segment_run(const std::filesystem::path& out_dir, const SegmentRun& r
   if (!r.empty() && *std::max_element(r.begin(), r.end()) > 65535)
     throw Error("segment: region id " + std::to_string(*std::max_element(r.begin(), r.end())) +
                 " does not fit regions.png; ids must be <= 65535");
-  write_folder_atomically(out_dir, [&](const std::filesystem::path& tmp) {
-    save_label_map(tmp / "regions.png", run.regions);
-    segment::write_segmentation(tmp / "segmentation.json", run.segmentation);
-    save_image(tmp / "overlay.png", run.overlay);
-  });
+  write_folder_atomically(
+      out_dir,
+      [&](const std::filesystem::path& tmp) {
+        save_label_map(tmp / "regions.png", run.regions);
+        segment::write_segmentation(tmp / "segmentation.json", run.segmentation);
+        save_image(tmp / "overlay.png", run.overlay);
+      },
+      "segment");
 }
 
 void check_segment_folder(const std::filesystem::path& out_dir, const std::string& what) {
-  check_output_folder(out_dir, what, {"regions.png", "segmentation.json", "overlay.png"});
+  check_output_folder(out_dir, what, {"regions.png", "segmentation.json", "overlay.png"},
+                      "segment");
 }
 
 }  // namespace hair25d::pipeline

@@ -25,12 +25,24 @@ void write_atomically(const std::filesystem::path& target,
 void check_output_file(const std::filesystem::path& target, const std::string& what);
 
 // Throws hair25d::Error naming `target` (and `what`, e.g. "-o") when
-// write_folder_atomically would refuse it at the end of a long run: a file
-// stands there or where one of its folders would be, or it is a folder that is
-// neither empty nor an earlier output and holds an entry not in `names` (the
-// names the command writes). Called before the work, as check_output_file is.
+// write_folder_atomically(target, ..., kind) would refuse it at the end of a
+// long run: it has no name of its own ("", "."), a file stands there or where
+// one of its folders would be, or it is a folder that is neither empty nor
+// marked as an earlier output of this `kind` and holds anything but `names`
+// (the names the command writes; folders among them empty). Called before the
+// work, as check_output_file is.
 void check_output_folder(const std::filesystem::path& target, const std::string& what,
-                         const std::vector<std::string>& names);
+                         const std::vector<std::string>& names, const std::string& kind);
+
+// Whether `path` is `folder` or lies somewhere inside it (links and ".."
+// resolved as far as the paths exist).
+bool lies_inside(const std::filesystem::path& path, const std::filesystem::path& folder);
+
+// Throws hair25d::Error naming `what` and `folder` when one of `inputs` lies
+// inside the output folder, which replacing the folder would delete.
+void check_inputs_outside(const std::filesystem::path& folder,
+                          const std::vector<std::filesystem::path>& inputs,
+                          const std::string& what);
 
 // Writes text to a file atomically.
 void write_text_atomically(const std::filesystem::path& target, const std::string& text);
@@ -40,10 +52,13 @@ std::string read_text_file(const std::filesystem::path& path);
 
 // Replaces folder `target` by a folder filled by fill(tmp_folder): the old
 // folder (if any) is removed only after the new one is complete. An existing
-// folder is replaced only when it is empty, was written by this function (it
-// leaves a hidden mark) or holds nothing but names the new one holds too;
-// otherwise it is left untouched and hair25d::Error names the foreign entry.
+// folder is replaced only when it is empty, was written by this function for
+// the same `kind` of output ("model", "segment", ...: it leaves a hidden
+// mark naming it) or holds nothing, folders looked into, that the new one
+// does not hold too; otherwise it is left untouched and hair25d::Error names
+// the foreign entry.
 void write_folder_atomically(const std::filesystem::path& target,
-                             const std::function<void(const std::filesystem::path&)>& fill);
+                             const std::function<void(const std::filesystem::path&)>& fill,
+                             const std::string& kind);
 
 }  // namespace hair25d
