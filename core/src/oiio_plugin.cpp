@@ -66,12 +66,19 @@ void read_impl(const char* path, const ReadRequest& request, ReadResult* result)
     result->pixels.resize(values);
     ok = in->read_image(0, 0, 0, spec.nchannels, oiio::TypeDesc::FLOAT, result->pixels.data());
   }
-  if (!ok) {
+  // read_image's result is not enough: libjpeg only warns about a truncated
+  // stream (the missing rows come back grey) and OpenImageIO still returns
+  // true, with the warning left as the reader's error text.
+  if (!ok || in->has_error()) {
     result->status = Status::kCannotDecode;
     result->message = reader_message(*in);
     return;
   }
-  in->close();
+  if (!in->close() || in->has_error()) {
+    result->status = Status::kCannotDecode;
+    result->message = reader_message(*in);
+    return;
+  }
   result->status = Status::kOk;
 }
 

@@ -178,6 +178,29 @@ TEST(ImageIo, TruncatedPngIsAnErrorNotACrash) {
   }
 }
 
+// libjpeg only warns about a truncated stream and fills the rest with grey;
+// OpenImageIO then returns success with the warning as its error text.
+TEST(ImageIo, TruncatedJpegIsRefusedWithOpenImageIosMessage) {
+  TempDir dir;
+  std::vector<std::uint8_t> rgb(96 * 70 * 3);
+  for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<std::uint8_t>(i * 31 % 251);
+  write_raw(dir / "full.jpg", 96, 70, 3, OIIO::TypeDesc::UINT8, rgb);
+  EXPECT_EQ(load_image(dir / "full.jpg").width(), 96);  // the whole file loads
+  const std::string bytes = read_bytes(dir / "full.jpg");
+  ASSERT_GT(bytes.size(), 2000u);
+  for (std::size_t cut : {bytes.size() / 3, bytes.size() / 2, bytes.size() - 10}) {
+    write_bytes(dir / "cut.jpg", bytes.substr(0, cut));
+    try {
+      load_image(dir / "cut.jpg");
+      ADD_FAILURE() << "a JPEG cut at " << cut << " of " << bytes.size() << " bytes was accepted";
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("cut.jpg"), std::string::npos) << message;
+      EXPECT_NE(message.find("cannot decode"), std::string::npos) << message;
+    }
+  }
+}
+
 TEST(ImageIo, SizeLimitsAreCheckedBeforeDecoding) {
   TempDir dir;
   save_image(dir / "a.png", gradient(40, 30));
