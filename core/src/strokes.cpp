@@ -77,8 +77,58 @@ void write_strokes(const std::filesystem::path& path, const Strokes& strokes) {
 }
 
 namespace {
+
+// Clips segment a-b to the box [lo, hi] (Liang-Barsky, in double): the part
+// that can reach a pixel when the box is the image grown by the brush radius.
+// False when nothing of it lies in the box, or a point is not finite.
+bool clip_to_box(Vec2& a, Vec2& b, const Vec2& lo, const Vec2& hi) {
+  if (!a.allFinite() || !b.allFinite()) return false;
+  // Half the direction, so that points near +-1e308 cannot overflow it;
+  // the segment is a + t h for t in [0, 2].
+  const Vec2 h = 0.5 * b - 0.5 * a;
+  double t0 = 0.0, t1 = 2.0;
+  int axis0 = -1, axis1 = -1;  // the axis whose side cut the segment at t0, t1
+  double bound0 = 0.0, bound1 = 0.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    // a + t h within [lo, hi] on this axis.
+    for (const bool low : {true, false}) {
+      const double p = low ? -h[axis] : h[axis];
+      const double bound = low ? lo[axis] : hi[axis];
+      const double q = low ? a[axis] - bound : bound - a[axis];
+      if (p == 0.0) {
+        if (q < 0.0) return false;  // parallel to this side and outside it
+      } else if (p < 0.0 && q / p > t0) {
+        t0 = q / p, axis0 = axis, bound0 = bound;
+      } else if (p > 0.0 && q / p < t1) {
+        t1 = q / p, axis1 = axis, bound1 = bound;
+      }
+    }
+  }
+  if (t0 > t1) return false;
+  // A cut end point takes the side's coordinate exactly and the other one
+  // from the slope: a + t h would lose the image in rounding when both ends
+  // lie ~1e308 away. The clamp keeps what rounding remains inside the box.
+  const Vec2 start = a;
+  auto cut = [&](int axis, double bound) {
+    const int other = 1 - axis;
+    Vec2 out;
+    out[axis] = bound;
+    out[other] = start[other] + (bound - start[axis]) * (h[other] / h[axis]);
+    return Vec2(out.cwiseMax(lo).cwiseMin(hi));
+  };
+  if (axis0 >= 0) a = cut(axis0, bound0);
+  if (axis1 >= 0) b = cut(axis1, bound1);
+  return true;
+}
+
 // Paints a round brush of radius r along segment a-b (inclusive) into labels.
-void paint_segment(LabelMap& labels, const Vec2& a, const Vec2& b, double r, int value) {
+void paint_segment(LabelMap& labels, Vec2 a, Vec2 b, double r, int value) {
+  // Only the part of the segment within r of the image can paint a pixel:
+  // for a pixel p in the image, the segment's point nearest p lies within r of
+  // p, so inside the grown box, and so on the clipped part too. Clipping in
+  // double keeps the casts below in int range for points far outside.
+  const Vec2 lo(-r, -r), hi(labels.width() - 1 + r, labels.height() - 1 + r);
+  if (!clip_to_box(a, b, lo, hi)) return;
   const int x0 = std::max(0, static_cast<int>(std::floor(std::min(a.x(), b.x()) - r)));
   const int x1 =
       std::min(labels.width() - 1, static_cast<int>(std::ceil(std::max(a.x(), b.x()) + r)));
@@ -104,8 +154,12 @@ void paint_segment(LabelMap& labels, const Vec2& a, const Vec2& b, double r, int
 LabelMap rasterize_strokes(const Strokes& strokes, int width, int height) {
   LabelMap labels(width, height, kNoStroke);
   for (const Stroke& s : strokes.strokes) {
-    // A brush of width 1 still marks the pixel it passes through.
-    const double r = std::max(0.5, s.width / 2.0);
+    // A brush of width 1 still marks the pixel it passes through. A radius
+    // beyond the image's diagonal is clamped to it: from any point in the
+    // image such a brush already covers the whole image, and the clamp keeps
+    // absurd widths (1e300) from overflowing the pixel arithmetic.
+    const double diagonal = std::hypot(double(width), double(height));
+    const double r = std::min(std::max(0.5, s.width / 2.0), diagonal);
     if (s.points.size() == 1) {
       paint_segment(labels, s.points[0], s.points[0], r, s.label);
     } else {

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <random>
+
 #include "common/temp_dir.h"
 #include "hair25d/core/atomic_file.h"
 #include "hair25d/core/error.h"
@@ -86,6 +90,87 @@ TEST(Strokes, RasterizeClipsOutsidePointsAndPaintsLaterOverEarlier) {
   EXPECT_EQ(m.at(4, 2), 0);
   for (int y = 0; y < 5; ++y)
     for (int x = 0; x < 9; ++x) EXPECT_NE(m.at(x, y), 2);
+}
+
+// The brush by its definition, pixel by pixel: every pixel within r of the
+// whole (unclipped) segment.
+LabelMap reference_stroke(const Vec2& a, const Vec2& b, double r, int w, int h) {
+  LabelMap m(w, h, kNoStroke);
+  const Vec2 d = b - a;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Vec2 p(x, y);
+      const double t =
+          d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      if ((p - (a + t * d)).squaredNorm() <= r * r) m.at(x, y) = 1;
+    }
+  return m;
+}
+
+TEST(Strokes, FarOutsidePointsAreClippedAsNearOnesAre) {
+  const int w = 70, h = 45;
+  auto one = [&](Vec2 a, Vec2 b, double width) {
+    Strokes s;
+    s.strokes.push_back({1, width, {a, b}});
+    return rasterize_strokes(s, w, h);
+  };
+  // Horizontal, vertical, diagonal and leftward strokes leaving the image: an
+  // end point at 5e9 (beyond int) paints what one just outside does.
+  const LabelMap right = one({10, 20}, {5e9, 20}, 3);
+  EXPECT_EQ(right, one({10, 20}, {w + 60, 20}, 3));
+  for (int x = 10; x < w; ++x) ASSERT_EQ(right.at(x, 20), 1) << x;
+  EXPECT_EQ(one({30, 7}, {30, 5e9}, 2), one({30, 7}, {30, h + 60}, 2));
+  EXPECT_EQ(one({3, 3}, {5e9 + 3, 5e9 + 3}, 3), one({3, 3}, {203, 203}, 3));
+  EXPECT_EQ(one({60, 9}, {-5e9, 9}, 4), one({60, 9}, {-60, 9}, 4));
+  // Both ends far outside on either side, up to the largest doubles.
+  const LabelMap across = one({-1.7e308, 12}, {1.7e308, 12}, 1);
+  EXPECT_EQ(across, one({-80, 12}, {w + 80, 12}, 1));
+  for (int x = 0; x < w; ++x) ASSERT_EQ(across.at(x, 12), 1) << x;
+  // Wholly outside, even with a wide brush that stops short of the image.
+  const LabelMap outside = one({-5e9, -30}, {5e9, -30}, 50);
+  for (int i = 0; i < w * h; ++i) ASSERT_EQ(outside.data()[i], kNoStroke);
+}
+
+TEST(Strokes, ClippingPaintsExactlyTheBrushesDefinition) {
+  const int w = 37, h = 23;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coord(-120.0, 150.0), width(1.0, 30.0);
+  int painted = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Vec2 a(coord(rng), coord(rng)), b(coord(rng), coord(rng));
+    const double wd = width(rng);
+    Strokes s;
+    s.strokes.push_back({1, wd, {a, b}});
+    const LabelMap got = rasterize_strokes(s, w, h);
+    ASSERT_EQ(got, reference_stroke(a, b, std::max(0.5, wd / 2), w, h))
+        << "trial " << trial << ": " << a.transpose() << " -> " << b.transpose() << " width " << wd;
+    for (int i = 0; i < w * h; ++i) painted += got.data()[i] == 1;
+  }
+  EXPECT_GT(painted, 0);  // the strokes do reach the image
+}
+
+TEST(Strokes, AbsurdWidthsAreClampedToTheImageDiagonal) {
+  const int w = 41, h = 26;
+  auto dot = [&](Vec2 p, double width) {
+    Strokes s;
+    s.strokes.push_back({2, width, {p}});
+    return rasterize_strokes(s, w, h);
+  };
+  // From inside the image a brush wider than the diagonal covers it all.
+  const LabelMap huge = dot({5, 5}, 1e300);
+  EXPECT_EQ(huge, dot({5, 5}, 1e6));
+  for (int i = 0; i < w * h; ++i) ASSERT_EQ(huge.data()[i], 2);
+  Strokes line;
+  line.strokes.push_back({3, 1e300, {{-5e9, 3}, {5e9, 3}}});
+  const LabelMap all = rasterize_strokes(line, w, h);
+  for (int i = 0; i < w * h; ++i) ASSERT_EQ(all.data()[i], 3);
+  // From outside, the radius is the diagonal (the documented clamp): a dot
+  // just under one diagonal right of the image's last column reaches that
+  // column only.
+  const double diagonal = std::hypot(double(w), double(h));
+  const LabelMap far = dot({w - 1 + diagonal - 0.25, 0}, 1e300);
+  EXPECT_EQ(far.at(w - 1, 0), 2);
+  EXPECT_EQ(far.at(w - 2, 0), kNoStroke);
 }
 
 TEST(Strokes, WriteThenReadRoundTrips) {

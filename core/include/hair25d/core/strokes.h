@@ -37,7 +37,8 @@ void write_strokes(const std::filesystem::path& path, const Strokes& strokes);
 // Paints the strokes as round brushes of their width into a label map of the
 // given size: kNoStroke where no stroke passes, 0 under background strokes,
 // the label under hair strokes. Later strokes paint over earlier ones; points
-// outside the image are clipped.
+// outside the image, however far, are clipped; a brush radius beyond the
+// image's diagonal is taken as the diagonal.
 inline constexpr int kNoStroke = -1;
 LabelMap rasterize_strokes(const Strokes& strokes, int width, int height);
 
