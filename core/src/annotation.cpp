@@ -1,7 +1,9 @@
 #include "hair25d/core/annotation.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
+#include <utility>
 
 #include "hair25d/core/atomic_file.h"
 #include "json_read.h"
@@ -106,6 +108,11 @@ AnnotatedCase read_annotated_case(const fs::path& folder, const ImageLimits& lim
 
   const json& pairs = jr::member(doc, source, "", "pairs");
   jr::expect_array(pairs, source, "pairs");
+  const std::vector<int> drawn = c.regions.labels();
+  // Each unordered pair of regions once: a repeat would count twice in the
+  // accuracy and a contradiction has no right answer. Value: the index of
+  // the pair that listed it and its relation, seen from the smaller id.
+  std::map<std::pair<int, int>, std::pair<std::size_t, Relation>> listed;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const std::string at = jr::index("pairs", i);
     jr::expect_object(pairs[i], source, at);
@@ -114,6 +121,12 @@ AnnotatedCase read_annotated_case(const fs::path& folder, const ImageLimits& lim
       *field = jr::as_int(jr::member(pairs[i], source, at, key), source, jr::join(at, key));
       if (!ids.count(*field)) {
         jr::fail(source, jr::join(at, key), "the id of a region listed in 'regions'",
+                 &pairs[i][key]);
+      }
+      if (!std::binary_search(drawn.begin(), drawn.end(), *field)) {
+        jr::fail(source, jr::join(at, key),
+                 "the id of a region drawn in " + regions_path.filename().string() +
+                     " (no pixel has this label)",
                  &pairs[i][key]);
       }
     }
@@ -125,6 +138,18 @@ AnnotatedCase read_annotated_case(const fs::path& folder, const ImageLimits& lim
       jr::fail(source, jr::join(at, "relation"), "\"above\", \"below\" or \"equal\"",
                &pairs[i]["relation"]);
     p.relation = *parsed;
+    const bool swapped = p.a > p.b;
+    const Relation seen = swapped ? reversed(p.relation) : p.relation;
+    const auto [it, fresh] = listed.try_emplace({std::min(p.a, p.b), std::max(p.a, p.b)}, i, seen);
+    if (!fresh) {
+      const std::string before = jr::index("pairs", it->second.first);
+      jr::fail(source, at,
+               it->second.second == seen
+                   ? "each pair of regions listed once; " + before + " lists it already"
+                   : "a relation that agrees with " + before +
+                         " (the same two regions with another relation)",
+               &pairs[i]);
+    }
     c.pairs.push_back(p);
   }
 

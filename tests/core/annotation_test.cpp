@@ -103,6 +103,45 @@ TEST_F(BrokenCase, BadRelationDuplicateIdAndEscapingPathAreErrors) {
   EXPECT_NE(error_after(self).find("two different regions"), std::string::npos);
 }
 
+TEST_F(BrokenCase, RepeatedPairsAreRefused) {
+  // The same pair again, and the same relation written the other way round:
+  // either would count twice in the accuracy.
+  for (const nlohmann::json& repeat : {nlohmann::json{{"a", 1}, {"b", 2}, {"relation", "below"}},
+                                       nlohmann::json{{"a", 2}, {"b", 1}, {"relation", "above"}}}) {
+    auto doc = doc_;
+    doc["pairs"].push_back(repeat);
+    const std::string e = error_after(doc);
+    EXPECT_NE(e.find("layering.json"), std::string::npos) << e;
+    EXPECT_NE(e.find("'pairs[1]'"), std::string::npos) << e;
+    EXPECT_NE(e.find("listed once; pairs[0] lists it already"), std::string::npos) << e;
+  }
+}
+
+TEST_F(BrokenCase, ContradictingPairsAreRefused) {
+  // pairs[0] says 1 below 2; these say 2 below 1 and 1 equal to 2.
+  for (const nlohmann::json& other : {nlohmann::json{{"a", 2}, {"b", 1}, {"relation", "below"}},
+                                      nlohmann::json{{"a", 1}, {"b", 2}, {"relation", "equal"}}}) {
+    auto doc = doc_;
+    doc["pairs"].push_back(other);
+    const std::string e = error_after(doc);
+    EXPECT_NE(e.find("layering.json"), std::string::npos) << e;
+    EXPECT_NE(e.find("'pairs[1]'"), std::string::npos) << e;
+    EXPECT_NE(e.find("agrees with pairs[0]"), std::string::npos) << e;
+  }
+}
+
+TEST_F(BrokenCase, PairNamingARegionNotDrawnIsRefused) {
+  // Region 3 is listed but no pixel of regions.png carries it.
+  auto doc = doc_;
+  doc["regions"].push_back({{"id", 3}, {"strand", 3}, {"name", "ghost"}});
+  EXPECT_EQ(error_after(doc), "");  // listing it alone is fine
+  doc["pairs"].push_back({{"a", 3}, {"b", 2}, {"relation", "above"}});
+  const std::string e = error_after(doc);
+  EXPECT_NE(e.find("layering.json"), std::string::npos) << e;
+  EXPECT_NE(e.find("'pairs[1].a'"), std::string::npos) << e;
+  EXPECT_NE(e.find("drawn in regions.png"), std::string::npos) << e;
+}
+
 TEST_F(BrokenCase, RegionsOfTheWrongSizeAreRefused) {
   save_label_map(folder_ / "regions.png", LabelMap(5, 4, 1));
   try {
