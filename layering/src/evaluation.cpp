@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <string>
+
+#include "hair25d/core/error.h"
 
 namespace hair25d::layering {
 
@@ -18,6 +21,18 @@ CaseScore score_relations(const AnnotatedCase& annotated,
   CaseScore score;
   score.name = annotated.name;
   score.regions = static_cast<int>(annotated.regions.labels().size());
+  // A pair judged twice would count twice (read_annotated_case refuses such
+  // files; a case built in code is checked here).
+  std::map<std::pair<int, int>, std::size_t> judged;
+  for (std::size_t i = 0; i < annotated.pairs.size(); ++i) {
+    const AnnotatedPair& p = annotated.pairs[i];
+    const auto [at, fresh] = judged.try_emplace({std::min(p.a, p.b), std::max(p.a, p.b)}, i);
+    if (!fresh) {
+      throw Error(annotated.name + ": pairs[" + std::to_string(i) + "] judges regions " +
+                  std::to_string(p.a) + " and " + std::to_string(p.b) + " again (pairs[" +
+                  std::to_string(at->second) + "] did); each pair of regions is judged once");
+    }
+  }
   for (const AnnotatedPair& p : annotated.pairs) {
     PairOutcome o{p.a, p.b, p.relation, std::nullopt, false};
     auto it = predicted.find({std::min(p.a, p.b), std::max(p.a, p.b)});

@@ -31,7 +31,8 @@ struct CaseScore {
   double accuracy() const { return pairs > 0 ? static_cast<double>(correct) / pairs : 0.0; }
 };
 
-// Compares `relations` with the case's judged pairs.
+// Compares `relations` with the case's judged pairs. Throws hair25d::Error
+// when two pairs judge the same two regions (either order): it would count twice.
 CaseScore score_relations(const AnnotatedCase& annotated,
                           const std::vector<RegionRelation>& relations);
 
