@@ -50,7 +50,10 @@ struct RegionRelation {
   Relation relation = Relation::kEqual;  // where a lies relative to b
   double score = 0.0;
   bool user_fixed = false;  // set by the user, kept when re-solving
-  bool overridden = false;  // dropped to break a cycle
+  // Flipped to agree with the drawing order: by layering, to break a cycle of
+  // stronger relations; by the model, where the strands' order (relations
+  // summed over their pieces) disagrees. `score` keeps its original sign.
+  bool overridden = false;
 };
 
 struct HairModel {
