@@ -61,6 +61,14 @@ void read_impl(const char* path, const ReadRequest& request, ReadResult* result)
     result->eight_bit = base == oiio::TypeDesc::UINT8;
     result->labels.resize(values);
     ok = in->read_image(0, 0, 0, 1, oiio::TypeDesc::UINT16, result->labels.data());
+    // 1/2/4-bit files (TIFF) come scaled to 8 bits (4-bit 1 -> 17): give the
+    // stored labels back, as 8-bit values that core unscales from 16 bits.
+    const int bits = spec.get_int_attribute("oiio:BitsPerSample", 8);
+    if (ok && result->eight_bit && bits >= 1 && bits < 8) {
+      const int top = (1 << bits) - 1;
+      for (std::uint16_t& v : result->labels)
+        v = static_cast<std::uint16_t>((v / 257 * top + 127) / 255 * 257);
+    }
   } else {
     // Float keeps 16-bit and HDR data exact until core quantises once.
     result->pixels.resize(values);

@@ -256,6 +256,23 @@ TEST(ImageIo, LabelMapsKeepTheirValues) {
   EXPECT_EQ(l8.at(1, 0), 7);
   EXPECT_EQ(l8.at(2, 0), 255);
 
+  // A 4-bit TIFF (through OpenImageIO, which scales it to 8 bits): labels
+  // 0..15 stored, given to OpenImageIO as their 8-bit images (v * 17).
+  std::vector<std::uint8_t> four(16 * 3);
+  for (std::size_t i = 0; i < four.size(); ++i) four[i] = static_cast<std::uint8_t>(i % 16 * 17);
+  {
+    auto out = OIIO::ImageOutput::create((dir / "l4.tif").string());
+    ASSERT_TRUE(out);
+    OIIO::ImageSpec spec(16, 3, 1, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:BitsPerSample", 4);
+    ASSERT_TRUE(out->open((dir / "l4.tif").string(), spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, four.data()));
+    ASSERT_TRUE(out->close());
+  }
+  const LabelMap l4 = load_label_map(dir / "l4.tif");
+  ASSERT_EQ(l4.width(), 16);
+  for (int x = 0; x < 16; ++x) ASSERT_EQ(l4.at(x, 2), x) << x;
+
   save_image(dir / "rgba.png", gradient(4, 4));
   EXPECT_THROW(load_label_map(dir / "rgba.png"), Error);
   LabelMap negative(2, 2, -1);
