@@ -111,11 +111,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "case %d skipped: %s\n", i, e.what());
       continue;
     }
-    std::map<std::pair<int, int>, Relation> truth;
-    for (const hair25d::AnnotatedPair& p : c.pairs) {
-      truth[{p.a, p.b}] = p.relation;
-      truth[{p.b, p.a}] = hair25d::reversed(p.relation);
-    }
+    const std::map<std::pair<int, int>, Relation> truth = hair25d::layering_training::pair_truth(c);
     Drawing& drawing = drawings.emplace_back();
     for (const layering::BoundaryReport& b : r.boundaries) {
       if (!b.occluding || b.left <= 0 || b.right <= 0) continue;

@@ -57,11 +57,7 @@ std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor)
       std::fprintf(stderr, "case %d skipped: %s\n", i, e.what());
       continue;
     }
-    std::map<std::pair<int, int>, Relation> truth;
-    for (const hair25d::AnnotatedPair& p : c.pairs) {
-      truth[{p.a, p.b}] = p.relation;
-      truth[{p.b, p.a}] = hair25d::reversed(p.relation);
-    }
+    const std::map<std::pair<int, int>, Relation> truth = hair25d::layering_training::pair_truth(c);
     const layering::Options defaults;
     const double reach = std::max(defaults.fit_reach_min, defaults.fit_reach_widths * r.line_width);
     for (std::size_t k = 0; k < r.boundaries.size(); ++k) {

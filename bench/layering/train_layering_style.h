@@ -3,7 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <utility>
 
+#include "hair25d/core/annotation.h"
 #include "hair25d/generator/generator.h"
 
 namespace hair25d::layering_training {
@@ -32,6 +35,17 @@ inline hair25d::generator::Options training_style(int i, std::uint64_t seed) {
   o.height = kSizes[i % 4][1];
   o.strand_masks = false;
   return o;
+}
+
+// The annotated relation of every judged pair, both ways round.
+inline std::map<std::pair<int, int>, hair25d::Relation> pair_truth(
+    const hair25d::AnnotatedCase& c) {
+  std::map<std::pair<int, int>, hair25d::Relation> truth;
+  for (const hair25d::AnnotatedPair& p : c.pairs) {
+    truth[{p.a, p.b}] = p.relation;
+    truth[{p.b, p.a}] = hair25d::reversed(p.relation);
+  }
+  return truth;
 }
 
 }  // namespace hair25d::layering_training
