@@ -474,6 +474,9 @@ int main(int argc, char** argv) {
   std::fprintf(f,
                "#include \"patch_model.h\"\n\n"
                "namespace hair25d::layering::detail {\n\n"
+               "// The trainer writes this file; it is kept as written so that a run\n"
+               "// reproduces it byte for byte.\n"
+               "// clang-format off\n"
                "// Written by bench/layering/train_layering_patch.cpp on generated drawings only\n"
                "// (never the annotated cases), Release build:\n"
                "//   train_layering_patch --cases %d --seed %llu --net-cases %d --iterations %d\n"
@@ -498,7 +501,9 @@ int main(int argc, char** argv) {
                "  static const SameDepthNet kNet = {",
                same_report.c_str());
   write_net(f, same.net);
-  std::fprintf(f, ", %.17g};\n  return kNet;\n}\n\n}  // namespace hair25d::layering::detail\n",
+  std::fprintf(f,
+               ", %.17g};\n  return kNet;\n}\n// clang-format on\n\n"
+               "}  // namespace hair25d::layering::detail\n",
                same.intercept);
   std::fclose(f);
   return 0;

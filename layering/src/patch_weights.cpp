@@ -2,6 +2,9 @@
 
 namespace hair25d::layering::detail {
 
+// The trainer writes this file; it is kept as written so that a run
+// reproduces it byte for byte.
+// clang-format off
 // Written by bench/layering/train_layering_patch.cpp on generated drawings only
 // (never the annotated cases), Release build:
 //   train_layering_patch --cases 400 --seed 20000 --net-cases 300 --iterations 800
@@ -4130,5 +4133,6 @@ const SameDepthNet& patch_same_weights() {
       1.618114651125125}, 4.9209678007598754};
   return kNet;
 }
+// clang-format on
 
 }  // namespace hair25d::layering::detail
