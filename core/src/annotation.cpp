@@ -64,8 +64,7 @@ AnnotatedCase read_annotated_case(const fs::path& folder, const ImageLimits& lim
   }
   AnnotatedCase c;
   c.folder = folder;
-  c.name = folder.filename().string();
-  if (c.name.empty()) c.name = folder.parent_path().filename().string();
+  c.name = annotated_case_name(folder);
 
   std::string image_rel = "image.png", regions_rel = "regions.png";
   if (const json* v = jr::optional_member(doc, source, "", "image"))
@@ -181,6 +180,11 @@ AnnotatedCase read_annotated_case(const fs::path& folder, const ImageLimits& lim
     }
   }
   return c;
+}
+
+std::string annotated_case_name(const fs::path& folder) {
+  return folder.has_filename() ? folder.filename().string()
+                               : folder.parent_path().filename().string();
 }
 
 std::vector<fs::path> find_annotated_cases(const fs::path& root) {

@@ -337,7 +337,7 @@ __attribute__((target("avx2,avx512f"), optimize("fp-contract=off"))) Rgb3f colou
 }
 
 // `offsets`: the centre search's steps along the normal, `count` of them
-// padded to a multiple of four by repeating the last; the paper search
+// padded to a multiple of eight by repeating the last; the paper search
 // steps 1, 2, ... up to `paper_steps`.
 // point_samples_avx2 eight samples at a time: the same values per lane
 // (bilinear_avx512), and min / max do not depend on the order.

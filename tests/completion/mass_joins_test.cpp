@@ -119,16 +119,23 @@ TEST(MassJoins, PiecesOfAnotherShadeAreNotJoined) {
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
 }
 
-TEST(MassJoins, BackHairOverATailIsJoined) {
-  // Region 2 lies on a lock (6) that nothing else covers: a tail hanging
-  // from under the back hair. 2 is above a region, yet back hair, and is
-  // joined to 1 across the fan; the tail stays a strand of its own.
+// Region 2 of the fan drawing lying on a lock (6, x 300..335) that hangs
+// from under it.
+Drawing back_hair_over_a_tail() {
   Drawing d = back_hair_under_fan(kBack);
   paint(
       d, [](double x, double y) { return x > 300 && x < 335 && y > 40 && y < 150; }, kFan, 6);
   paint(
       d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, kBack, 2);
   d.relations.push_back(below(6, 2));
+  return d;
+}
+
+TEST(MassJoins, BackHairOverATailIsJoined) {
+  // Region 2 lies on a lock (6) that nothing else covers: a tail hanging
+  // from under the back hair. 2 is above a region, yet back hair, and is
+  // joined to 1 across the fan; the tail stays a strand of its own.
+  const Drawing d = back_hair_over_a_tail();
   const Result r = run(d);
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
   const CompletedStrand* tail = strand_with(r, 6);
@@ -183,14 +190,9 @@ TEST(MassJoins, PiecesLyingOnOtherHairAreNotBackHair) {
   // As above, but a strand (7) lies over both the lock and region 2: the
   // lock is no tail of 2 (other hair covers it), so 2 lies on other hair,
   // is no back hair, and the fan between it and region 1 joins nothing.
-  Drawing d = back_hair_under_fan(kBack);
-  paint(
-      d, [](double x, double y) { return x > 300 && x < 335 && y > 40 && y < 150; }, kFan, 6);
-  paint(
-      d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, kBack, 2);
+  Drawing d = back_hair_over_a_tail();
   paint(
       d, [](double x, double y) { return x > 285 && x < 310 && y > 20 && y < 180; }, kFan, 7);
-  d.relations.push_back(below(6, 2));
   d.relations.push_back(below(6, 7));
   d.relations.push_back(below(2, 7));
   const Result r = run(d);

@@ -55,12 +55,7 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
     }
     if (!args->overlays_dir.empty()) {
       std::vector<std::string> names;
-      for (const auto& c : cases) {
-        // Named as read_annotated_case names a case.
-        const std::string name =
-            c.filename().empty() ? c.parent_path().filename().string() : c.filename().string();
-        names.push_back(name + ".png");
-      }
+      for (const auto& c : cases) names.push_back(annotated_case_name(c) + ".png");
       check_output_folder(args->overlays_dir, "--overlays", names, kOverlaysKind);
       check_inputs_outside(args->overlays_dir, {args->cases_dir}, "--overlays");
     }

@@ -54,6 +54,8 @@ AnnotatedCase read_annotated_case(const std::filesystem::path& folder,
 
 // The sub-folders of `root` that hold a layering.json, sorted by name.
 std::vector<std::filesystem::path> find_annotated_cases(const std::filesystem::path& root);
+// The name of the case in `folder` (its last path part; "cases/c1/" is "c1").
+std::string annotated_case_name(const std::filesystem::path& folder);
 
 // Writes a case folder (used by the synthetic generator).
 void write_annotated_case(const std::filesystem::path& folder, const AnnotatedCase& c);
