@@ -95,15 +95,16 @@ TEST(ModelStage, AnnotatedCaseBuildsWritesAndReadsBack) {
 
 // The contact sheet's panels: the drawing as it is (top left), completed
 // areas tinted light blue (top right), depth colours (bottom left), skeletons
-// (bottom right); panels are the drawing shrunk by a whole factor.
+// (bottom right); panels are the hair's box shrunk by a whole factor.
 TEST(ModelStage, ContactSheetShowsTheCompletedAreasInLightBlue) {
   const AnnotatedCase c = read_annotated_case(HAIR25D_TEST_DATA_DIR "/annotated/case1");
   const ModelRun run = build_model(c.image, c.regions, relations_of(c), {}, c.head_center);
   const int side = 200;
   const Image sheet = render_contact_sheet(run, side);
-  const int factor = (std::max(c.image.width(), c.image.height()) + side - 1) / side;
-  const int pw = (c.image.width() + factor - 1) / factor;
-  const int ph = (c.image.height() + factor - 1) / factor;
+  const auto [bx, by, bw, bh] = contact_sheet_box(run);
+  const int factor = (std::max(bw, bh) + side - 1) / side;
+  const int pw = (bw + factor - 1) / factor;
+  const int ph = (bh + factor - 1) / factor;
   ASSERT_EQ(sheet.width(), 2 * pw + 24);
   ASSERT_EQ(sheet.height(), 2 * ph + 24);
   // Panel pixels whose every source pixel is completed (a hidden part) are
@@ -124,8 +125,8 @@ TEST(ModelStage, ContactSheetShowsTheCompletedAreasInLightBlue) {
     for (int px = 0; px < pw - 1; ++px) {
       int n_completed = 0, n_any = 0;
       bool background_is_drawing = true;
-      for (int y = py * factor; y < (py + 1) * factor; ++y)
-        for (int x = px * factor; x < (px + 1) * factor; ++x) {
+      for (int y = by + py * factor; y < by + (py + 1) * factor; ++y)
+        for (int x = bx + px * factor; x < bx + (px + 1) * factor; ++x) {
           n_completed += completed.at(x, y), n_any += any.at(x, y);
           background_is_drawing &= run.model.background.at(x, y) == c.image.at(x, y);
         }
@@ -143,6 +144,33 @@ TEST(ModelStage, ContactSheetShowsTheCompletedAreasInLightBlue) {
   EXPECT_GE(tinted, 0.95 * all_completed);
   ASSERT_GT(empty, 100);
   EXPECT_EQ(untouched, empty);
+}
+
+// The sheet shows the hair, not the whole drawing: the box of the strands'
+// textures and skeletons with a margin, clipped to the drawing.
+TEST(ModelStage, ContactSheetBoxIsTheHairWithAMargin) {
+  ModelRun run;
+  run.model.width = 400;
+  run.model.height = 300;
+  run.model.image = Image(400, 300, Rgba{255, 255, 255, 255});
+  EXPECT_EQ(contact_sheet_box(run), (std::array<int, 4>{0, 0, 400, 300}));
+  Strand s;
+  s.texture = Image(20, 10, Rgba{10, 20, 30, 255});
+  s.texture_origin = {100, 50};
+  s.skeleton.nodes = {Vec2(105, 55), Vec2(130, 58)};
+  s.skeleton.parent = {-1, 0};
+  run.model.strands.push_back(s);
+  // Texture 100..120 × 50..60 and a node at x = 130: longer side 30, margin 16.
+  EXPECT_EQ(contact_sheet_box(run), (std::array<int, 4>{84, 34, 62, 42}));
+  // Near the corner the margin is clipped to the drawing.
+  run.model.strands[0].texture_origin = {0, 290};
+  run.model.strands[0].skeleton.nodes = {Vec2(5, 295), Vec2(15, 299)};
+  EXPECT_EQ(contact_sheet_box(run), (std::array<int, 4>{0, 274, 36, 26}));
+  const Image sheet = render_contact_sheet(run, 9);
+  // 36 × 26 shrunk by 4: 9 × 7 panels, four of them with 8 px gaps.
+  EXPECT_EQ(sheet.width(), 2 * 9 + 24);
+  EXPECT_EQ(sheet.height(), 2 * 7 + 24);
+  EXPECT_THROW(render_contact_sheet(run, 0), Error);
 }
 
 TEST(ModelStage, WriteModelRunPutsTheContactSheetInsideTheAtomicFolder) {

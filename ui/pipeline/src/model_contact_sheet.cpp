@@ -2,10 +2,13 @@
 // completion (light blue, as the paper's Fig. 1d), the depth order and the
 // skeletons.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
+#include <string>
 #include <vector>
 
+#include "hair25d/core/error.h"
 #include "hair25d/pipeline/model_stage.h"
 
 namespace hair25d::pipeline {
@@ -93,15 +96,18 @@ Rgba depth_colour(int depth, int max_depth) {
           static_cast<std::uint8_t>(255 - 215 * t), 255};
 }
 
-Image shrink(const Image& in, int max_side) {
-  const int factor = std::max(1, (std::max(in.width(), in.height()) + max_side - 1) / max_side);
-  Image out((in.width() + factor - 1) / factor, (in.height() + factor - 1) / factor);
+// The box {x, y, w, h} of `in`, shrunk by a whole factor so that its longer
+// side is at most max_side (each output pixel the mean of its source pixels).
+Image shrink(const Image& in, const std::array<int, 4>& box, int max_side) {
+  const auto [bx, by, bw, bh] = box;
+  const int factor = std::max(1, (std::max(bw, bh) + max_side - 1) / max_side);
+  Image out((bw + factor - 1) / factor, (bh + factor - 1) / factor);
   for (int y = 0; y < out.height(); ++y)
     for (int x = 0; x < out.width(); ++x) {
       int r = 0, g = 0, b = 0, n = 0;
-      for (int sy = y * factor; sy < std::min(in.height(), (y + 1) * factor); ++sy)
-        for (int sx = x * factor; sx < std::min(in.width(), (x + 1) * factor); ++sx) {
-          const Rgba c = in.at(sx, sy);
+      for (int sy = y * factor; sy < std::min(bh, (y + 1) * factor); ++sy)
+        for (int sx = x * factor; sx < std::min(bw, (x + 1) * factor); ++sx) {
+          const Rgba c = in.at(bx + sx, by + sy);
           r += c.r, g += c.g, b += c.b, ++n;
         }
       out.at(x, y) = {static_cast<std::uint8_t>(r / n), static_cast<std::uint8_t>(g / n),
@@ -112,9 +118,38 @@ Image shrink(const Image& in, int max_side) {
 
 }  // namespace
 
+std::array<int, 4> contact_sheet_box(const ModelRun& run) {
+  const HairModel& m = run.model;
+  const int width = m.image.width(), height = m.image.height();
+  // A drawing is mostly body, clothes and background: the hair alone, with
+  // room round it, is what a person checks, at the largest size that fits.
+  double x0 = width, y0 = height, x1 = 0, y1 = 0;
+  auto take = [&](double ax, double ay, double bx, double by) {
+    x0 = std::min(x0, ax), y0 = std::min(y0, ay), x1 = std::max(x1, bx), y1 = std::max(y1, by);
+  };
+  for (const Strand& s : m.strands) {
+    if (!s.texture.empty())
+      take(s.texture_origin.x(), s.texture_origin.y(), s.texture_origin.x() + s.texture.width(),
+           s.texture_origin.y() + s.texture.height());
+    for (const Vec2& p : s.skeleton.nodes)
+      if (p.allFinite()) take(p.x(), p.y(), p.x(), p.y());
+  }
+  if (!(x1 > x0 && y1 > y0)) return {0, 0, width, height};
+  const double margin = std::max(16.0, std::max(x1 - x0, y1 - y0) / 8);
+  const int bx0 = std::clamp(static_cast<int>(std::floor(x0 - margin)), 0, width - 1);
+  const int by0 = std::clamp(static_cast<int>(std::floor(y0 - margin)), 0, height - 1);
+  const int bx1 = std::clamp(static_cast<int>(std::ceil(x1 + margin)), bx0 + 1, width);
+  const int by1 = std::clamp(static_cast<int>(std::ceil(y1 + margin)), by0 + 1, height);
+  return {bx0, by0, bx1 - bx0, by1 - by0};
+}
+
 Image render_contact_sheet(const ModelRun& run, int panel_max_side) {
   const HairModel& m = run.model;
+  if (panel_max_side < 1)
+    throw Error("render_contact_sheet: panel_max_side = " + std::to_string(panel_max_side) +
+                "; must be at least 1");
   if (m.image.empty()) return {};
+  const std::array<int, 4> box = contact_sheet_box(run);
   const std::vector<int> order = back_to_front(m);
   Image skeletons = composite(m, order);
   Image completed = skeletons;
@@ -136,7 +171,7 @@ Image render_contact_sheet(const ModelRun& run, int panel_max_side) {
   }
 
   wash(skeletons, {255, 255, 255, 255}, 115);
-  const double w = std::max(2.0, std::max(m.width, m.height) / 300.0);
+  const double w = std::max(2.0, std::max(box[2], box[3]) / 300.0);
   for (const Strand& s : m.strands) {
     const Skeleton& k = s.skeleton;
     for (std::size_t i = 0; i < k.nodes.size(); ++i)
@@ -146,8 +181,9 @@ Image render_contact_sheet(const ModelRun& run, int panel_max_side) {
     if (!k.nodes.empty()) disc(skeletons, k.nodes[0], 2.0 * w, {30, 60, 230, 255});
   }
 
-  const Image panels[4] = {shrink(m.image, panel_max_side), shrink(completed, panel_max_side),
-                           shrink(depth, panel_max_side), shrink(skeletons, panel_max_side)};
+  const Image panels[4] = {
+      shrink(m.image, box, panel_max_side), shrink(completed, box, panel_max_side),
+      shrink(depth, box, panel_max_side), shrink(skeletons, box, panel_max_side)};
   const int pw = panels[0].width(), ph = panels[0].height(), gap = 8;
   Image sheet(2 * pw + 3 * gap, 2 * ph + 3 * gap, {255, 255, 255, 255});
   for (int p = 0; p < 4; ++p) {

@@ -3,6 +3,7 @@
 // assembled into a core HairModel with a contact sheet for a person to check.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -71,8 +72,16 @@ ModelRun run_model(const Image& image, const Strokes* strokes, const ModelOption
 
 // The contact sheet: the drawing; the completed areas in light blue (as the
 // paper's Fig. 1d); strands coloured by depth, back blue to front red; the
-// skeletons (red, tips green, roots blue) over the strands.
+// skeletons (red, tips green, roots blue) over the strands. Every panel shows
+// the same part of the drawing, contact_sheet_box(run), shrunk by one whole
+// factor so that its longer side is at most `panel_max_side`.
 Image render_contact_sheet(const ModelRun& run, int panel_max_side = 640);
+
+// The part of the drawing a contact sheet shows: the box of every strand's
+// texture and skeleton, grown by a margin (an eighth of its longer side, at
+// least 16 px) and clipped to the drawing; the whole drawing when there are
+// no strands. {x, y, width, height}.
+std::array<int, 4> contact_sheet_box(const ModelRun& run);
 
 // Writes the model folder (core write_model_into) with contact_sheet.png inside
 // it, atomically: the folder appears only once every file is in it.
