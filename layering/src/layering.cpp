@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -92,28 +93,40 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                 "; they must have the same size");
   // Helpers for every parallel step below, started once (parallel.h).
   detail::Pool pool;
-  const std::vector<int> ids = detail::distinct_labels(regions, &pool);
-  if (ids.size() < 2)
-    throw Error("layering: the region map has " + std::to_string(ids.size()) +
-                " hair region(s); layering needs at least two");
-  for (const RegionRelation& r : options.fixed)
-    for (int id : {r.a, r.b})
-      if (!std::binary_search(ids.begin(), ids.end(), id))
-        throw Error("layering::Options::fixed names region " + std::to_string(id) +
-                    ", which is not in the region map");
-  report(progress, "layering", 0.0, "boundaries");
+  // The region ids are read on the pool's helper while this thread fills
+  // the outlines (filling the moments the fill leaves a core idle), and
+  // checked before anything else is, so bad input is refused as before.
+  detail::DistinctLabels scan(regions, &pool);
+  std::vector<int> ids;
+  auto check_ids = [&] {
+    ids = scan.get();
+    if (ids.size() < 2)
+      throw Error("layering: the region map has " + std::to_string(ids.size()) +
+                  " hair region(s); layering needs at least two");
+    for (const RegionRelation& r : options.fixed)
+      for (int id : {r.a, r.b})
+        if (!std::binary_search(ids.begin(), ids.end(), id))
+          throw Error("layering::Options::fixed names region " + std::to_string(id) +
+                      ", which is not in the region map");
+  };
 
   Result out;
   // Grey levels are made on a second core meanwhile (line_response.h).
   detail::LineResponse lines(image, &regions);
   OutlineFill fill;
   detail::LabelBox filled_box;  // of out.labels' non-zero labels, with the fill
-  if (options.fill_outlines) {
-    fill = detail::fill_outlines(regions, &pool, &filled_box);
-    out.labels = std::move(fill.labels);
-  } else {
-    out.labels = regions;
+  try {
+    if (options.fill_outlines) fill = detail::fill_outlines(regions, &pool, &filled_box);
+  } catch (...) {
+    check_ids();
+    throw;
   }
+  check_ids();
+  report(progress, "layering", 0.0, "boundaries");
+  if (options.fill_outlines)
+    out.labels = std::move(fill.labels);
+  else
+    out.labels = regions;
   out.line_width = options.line_width > 0 ? options.line_width
                    : fill.line_width > 0  ? fill.line_width
                                           : detail::LineResponse::estimate_line_width(image);
@@ -153,6 +166,12 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     Polyline curve = b.points;
     if (b.closed()) curve.push_back(curve.front());
     measured[i] = lines.measure(curve, 1.5 * out.line_width, out.labels, b.left, b.right);
+  });
+  // The groups of regions that neighbour each other without a boundary of
+  // their own, for the end (neighbours.h): on the pool's helper meanwhile.
+  std::optional<detail::IslandGroups> islands;
+  detail::BackgroundTask island_task(&pool, [&] {
+    islands = detail::island_groups(graph, out.labels, 16.0 * out.line_width, 3.0 * out.line_width);
   });
   std::vector<std::pair<double, double>> weighted;  // (contrast, length)
   for (int i = 0; i < nb; ++i) {
@@ -224,6 +243,37 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     const Vec2 arrive = -leave_end[i].near;
     const double cross = start.x() * arrive.y() - start.y() * arrive.x();
     out.boundaries[i].cues.turning = -std::atan2(cross, start.dot(arrive));
+  });
+  // --- Junction patches (an addition): the label map about both ends of
+  // each occluding hair boundary, read by two small networks (patch_model.h):
+  // one for the order, joined with 6b's log-odds below, one for same depth,
+  // joined with 6c's after the cues. They need only the filled map and the
+  // leaving directions: they are scored on the pool's helper from here on,
+  // while this thread works out the cues (whose serial steps leave that core
+  // idle otherwise), and here on the items the helper has not taken when the
+  // scores are needed. ---
+  const bool use_patches = options.metric == Metric::kLearned && options.junction_patches;
+  auto patched = [&](int i) {
+    const Boundary& b = bs[i];
+    return out.boundaries[i].occluding && b.left > 0 && b.right > 0 && !b.closed();
+  };
+  struct PatchSums {
+    double order = 0.0, same = 0.0;  // over both ends
+  };
+  std::vector<PatchSums> patch_sums(use_patches ? nb : 0);
+  const detail::PatchNet& order_net = detail::patch_weights();
+  const detail::SameDepthNet& same_net = detail::patch_same_weights();
+  const double patch_size = detail::patch_radius(reach);
+  const int order_inputs = use_patches ? detail::patch_inputs_used(order_net) : 0;
+  detail::ParallelLoop patch_loop(&pool, use_patches ? nb : 0, [&](int i) {
+    if (!patched(i)) return;
+    for (const detail::Patch& p : detail::boundary_patches(
+             out.labels, graph, bs[i], leave_start[i].near, leave_end[i].near, patch_size)) {
+      const detail::PatchScores scores =
+          detail::patch_scores(order_net, order_inputs, same_net.net, p);
+      patch_sums[i].order += scores.order;
+      patch_sums[i].same += scores.same;
+    }
   });
   for (int i = 0; i < nb; ++i) {
     const Boundary& b = bs[i];
@@ -442,34 +492,18 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     rep.equal_features = equal_features(e);
     rep.equal = equal_metric(rep.equal_features);
   });
-  // --- Junction patches (an addition): the label map about both ends of
-  // each occluding hair boundary, read by two small networks (patch_model.h):
-  // one for the order, joined with 6b's log-odds below, one for same depth,
-  // joined with 6c's here. ---
-  const bool use_patches = options.metric == Metric::kLearned && options.junction_patches;
-  auto patched = [&](int i) {
-    const Boundary& b = bs[i];
-    return out.boundaries[i].occluding && b.left > 0 && b.right > 0 && !b.closed();
-  };
+  // The junction patches' scores (started above), the same-depth one joined
+  // with 6c's log-odds.
+  patch_loop.finish();
   if (use_patches) {
-    const detail::PatchNet& order_net = detail::patch_weights();
-    const detail::SameDepthNet& same = detail::patch_same_weights();
-    const double radius = detail::patch_radius(reach);
-    const int order_inputs = detail::patch_inputs_used(order_net);
-    detail::parallel_for(&pool, nb, [&](int i) {
-      const Boundary& b = bs[i];
+    for (int i = 0; i < nb; ++i) {
+      if (!patched(i)) continue;
       BoundaryReport& rep = out.boundaries[i];
-      if (!patched(i)) return;
-      for (const detail::Patch& p : detail::boundary_patches(
-               out.labels, graph, b, leave_start[i].near, leave_end[i].near, radius)) {
-        const detail::PatchScores scores =
-            detail::patch_scores(order_net, order_inputs, same.net, p);
-        rep.patch += scores.order;
-        rep.patch_equal += scores.same;
-      }
-      rep.equal = same.intercept + same.net.order_weight * rep.equal +
-                  same.net.patch_weight * rep.patch_equal;
-    });
+      rep.patch = patch_sums[i].order;
+      rep.patch_equal = patch_sums[i].same;
+      rep.equal = same_net.intercept + same_net.net.order_weight * rep.equal +
+                  same_net.net.patch_weight * rep.patch_equal;
+    }
   }
   // A drawn line between two halves of one strand ends on the strand's
   // outline in what looks like a T-junction, but nothing is occluded there:
@@ -688,7 +722,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   out.relations = std::move(order.relations);
   out.depth = std::move(order.depth);
   out.overridden = std::move(order.overridden);
-  detail::add_island_neighbours(graph, 16.0 * out.line_width, 3.0 * out.line_width, out);
+  island_task.finish();
+  detail::add_island_neighbours(*islands, out);
   std::ostringstream s;
   s << out.states << " boundary states, " << problem.couplings.size() << " couplings, "
     << (solution.exact() ? "exact minimum cut"

@@ -18,8 +18,8 @@ std::pair<int, int> key(int a, int b) { return {std::min(a, b), std::max(a, b)};
 // same, and the drawing order already says which one is drawn over the other.
 // An island is a set of label-0 boundaries linked through junctions whose
 // length is under `island_perimeter`.
-void add_island_neighbours(const BoundaryGraph& graph, double island_perimeter, double sliver_reach,
-                           Result& out) {
+IslandGroups island_groups(const BoundaryGraph& graph, const LabelMap& labels,
+                           double island_perimeter, double sliver_reach) {
   const auto& bs = graph.boundaries;
   const int nb = static_cast<int>(bs.size());
   std::vector<int> parent(nb);
@@ -59,8 +59,9 @@ void add_island_neighbours(const BoundaryGraph& graph, double island_perimeter, 
   // Groups of labels that are neighbours of each other, each sorted and
   // without repeats, one after another in `members` (group g is
   // [starts[g], starts[g + 1])); their pairs are added in this order.
-  std::vector<int> members;
-  std::vector<std::size_t> starts{0};
+  IslandGroups groups;
+  std::vector<int>& members = groups.members;
+  std::vector<std::size_t>& starts = groups.starts;
   auto close_group = [&] {
     const auto first = members.begin() + static_cast<std::ptrdiff_t>(starts.back());
     std::sort(first, members.end());
@@ -82,7 +83,6 @@ void add_island_neighbours(const BoundaryGraph& graph, double island_perimeter, 
   // Across a sliver: a strand narrower than a line width or two drawn between
   // two others leaves them a few line widths apart. Look across every hair
   // boundary, along its normal, `reach` pixels each way.
-  const LabelMap& labels = out.labels;
   auto label_at = [&](const Vec2& p) {
     const int x = static_cast<int>(std::floor(p.x())), y = static_cast<int>(std::floor(p.y()));
     return x < 0 || y < 0 || x >= labels.width() || y >= labels.height() ? 0 : labels.at(x, y);
@@ -114,6 +114,12 @@ void add_island_neighbours(const BoundaryGraph& graph, double island_perimeter, 
       }
     }
   }
+  return groups;
+}
+
+void add_island_neighbours(const IslandGroups& groups, Result& out) {
+  const std::vector<int>& members = groups.members;
+  const std::vector<std::size_t>& starts = groups.starts;
   std::set<std::pair<int, int>> related;
   for (const RegionRelation& r : out.relations) related.insert(key(r.a, r.b));
   for (std::size_t g = 0; g + 1 < starts.size(); ++g)

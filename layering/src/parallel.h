@@ -89,6 +89,161 @@ class Pool {
   int helpers_ = 0;
 };
 
+// A parallel_for started now and finished later: helpers take items while
+// the caller does other work (one helper job per thread, queued behind the
+// pool's earlier jobs), and finish() takes the items still left on the
+// calling thread, waits for those under way on helpers and rethrows the
+// first exception an item threw. Items not taken before finish() all run on
+// the caller. The loop must outlive its items: it is neither copied nor
+// moved, and its end (without finish(), e.g. while an exception unwinds)
+// skips the items not yet taken and waits for those under way. Threads as
+// parallel_for: up to max_threads, one per `items_per_thread` items.
+template <class F>
+class ParallelLoop {
+ public:
+  ParallelLoop(Pool* pool, int n, F f, int max_threads = 0, int items_per_thread = 8)
+      : f_(std::move(f)), shared_(std::make_shared<Shared>(n)) {
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    // Threads cost tens of microseconds to start: not worth it for a handful
+    // of small items.
+    const int per = std::max(1, items_per_thread);
+    int threads = std::min({max_threads > 0 ? max_threads : cores, cores, (n + per - 1) / per});
+    if (pool != nullptr) threads = std::min(threads, pool->helpers() + 1);
+    auto helper = [shared = shared_, body = &f_] {
+      for (;;) {
+        // Announced before an item is taken, so the caller, once every item
+        // is taken, waits for this one.
+        ++shared->busy;
+        const int i = shared->next++;
+        const bool take = i < shared->n && !shared->failed;
+        if (take) run(*shared, i, *body);
+        --shared->busy;
+        shared->busy.notify_all();
+        if (!take) return;
+      }
+    };
+    try {
+      for (int t = 1; t < threads; ++t) {
+        if (pool != nullptr) {
+          pool->post(helper);
+          continue;
+        }
+        try {
+          std::thread(helper).detach();
+        } catch (const std::system_error&) {
+          break;  // no more threads to be had: the ones running take every item
+        }
+      }
+    } catch (...) {
+      // No destructor runs for a loop not made: stop the helpers posted.
+      shared_->failed = true;
+      wait();
+      throw;
+    }
+  }
+  ParallelLoop(const ParallelLoop&) = delete;
+  ParallelLoop& operator=(const ParallelLoop&) = delete;
+  ~ParallelLoop() {
+    if (finished_) return;
+    shared_->failed = true;  // no item starts from here on
+    wait();
+  }
+
+  void finish() {
+    if (finished_) return;
+    finished_ = true;
+    Shared& s = *shared_;
+    for (int i = s.next++; i < s.n && !s.failed; i = s.next++) run(s, i, f_);
+    wait();
+    if (s.error) std::rethrow_exception(s.error);
+  }
+
+ private:
+  struct Shared {
+    explicit Shared(int count) : n(count) {}
+    const int n;
+    std::atomic<int> next{0};
+    std::atomic<int> busy{0};  // helpers between announcing and ending an item
+    std::atomic<bool> failed{false};
+    std::mutex error_mutex;
+    std::exception_ptr error;
+  };
+  static void run(Shared& s, int i, F& body) {
+    try {
+      body(i);
+    } catch (...) {
+      const std::lock_guard lock(s.error_mutex);
+      if (!s.error) s.error = std::current_exception();
+      s.failed = true;
+    }
+  }
+  // Every item is taken (or skipped): wait for those under way on helpers.
+  void wait() {
+    for (int b = shared_->busy.load(); b != 0; b = shared_->busy.load()) shared_->busy.wait(b);
+  }
+  F f_;
+  std::shared_ptr<Shared> shared_;  // a helper starting late touches only this
+  bool finished_ = false;
+};
+
+// One job started on `pool`'s helper (queued behind its earlier jobs) and
+// finished by finish(): run there by the caller if no helper has taken it
+// yet, else waited for; its exception is rethrown by finish(). Like
+// ParallelLoop, it must outlive its job: its end (without finish(), e.g.
+// while an exception unwinds) keeps a helper from starting the job, or
+// waits for it where one has.
+template <class F>
+class BackgroundTask {
+ public:
+  BackgroundTask(Pool* pool, F f) : f_(std::move(f)), shared_(std::make_shared<Shared>()) {
+    if (pool == nullptr || pool->helpers() == 0) return;
+    pool->post([shared = shared_, body = &f_] {
+      if (!shared->claim()) return;  // the caller has it
+      shared->run(*body);
+    });
+  }
+  BackgroundTask(const BackgroundTask&) = delete;
+  BackgroundTask& operator=(const BackgroundTask&) = delete;
+  ~BackgroundTask() {
+    if (finished_) return;
+    if (shared_->claim()) return;  // never started: nothing to wait for
+    shared_->wait();
+  }
+
+  void finish() {
+    if (finished_) return;
+    finished_ = true;
+    if (shared_->claim())
+      shared_->run(f_);
+    else
+      shared_->wait();
+    if (shared_->error) std::rethrow_exception(shared_->error);
+  }
+
+ private:
+  struct Shared {
+    std::atomic<bool> taken{false};
+    std::atomic<bool> done{false};
+    std::exception_ptr error;  // written before done, read after it
+    bool claim() { return !taken.exchange(true); }
+    void run(F& body) {
+      try {
+        body();
+      } catch (...) {
+        error = std::current_exception();
+      }
+      done = true;
+      done.notify_all();
+    }
+    void wait() {
+      while (!done.load()) done.wait(false);
+    }
+  };
+  F f_;
+  std::shared_ptr<Shared> shared_;  // a helper starting late touches only this
+  bool finished_ = false;
+};
+
 // Calls f(i) once for every i in [0, n), on the calling thread and up to
 // max_threads − 1 more (items handed out one at a time, as costs vary with
 // boundary length), one thread per `items_per_thread` items at most. The
@@ -104,8 +259,6 @@ class Pool {
 template <class F>
 void parallel_for(Pool* pool, int n, F&& f, int max_threads = 0, int items_per_thread = 8) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  // Threads cost tens of microseconds to start: not worth it for a handful
-  // of small items.
   const int per = std::max(1, items_per_thread);
   int threads = std::min({max_threads > 0 ? max_threads : cores, cores, (n + per - 1) / per});
   if (pool != nullptr) threads = std::min(threads, pool->helpers() + 1);
@@ -113,54 +266,9 @@ void parallel_for(Pool* pool, int n, F&& f, int max_threads = 0, int items_per_t
     for (int i = 0; i < n; ++i) f(i);
     return;
   }
-  struct Shared {
-    explicit Shared(int count) : n(count) {}
-    const int n;
-    std::atomic<int> next{0};
-    std::atomic<int> busy{0};  // helpers between announcing and ending an item
-    std::atomic<bool> failed{false};
-    std::mutex error_mutex;
-    std::exception_ptr error;
-  };
-  auto run = [](Shared& s, int i, auto& body) {
-    try {
-      body(i);
-    } catch (...) {
-      const std::lock_guard lock(s.error_mutex);
-      if (!s.error) s.error = std::current_exception();
-      s.failed = true;
-    }
-  };
-  auto shared = std::make_shared<Shared>(n);
-  auto* body = &f;
-  auto helper = [shared, body, run] {
-    for (;;) {
-      // Announced before an item is taken, so the caller, once every item is
-      // taken, waits for this one.
-      ++shared->busy;
-      const int i = shared->next++;
-      const bool take = i < shared->n && !shared->failed;
-      if (take) run(*shared, i, *body);
-      --shared->busy;
-      shared->busy.notify_all();
-      if (!take) return;
-    }
-  };
-  for (int t = 1; t < threads; ++t) {
-    if (pool != nullptr) {
-      pool->post(helper);
-      continue;
-    }
-    try {
-      std::thread(helper).detach();
-    } catch (const std::system_error&) {
-      break;  // no more threads to be had: the ones running take every item
-    }
-  }
-  for (int i = shared->next++; i < n && !shared->failed; i = shared->next++) run(*shared, i, f);
-  // Every item is taken: wait for those under way on helpers.
-  for (int b = shared->busy.load(); b != 0; b = shared->busy.load()) shared->busy.wait(b);
-  if (shared->error) std::rethrow_exception(shared->error);
+  ParallelLoop<std::reference_wrapper<std::remove_reference_t<F>>> loop(
+      pool, n, std::ref(f), max_threads, items_per_thread);
+  loop.finish();
 }
 
 // The same with threads started for the call.

@@ -175,21 +175,40 @@ inline void distinct_labels_into(const int* data, std::size_t from, std::size_t 
 // halves on two cores (`pool`'s helper where one is given). With
 // `widest_blocks` false, blocks are compared four labels at a time even
 // where the processor has AVX-512F (the same labels, for tests).
+class DistinctLabels {
+ public:
+  // Starts the scan: its halves go to `pool`'s helper (queued behind the
+  // pool's earlier jobs) while the caller does other work.
+  DistinctLabels(const LabelMap& map, Pool* pool, bool widest_blocks = true)
+      : loop_(pool, map.size() >= kSplit ? 2 : 1, Part{&map, &seen_, widest_blocks}, 2, 1) {}
+  // The labels, sorted; the halves no helper has taken are scanned here.
+  std::vector<int> get() {
+    loop_.finish();
+    seen_[0].insert(seen_[1].begin(), seen_[1].end());
+    return {seen_[0].begin(), seen_[0].end()};
+  }
+
+ private:
+  static constexpr std::size_t kSplit = std::size_t{1}
+                                        << 18;  // pixels below which one pass is quicker
+  struct Part {
+    const LabelMap* map;
+    std::array<std::set<int>, 2>* seen;
+    bool widest_blocks;
+    void operator()(int p) const {
+      const std::size_t n = map->size();
+      const int parts = n >= kSplit ? 2 : 1;
+      distinct_labels_into(map->data(), n * p / parts, n * (p + 1) / parts, (*seen)[p],
+                           widest_blocks);
+    }
+  };
+  std::array<std::set<int>, 2> seen_;  // before loop_: its items write here
+  ParallelLoop<Part> loop_;
+};
+
 inline std::vector<int> distinct_labels(const LabelMap& map, Pool* pool = nullptr,
                                         bool widest_blocks = true) {
-  const std::size_t n = map.size();
-  constexpr std::size_t kSplit = std::size_t{1} << 18;  // pixels below which one pass is quicker
-  const int parts = n >= kSplit ? 2 : 1;
-  std::array<std::set<int>, 2> seen;
-  parallel_for(
-      pool, parts,
-      [&](int p) {
-        distinct_labels_into(map.data(), n * p / parts, n * (p + 1) / parts, seen[p],
-                             widest_blocks);
-      },
-      2, 1);
-  seen[0].insert(seen[1].begin(), seen[1].end());
-  return {seen[0].begin(), seen[0].end()};
+  return DistinctLabels(map, pool, widest_blocks).get();
 }
 
 // A fixed-size set of bits: an eighth of the memory of a byte a flag, so the

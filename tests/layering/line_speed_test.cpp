@@ -12,10 +12,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
+#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -570,6 +572,16 @@ TEST(DistinctLabels, EqualLabelMapLabels) {
   for (int x = 0; x < 700; ++x) large.at(x, 225) = 55;
   EXPECT_EQ(detail::distinct_labels(large), large.labels());
   EXPECT_EQ(detail::distinct_labels(large, nullptr, false), large.labels());
+  // Started on a pool and read later (as the layering does, filling
+  // outlines meanwhile), the halves on its helper or on the caller.
+  for (const int helpers : {0, 1}) {
+    detail::Pool pool(helpers);
+    detail::DistinctLabels scan(large, &pool);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    EXPECT_EQ(scan.get(), large.labels()) << helpers << " helpers";
+    detail::DistinctLabels at_once(large, &pool, false);
+    EXPECT_EQ(at_once.get(), large.labels()) << helpers << " helpers";
+  }
 }
 
 // Sixteen, eight or four pixels at a time (AVX-512, AVX2, SSE2)
