@@ -14,6 +14,7 @@
 #include "hair25d/core/annotation.h"
 #include "hair25d/generator/generator.h"
 #include "hair25d/layering/layering.h"
+#include "join_upper_bound.h"
 
 namespace {
 
@@ -23,6 +24,7 @@ struct Total {
   completion::test::PairScore pairs;
   double iou_sum = 0.0;
   int strands = 0;
+  completion::test::UpperBound bound;
 };
 
 const char* relation_name(Relation r) {
@@ -50,8 +52,17 @@ void print_relation_errors(const AnnotatedCase& c, const std::vector<RegionRelat
   }
 }
 
+void print_bound(const std::string& name, const completion::test::UpperBound& b) {
+  std::printf(
+      "%s: upper bound of %d true pairs: through regions above both %d direct, %d chained; "
+      "above any piece %d, with the face %d; other pairs linked under both %d of %d\n",
+      name.c_str(), b.truth, b.both_direct, b.both_chained, b.strand_chained, b.strand_face_chained,
+      b.other_linked, b.other_pairs);
+}
+
 void score(const AnnotatedCase& c, bool predicted, const completion::Options& options,
-           const std::string& name, const std::string& overlay, Total* total) {
+           const std::string& name, const std::string& overlay, bool bound, std::FILE* csv,
+           Total* total) {
   completion::Input in = completion::test::input_from_case(c);
   if (predicted) {
     in.relations.clear();  // a failed layering leaves no relations, not the annotation's
@@ -63,6 +74,20 @@ void score(const AnnotatedCase& c, bool predicted, const completion::Options& op
     }
   }
   const completion::Result r = completion::complete_strands(in, options);
+  if (bound) {
+    std::map<int, int> joined;
+    for (std::size_t s = 0; s < r.strands.size(); ++s)
+      for (int id : r.strands[s].regions) joined[id] = static_cast<int>(s);
+    const completion::test::UpperBound b = completion::test::join_upper_bound(c, csv, &joined);
+    print_bound(name, b);
+    total->bound.truth += b.truth;
+    total->bound.both_direct += b.both_direct;
+    total->bound.both_chained += b.both_chained;
+    total->bound.strand_chained += b.strand_chained;
+    total->bound.strand_face_chained += b.strand_face_chained;
+    total->bound.other_pairs += b.other_pairs;
+    total->bound.other_linked += b.other_linked;
+  }
   const completion::test::PairScore s = completion::test::score_pairs(c, r);
   if (!overlay.empty()) {
     std::string file = name;
@@ -117,16 +142,34 @@ int main(int argc, char** argv) {
                  "completion::Options::max_join_angle_deg");
   app.add_option("--tangent-arm", options.tangent_arm, "completion::Options::tangent_arm");
   app.add_flag("!--no-face-joins", options.face_joins, "no joins across the face");
+  app.add_flag("!--no-path-joins", options.path_joins,
+               "no joins of back-hair pieces through the regions above both");
   app.add_option("--min-join-coverage", options.min_join_coverage,
                  "completion::Options::min_join_coverage");
+  bool bound = false;
+  app.add_flag("--upper-bound", bound,
+               "Also count the true pairs linked through regions lying above them (what any "
+               "join under known occluders could find)");
+  std::string csv_path;
+  app.add_option("--pairs-csv", csv_path,
+                 "With --upper-bound: a CSV line per region pair neither above the other "
+                 "(features for studying join rules)");
   CLI11_PARSE(app, argc, argv);
+  std::FILE* csv = nullptr;
+  if (!csv_path.empty() && bound) {
+    csv = std::fopen(csv_path.c_str(), "a");
+    if (!csv) {
+      std::fprintf(stderr, "eval_joins: cannot write %s\n", csv_path.c_str());
+      return 1;
+    }
+  }
   const bool predicted = relations == "predicted";
   Total total;
   try {
     if (!annotated.empty()) {
       for (const auto& folder : find_annotated_cases(annotated)) {
         const AnnotatedCase c = read_annotated_case(folder);
-        score(c, predicted, options, c.name, overlay, &total);
+        score(c, predicted, options, c.name, overlay, bound, csv, &total);
       }
     } else {
       const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
@@ -144,7 +187,7 @@ int main(int argc, char** argv) {
                     : shading == "screentone" ? kinds[3]
                                               : kinds[0];
         score(generator::generate_case(g), predicted, options, "seed " + std::to_string(seed + k),
-              overlay, &total);
+              overlay, bound, csv, &total);
       }
     }
   } catch (const std::exception& e) {
@@ -156,5 +199,7 @@ int main(int argc, char** argv) {
       "mean strand IoU %.3f\n",
       total.pairs.precision(), total.pairs.recall(), total.pairs.predicted, total.pairs.truth,
       total.pairs.correct, total.strands > 0 ? total.iou_sum / total.strands : 0.0);
+  if (bound) print_bound("all", total.bound);
+  if (csv) std::fclose(csv);
   return 0;
 }

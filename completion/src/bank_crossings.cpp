@@ -121,24 +121,6 @@ constexpr int kMinMassRays = 3;
 // with a colour step <= 10 mostly 0.02–0.26 (strand tips on the face), two
 // 0.32 and 0.43 (a bang lying on the face, in the back hair's colour).
 constexpr double kMinMassDepthRatio = 0.3;
-// Largest median RGB step across the cut. Pieces of one strand meet the
-// occluder in the same colour (flat, cel band, gradient and tone continue
-// under a strand); chosen on generated seeds 101-116 of the four shadings,
-// where the right joins stepped 0-8.4 (one 19.5, one 58.8) and the wrong
-// ones 11.9-163; the annotated cases make no region-level join either way.
-constexpr double kMaxMassColourStep = 10.0;
-
-// Per RGB of texture spread in the windows (the two windows' RGB standard
-// deviations summed) beyond kTextureFloor, the step may be this much larger:
-// an 11 x 11 window's mean over screentone dots moves with the dots' phase,
-// so one tone measures 10-35 RGB apart on the two sides of a strand. On
-// generated seeds 101-116 screentone windows spread 250-340 and the right
-// candidates stepped 12-35 (wrong ones 78-240); flat, cel and gradient
-// windows spread 0-50, the annotated cases' 19-65 (line rims, shading
-// strokes) — there a looser step joined a wrong pair (case1 8-14: 11.6 RGB,
-// spread 45), so below the floor the tolerance stays kMaxMassColourStep.
-constexpr double kMassSpreadShare = 0.1;
-constexpr double kTextureFloor = 60.0;
 
 struct MassRay {
   int index = 0;  // along the outline
@@ -148,11 +130,26 @@ struct MassRay {
   double spread = 0.0;  // the two windows' RGB standard deviations, summed
 };
 
-// Mean colour of a region's drawn pixels (not outlines) within 3 px of a
-// point a few pixels inside it along `inward`; `spread` (if given) gets
-// their RGB standard deviation.
+// Median over rays of the colour step across the cut: shading (gradients,
+// cel bands, tone) changes little across a strand but much across a head.
+double median_spread(const std::vector<MassRay>& list) {
+  std::vector<double> v;
+  for (const MassRay& r : list) v.push_back(r.spread);
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+double median_colour_step(const std::vector<MassRay>& list) {
+  std::vector<double> steps;
+  for (const MassRay& r : list) steps.push_back((r.colour_from - r.colour_to).norm());
+  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+  return steps[steps.size() / 2];
+}
+
+}  // namespace
+
 Eigen::Vector3d colour_near(const Context& ctx, int region, const Vec2& at, const Vec2& inward,
-                            double* spread = nullptr) {
+                            double* spread) {
   const Vec2 c = at + 6.0 * inward;
   Eigen::Vector3d sum(0, 0, 0);
   double squares = 0.0;
@@ -176,24 +173,6 @@ Eigen::Vector3d colour_near(const Context& ctx, int region, const Vec2& at, cons
   if (spread) *spread = std::sqrt(std::max(0.0, squares / count - mean.squaredNorm()));
   return mean;
 }
-
-// Median over rays of the colour step across the cut: shading (gradients,
-// cel bands, tone) changes little across a strand but much across a head.
-double median_spread(const std::vector<MassRay>& list) {
-  std::vector<double> v;
-  for (const MassRay& r : list) v.push_back(r.spread);
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
-double median_colour_step(const std::vector<MassRay>& list) {
-  std::vector<double> steps;
-  for (const MassRay& r : list) steps.push_back((r.colour_from - r.colour_to).norm());
-  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
-  return steps[steps.size() / 2];
-}
-
-}  // namespace
 
 TailedHair tailed_hair(const Context& ctx, const std::set<int>& front) {
   // Back hair with tails hanging from under it lies above them, so it is

@@ -25,6 +25,25 @@ inline constexpr double kMaxOutlineGap = 3.0;
 inline constexpr double kBankBaseCost = 0.5;
 inline constexpr double kBankShareWeight = 2.0;
 
+// Largest median RGB step across the cut. Pieces of one strand meet the
+// occluder in the same colour (flat, cel band, gradient and tone continue
+// under a strand); chosen on generated seeds 101-116 of the four shadings,
+// where the right joins stepped 0-8.4 (one 19.5, one 58.8) and the wrong
+// ones 11.9-163; the annotated cases make no region-level join either way.
+inline constexpr double kMaxMassColourStep = 10.0;
+
+// Per RGB of texture spread in the windows (the two windows' RGB standard
+// deviations summed) beyond kTextureFloor, the step may be this much larger:
+// an 11 x 11 window's mean over screentone dots moves with the dots' phase,
+// so one tone measures 10-35 RGB apart on the two sides of a strand. On
+// generated seeds 101-116 screentone windows spread 250-340 and the right
+// candidates stepped 12-35 (wrong ones 78-240); flat, cel and gradient
+// windows spread 0-50, the annotated cases' 19-65 (line rims, shading
+// strokes) — there a looser step joined a wrong pair (case1 8-14: 11.6 RGB,
+// spread 45), so below the floor the tolerance stays kMaxMassColourStep.
+inline constexpr double kMassSpreadShare = 0.1;
+inline constexpr double kTextureFloor = 60.0;
+
 // A ray from an edge pixel across the occluders: its index along the edge,
 // start (on the edge) and end (on the far bank).
 using BankRay = std::tuple<int, Vec2, Vec2>;
@@ -79,5 +98,20 @@ struct TailedHair {
 TailedHair tailed_hair(const Context& ctx, const std::set<int>& front);
 // Candidates, surest (most rays both ways) first.
 std::vector<MassJoin> mass_join_candidates(const Context& ctx);
+
+// Back-hair pieces linked through the regions lying above both of them
+// (mass_paths.cpp), after the mass and face joins: a piece facing another
+// only through other back pieces, one way, or as a sliver too shallow for
+// the rays above is still joined to it when a path runs from one to the
+// other under their common occluders and the colour continues across it.
+// Pieces lying above no region (or above tails only) and no tail. Smallest
+// colour step first. Empty unless Options::path_joins.
+std::vector<MassJoin> path_join_candidates(const Context& ctx);
+
+// Mean colour of a region's drawn pixels (not outlines) within 5 px of the
+// point 6 px from `at` along `inward`; `spread` (if given) gets their RGB
+// standard deviation.
+Eigen::Vector3d colour_near(const Context& ctx, int region, const Vec2& at, const Vec2& inward,
+                            double* spread = nullptr);
 
 }  // namespace hair25d::completion::detail

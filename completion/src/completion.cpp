@@ -240,6 +240,17 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
         {j.region_a, j.patch, false, static_cast<int>(reports.size()) - 2, &face.mask});
     ++result.joins;
   }
+  // Back-hair pieces linked under the regions above both (mass_paths.cpp).
+  for (const detail::MassJoin& j : detail::path_join_candidates(ctx)) {
+    if (!try_join(j.region_a, j.region_b)) continue;
+    EdgeReport ra, rb;
+    ra.region = j.region_a, ra.joined_region = j.region_b;
+    rb.region = j.region_b, rb.joined_region = j.region_a;
+    ra.completion = rb.completion = EdgeCase::kJoined;
+    reports.push_back(ra);
+    reports.push_back(rb);
+    ++result.joins;
+  }
   int done = 0;
   for (const auto& [id, list] : atoms_of_region) {
     std::vector<detail::Edge> open;

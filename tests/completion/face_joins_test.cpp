@@ -62,6 +62,10 @@ Result run(const Drawing& d) {
   Options o;
   o.inpaint_strands = false;
   o.inpaint_background = false;
+  // The face joins alone: path joins (mass_joins_test.cpp) also join pieces
+  // whose tops lie under the bangs, and back hair over tails is back hair
+  // to them as to the mass joins.
+  o.path_joins = false;
   return complete_strands(in, o);
 }
 
@@ -112,6 +116,7 @@ TEST(FaceJoins, BackHairOnBothSidesOfTheFaceIsJoinedBehindIt) {
   Options o;
   o.inpaint_strands = o.inpaint_background = false;
   o.face_joins = false;
+  o.path_joins = false;
   const Result off = complete_strands(in, o);
   ASSERT_NE(strand_with(off, 1), nullptr);
   EXPECT_EQ(strand_with(off, 1)->regions, (std::vector<int>{1}));

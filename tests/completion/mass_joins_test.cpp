@@ -231,5 +231,57 @@ TEST(MassJoins, PiecesOfAnotherScreentoneAreNotJoined) {
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
 }
 
+// Path joins (mass_paths.cpp): back hair (1, wide, left) and a sliver of it
+// (2) seen between two strands lying on it (3 over both, 4 over the sliver
+// only): the sliver is too shallow for the rays' depth rule (6 px behind a
+// 40 px crossing) and for the banks, but a path runs from one piece to the
+// other under strand 3, which lies above both.
+Drawing back_hair_and_sliver(Rgba sliver_colour) {
+  Drawing d = blank(300, 210);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 150 && y > 40 && y < 170; }, kBack, 1);
+  paint(
+      d, [](double x, double y) { return x > 150 && x < 200 && y > 40 && y < 170; }, sliver_colour,
+      2);
+  paint(
+      d, [](double x, double y) { return x > 135 && x < 177 && y > 10 && y < 200; }, kFan, 3);
+  paint(
+      d, [](double x, double y) { return x > 185 && x < 230 && y > 15 && y < 195; }, kFan, 4);
+  d.relations = {below(1, 3), below(2, 3), below(2, 4)};
+  return d;
+}
+
+TEST(PathJoins, BackHairSliverIsJoinedUnderTheStrandLyingOnBoth) {
+  const Drawing d = back_hair_and_sliver(kBack);
+  const Result r = run(d);
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(r, 3), (std::vector<int>{3}));
+  EXPECT_EQ(test::regions_with(r, 4), (std::vector<int>{4}));
+  // Without path joins no other rule joins them (the sliver is too shallow).
+  const Input in = test::input_of(d, Vec2(170, 20));
+  Options o;
+  o.max_join_angle_deg = 0.5;
+  o.min_width_ratio = 0.99;
+  o.inpaint_background = false;
+  o.face_joins = false;
+  o.path_joins = false;
+  EXPECT_EQ(test::regions_with(complete_strands(in, o), 1), (std::vector<int>{1}));
+}
+
+TEST(PathJoins, SliverOfAnotherShadeIsNotJoined) {
+  // 4 RGB darker: pieces of one paint continue under a strand in one colour.
+  const Result r = run(back_hair_and_sliver(Rgba{117, 78, 48, 255}));
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
+}
+
+TEST(PathJoins, PiecesWithNoOccluderInCommonAreNotJoined) {
+  // Strand 3 lies over the back hair only and 4 over the sliver only: no
+  // region lies above both, so no path runs under their common occluders.
+  Drawing d = back_hair_and_sliver(kBack);
+  d.relations = {below(1, 3), below(2, 4), below(3, 4)};
+  const Result r = run(d);
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
+}
+
 }  // namespace
 }  // namespace hair25d::completion

@@ -39,6 +39,9 @@ struct Options {
   // Back-hair pieces on opposite sides of the face joined across it (the
   // face hides them as a strand would; it is no region).
   bool face_joins = true;
+  // Back-hair pieces joined through the regions lying above both of them
+  // (a path under their common occluders, the colour continuing across).
+  bool path_joins = true;
 
   // Cases 2 and 3 (§5.2–5.4).
   ContourOptions contour;
