@@ -138,6 +138,36 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   const int nb = static_cast<int>(bs.size());
   out.boundaries.resize(nb);
 
+  const double reach = std::max(options.fit_reach_min, options.fit_reach_widths * out.line_width);
+  // The directions in which each boundary leaves its two ends, fitted three
+  // ways (over the fit length, 3 × farther, by quadratics), once for the
+  // junction patches and both rounds of junction cues below. Each boundary
+  // into its own slot, from here on on the pool's helper (while this thread
+  // waits for the early blur and measures lines), and on this thread for
+  // those left when the cues need them.
+  struct Leaving {
+    Vec2 near, wide, curved;
+  };
+  std::vector<Leaving> leave_start(nb), leave_end(nb);
+  const double skip = std::max(1.5, out.line_width);
+  auto leaving = [&](const Polyline& p) {
+    return Leaving{leaving_direction(p, reach), leaving_direction(p, 3 * reach),
+                   curved_leaving_direction(p, skip, reach)};
+  };
+  detail::ParallelLoop leaving_loop(&pool, nb, [&](int i) {
+    const Boundary& b = bs[i];
+    if (b.closed()) return;
+    leave_start[i] = leaving(b.points);
+    const Polyline back(b.points.rbegin(), b.points.rend());
+    leave_end[i] = leaving(back);
+    // From the first direction to the last one (arriving, -leave_end); on
+    // the screen (y down) a positive cross product turns right.
+    const Vec2 start = leave_start[i].near;
+    const Vec2 arrive = -leave_end[i].near;
+    const double cross = start.x() * arrive.y() - start.y() * arrive.x();
+    out.boundaries[i].cues.turning = -std::atan2(cross, start.dot(arrive));
+  });
+
   // --- Occluding boundaries: on a drawn line (§4.1). ---
   report(progress, "layering", 0.2, "line response");
   // Lines are measured only around the hair: the box of all non-background
@@ -214,36 +244,10 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
 
   // --- Junction angles, Φ_J, Φ_R, Φ (§4.2–4.4). ---
   report(progress, "layering", 0.4, "metrics");
-  const double reach = std::max(options.fit_reach_min, options.fit_reach_widths * out.line_width);
   const int nj = static_cast<int>(graph.junctions.size());
   std::vector<std::vector<Ray>> rays(nj);
   std::vector<char> cusp(nj, 0);
-  // The directions in which each boundary leaves its two ends, fitted three
-  // ways (over the fit length, 3 × farther, by quadratics), once for both
-  // rounds of junction cues below. Boundaries are fitted on all cores, each
-  // into its own slot.
-  struct Leaving {
-    Vec2 near, wide, curved;
-  };
-  std::vector<Leaving> leave_start(nb), leave_end(nb);
-  const double skip = std::max(1.5, out.line_width);
-  auto leaving = [&](const Polyline& p) {
-    return Leaving{leaving_direction(p, reach), leaving_direction(p, 3 * reach),
-                   curved_leaving_direction(p, skip, reach)};
-  };
-  detail::parallel_for(&pool, nb, [&](int i) {
-    const Boundary& b = bs[i];
-    if (b.closed()) return;
-    leave_start[i] = leaving(b.points);
-    const Polyline back(b.points.rbegin(), b.points.rend());
-    leave_end[i] = leaving(back);
-    // From the first direction to the last one (arriving, -leave_end); on
-    // the screen (y down) a positive cross product turns right.
-    const Vec2 start = leave_start[i].near;
-    const Vec2 arrive = -leave_end[i].near;
-    const double cross = start.x() * arrive.y() - start.y() * arrive.x();
-    out.boundaries[i].cues.turning = -std::atan2(cross, start.dot(arrive));
-  });
+  leaving_loop.finish();
   // --- Junction patches (an addition): the label map about both ends of
   // each occluding hair boundary, read by two small networks (patch_model.h):
   // one for the order, joined with 6b's log-odds below, one for same depth,
