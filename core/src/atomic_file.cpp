@@ -190,16 +190,29 @@ void write_text_atomically(const fs::path& target, const std::string& text) {
   });
 }
 
-std::string read_text_file(const fs::path& path) {
+std::string read_text_file(const fs::path& path, std::uintmax_t max_bytes) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw Error(path.string() + ": no such file");
   if (fs::is_directory(path, ec)) throw Error(path.string() + ": is a folder, expected a file");
+  const auto too_large = [&](const std::string& size) {
+    return Error(path.string() + ": " + size + " bytes; a text file may hold at most " +
+                 std::to_string(max_bytes));
+  };
+  // A regular file is measured before reading; anything else (a pipe,
+  // /dev/zero) is read up to one byte past the limit, so it cannot fill memory.
+  const bool regular = fs::is_regular_file(path, ec);
+  const std::uintmax_t size = regular ? fs::file_size(path, ec) : 0;
+  if (regular && !ec && size > max_bytes) throw too_large(std::to_string(size));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path.string() + ": cannot open the file for reading");
-  std::ostringstream text;
-  text << in.rdbuf();
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_bytes) throw too_large("more than " + std::to_string(max_bytes));
+  }
   if (in.bad()) throw Error(path.string() + ": read error");
-  return text.str();
+  return text;
 }
 
 void write_folder_atomically(const fs::path& target_in,

@@ -24,6 +24,16 @@ bool ImageLimits::is_valid(std::string* error) const {
       *error = "ImageLimits::max_pixels = " + std::to_string(max_pixels) + "; must be >= 1";
     return false;
   }
+  if (max_regions < 1) {
+    if (error)
+      *error = "ImageLimits::max_regions = " + std::to_string(max_regions) + "; must be >= 1";
+    return false;
+  }
+  if (max_pieces < 1) {
+    if (error)
+      *error = "ImageLimits::max_pieces = " + std::to_string(max_pieces) + "; must be >= 1";
+    return false;
+  }
   return true;
 }
 
@@ -115,11 +125,16 @@ oiio_plugin::ReadResult read_other(const fs::path& path, const ImageLimits& limi
       throw Error(path.string() + ": refused by the size check");
     case Status::kBadType:
       if (r.channels != 1) {
-        throw Error(path.string() + ": " + std::to_string(r.channels) +
-                    " channels; a label map must have exactly one");
+        throw Error(path.string() + ": " + std::to_string(r.channels) + " channels" +
+                    (r.alpha_channel >= 0 ? " (one of them alpha)" : "") +
+                    "; a label map must be single-channel, without alpha");
       }
       throw Error(path.string() + ": pixel type " + r.type +
-                  "; a label map must be 8- or 16-bit unsigned");
+                  "; a label map must be 1- to 16-bit unsigned integers");
+    case Status::kTooManyChannels:
+      throw Error(path.string() + ": " + std::to_string(r.channels) +
+                  " channels; an image may have at most " +
+                  std::to_string(oiio_plugin::kMaxChannels));
     default:
       throw Error(path.string() + ": cannot decode the pixels (" + r.message + ")");
   }
@@ -182,8 +197,11 @@ LabelMap load_label_map(const fs::path& path, const ImageLimits& limits) {
     const png::Pixels p = read_png(path, limits, png::Samples::kStored);
     const png::Header& h = p.header;
     if (h.channels != 1) {
-      throw Error(path.string() + ": " + std::to_string(h.channels) +
-                  " channels; a label map must have exactly one");
+      throw Error(path.string() + ": a " + h.stored + " PNG (read as " +
+                  std::to_string(h.channels) + " channels" +
+                  (h.channels == 2 || h.channels == 4 ? ", one of them alpha" : "") +
+                  "); a label map must be single-channel grey, 1 to 16 bits, without alpha or "
+                  "transparency");
     }
     LabelMap labels(h.width, h.height);
     int* out = labels.data();
@@ -191,6 +209,7 @@ LabelMap load_label_map(const fs::path& path, const ImageLimits& limits) {
       std::copy(p.words.begin(), p.words.end(), out);
     else
       std::copy(p.bytes.begin(), p.bytes.end(), out);
+    check_label_map(labels, path.string(), limits);
     return labels;
   }
   const oiio_plugin::ReadResult r = read_other(path, limits, true);
@@ -199,6 +218,7 @@ LabelMap load_label_map(const fs::path& path, const ImageLimits& limits) {
   LabelMap labels(r.width, r.height);
   for (std::size_t i = 0; i < r.labels.size(); ++i)
     labels.data()[i] = r.eight_bit ? r.labels[i] / 257 : r.labels[i];
+  check_label_map(labels, path.string(), limits);
   return labels;
 }
 

@@ -1,13 +1,53 @@
 #include "json_read.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hair25d::json_read {
 
+namespace {
+
+// The deepest nesting of arrays and objects outside strings, stopping at the
+// first level beyond `limit`. nlohmann::json parses deep nesting fine but
+// prints and copies it recursively: a file of 200000 '[' crashed the reader
+// (stack overflow) when an error message showed the value.
+int nesting_depth(const std::string& text, int limit) {
+  int depth = 0, deepest = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    if (in_string) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+      if (deepest > limit) break;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+}  // namespace
+
 json parse(const std::string& text, const std::string& source) {
+  const int depth = nesting_depth(text, kMaxDepth);
+  if (depth > kMaxDepth) {
+    throw Error(source + ": arrays and objects nested more than " + std::to_string(kMaxDepth) +
+                " levels deep; at most " + std::to_string(kMaxDepth) + " are allowed");
+  }
   try {
     return json::parse(text);
   } catch (const json::parse_error& e) {
+    throw Error(source + ": not valid JSON (" + e.what() + ")");
+  } catch (const json::exception& e) {
+    // e.g. out_of_range.406 for a number beyond double ("1e999").
     throw Error(source + ": not valid JSON (" + e.what() + ")");
   }
 }
@@ -15,7 +55,11 @@ json parse(const std::string& text, const std::string& source) {
 void fail(const std::string& source, const std::string& key, const std::string& expected,
           const json* got) {
   std::string message = source + ": key '" + key + "': expected " + expected;
-  if (got != nullptr) {
+  if (got != nullptr && got->is_structured() && got->size() > 16) {
+    // Not printed whole: it may be most of a large file.
+    message += ", got " + std::string(got->is_array() ? "an array of " : "an object of ") +
+               std::to_string(got->size()) + (got->is_array() ? " values" : " keys");
+  } else if (got != nullptr) {
     std::string shown = got->dump();
     if (shown.size() > 60) shown = shown.substr(0, 57) + "...";
     message += ", got " + shown;

@@ -13,7 +13,12 @@ namespace hair25d::json_read {
 
 using nlohmann::json;
 
-// Parses text; throws Error naming `source` on a syntax error.
+// Arrays and objects nested deeper than this are refused: the project's
+// files nest at most 5 deep (model.json's mesh vertices).
+inline constexpr int kMaxDepth = 64;
+
+// Parses text; throws Error naming `source` on a syntax error, a number
+// beyond double, or nesting deeper than kMaxDepth.
 json parse(const std::string& text, const std::string& source);
 
 [[noreturn]] void fail(const std::string& source, const std::string& key,

@@ -50,7 +50,11 @@ void read_impl(const char* path, const ReadRequest& request, ReadResult* result)
     result->status = Status::kRefused;
     return;
   }
-  const std::size_t values = static_cast<std::size_t>(w * h) * spec.nchannels;
+  if (spec.nchannels > kMaxChannels) {
+    result->status = Status::kTooManyChannels;
+    return;
+  }
+  const std::size_t pixels = static_cast<std::size_t>(w * h);
   bool ok = false;
   if (request.labels) {
     const auto base = static_cast<oiio::TypeDesc::BASETYPE>(spec.format.basetype);
@@ -59,20 +63,35 @@ void read_impl(const char* path, const ReadRequest& request, ReadResult* result)
       return;
     }
     result->eight_bit = base == oiio::TypeDesc::UINT8;
-    result->labels.resize(values);
+    result->labels.resize(pixels);
     ok = in->read_image(0, 0, 0, 1, oiio::TypeDesc::UINT16, result->labels.data());
-    // 1/2/4-bit files (TIFF) come scaled to 8 bits (4-bit 1 -> 17): give the
-    // stored labels back, as 8-bit values that core unscales from 16 bits.
-    const int bits = spec.get_int_attribute("oiio:BitsPerSample", 8);
+    // Files of fewer bits come scaled to the full range of their type (TIFF
+    // 4-bit 1 -> 8-bit 17, 12-bit 1 -> 16-bit 16): give the stored labels
+    // back, 1..7 bits as 8-bit values that core unscales from 16 bits.
+    const int bits = spec.get_int_attribute("oiio:BitsPerSample", result->eight_bit ? 8 : 16);
     if (ok && result->eight_bit && bits >= 1 && bits < 8) {
       const int top = (1 << bits) - 1;
       for (std::uint16_t& v : result->labels)
         v = static_cast<std::uint16_t>((v / 257 * top + 127) / 255 * 257);
+    } else if (ok && !result->eight_bit && bits > 8 && bits < 16) {
+      const std::uint32_t top = (1u << bits) - 1;
+      for (std::uint16_t& v : result->labels)
+        v = static_cast<std::uint16_t>((v * top + 32767) / 65535);
     }
   } else {
-    // Float keeps 16-bit and HDR data exact until core quantises once.
-    result->pixels.resize(values);
-    ok = in->read_image(0, 0, 0, spec.nchannels, oiio::TypeDesc::FLOAT, result->pixels.data());
+    // Float keeps 16-bit and HDR data exact until core quantises once. At
+    // most four channels are read: colour and alpha (alpha beyond the
+    // fourth channel is read on its own into the fourth place).
+    const int read = std::min(spec.nchannels, 4);
+    const bool far_alpha = spec.alpha_channel >= read;
+    result->channels = read;
+    result->alpha_channel = far_alpha ? 3 : spec.alpha_channel;
+    result->pixels.resize(pixels * read);
+    ok = in->read_image(0, 0, 0, far_alpha ? 3 : read, oiio::TypeDesc::FLOAT, result->pixels.data(),
+                        read * sizeof(float));
+    if (ok && far_alpha)
+      ok = in->read_image(0, 0, spec.alpha_channel, spec.alpha_channel + 1, oiio::TypeDesc::FLOAT,
+                          result->pixels.data() + 3, read * sizeof(float));
   }
   // read_image's result is not enough: libjpeg only warns about a truncated
   // stream (the missing rows come back grey) and OpenImageIO still returns
@@ -113,7 +132,9 @@ void read_entry(const char* path, const ReadRequest& request, ReadResult* result
   try {
     read_impl(path, request, result);
   } catch (const std::exception& e) {
-    result->status = Status::kCannotDecode;
+    // Before a size is known the reader failed on the header: not an image
+    // it can read (a GIF signature over garbage threw length_error).
+    result->status = result->width > 0 ? Status::kCannotDecode : Status::kCannotOpen;
     result->message = one_line(e.what(), "error");
   }
 }

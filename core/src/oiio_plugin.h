@@ -11,7 +11,10 @@
 
 namespace hair25d::oiio_plugin {
 
-inline constexpr int kAbiVersion = 1;
+inline constexpr int kAbiVersion = 2;
+// Images with more channels are refused (a drawing has at most four; EXR
+// and PSD may carry a few more, of which the first four and alpha are read).
+inline constexpr int kMaxChannels = 64;
 inline constexpr const char* kEntryPoint = "hair25d_core_oiio_api";
 inline constexpr const char* kFileName = "libhair25d_core_oiio.so";
 
@@ -21,6 +24,7 @@ enum class Status {
   kRefused,
   kCannotDecode,
   kBadType,
+  kTooManyChannels,
   kCannotCreate,
   kCannotWrite
 };

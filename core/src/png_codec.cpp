@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstdio>
 #include <memory>
+#include <system_error>
 
 #include "hair25d/core/error.h"
 
@@ -40,15 +41,53 @@ struct WriteStructs {
   ~WriteStructs() { png_destroy_write_struct(&png, info ? &info : nullptr); }
 };
 
+const char* colour_name(int colour) {
+  switch (colour) {
+    case PNG_COLOR_TYPE_GRAY:
+      return "grey";
+    case PNG_COLOR_TYPE_GRAY_ALPHA:
+      return "grey+alpha";
+    case PNG_COLOR_TYPE_PALETTE:
+      return "palette";
+    case PNG_COLOR_TYPE_RGB:
+      return "RGB";
+    case PNG_COLOR_TYPE_RGB_ALPHA:
+      return "RGBA";
+    default:
+      return "unknown colour type";
+  }
+}
+
+// Reads the chunks up to the pixels: the header as stored, nothing
+// allocated for rows yet (png_read_update_info allocates a row buffer, 2 GB
+// for a forged width of 2^31-1, so the caller's check comes before it).
+bool read_info(png_structp png, png_infop info, std::FILE* file, Header* header) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_init_io(png, file);
+  // libpng's own width/height limit (10^6) would refuse a forged header in its
+  // words; the caller's check names our limits instead.
+  png_set_user_limits(png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
+  png_read_info(png, info);
+  const int colour = png_get_color_type(png, info);
+  header->width = static_cast<int>(png_get_image_width(png, info));
+  header->height = static_cast<int>(png_get_image_height(png, info));
+  header->channels = png_get_channels(png, info);  // as stored until start_decoding
+  header->bit_depth = png_get_bit_depth(png, info);
+  header->stored_bit_depth = header->bit_depth;
+  header->stored = colour_name(colour);
+  if (png_get_valid(png, info, PNG_INFO_tRNS)) header->stored += " with a tRNS transparency chunk";
+  header->inflated_bytes = static_cast<std::uint64_t>(png_get_image_height(png, info)) *
+                           (1 + static_cast<std::uint64_t>(png_get_rowbytes(png, info)));
+  return true;
+}
+
 // Sets up the same expansions OpenImageIO applies (palette to RGB, 1/2/4-bit
 // grey to 8 bits, tRNS to alpha); no gamma conversion: values stay as stored.
 // Label maps unpack 1/2/4-bit grey to one byte per pixel without scaling:
 // PNG optimisers store maps of <= 15 labels as 4-bit grey, and scaling would
 // turn label 1 into 17.
-bool read_info(png_structp png, png_infop info, std::FILE* file, Samples samples, Header* header) {
+bool start_decoding(png_structp png, png_infop info, Samples samples, Header* header) {
   if (setjmp(png_jmpbuf(png))) return false;
-  png_init_io(png, file);
-  png_read_info(png, info);
   const int colour = png_get_color_type(png, info);
   const int depth = png_get_bit_depth(png, info);
   if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
@@ -62,8 +101,6 @@ bool read_info(png_structp png, png_infop info, std::FILE* file, Samples samples
   if (depth == 16 && std::endian::native == std::endian::little) png_set_swap(png);
   png_set_interlace_handling(png);
   png_read_update_info(png, info);
-  header->width = static_cast<int>(png_get_image_width(png, info));
-  header->height = static_cast<int>(png_get_image_height(png, info));
   header->channels = png_get_channels(png, info);
   header->bit_depth = png_get_bit_depth(png, info);
   return true;
@@ -118,11 +155,24 @@ Pixels read_checked(const fs::path& path, Samples samples,
   if (s.png != nullptr) s.info = png_create_info_struct(s.png);
   if (s.png == nullptr || s.info == nullptr) throw Error(path.string() + ": out of memory");
   Pixels out;
-  if (!read_info(s.png, s.info, file.get(), samples, &out.header)) {
+  if (!read_info(s.png, s.info, file.get(), &out.header)) {
     throw Error(path.string() + ": not a readable image (" + or_default(message, "bad PNG") + ")");
   }
   const Header& h = out.header;
   check(h, context);
+  std::error_code ec;
+  const std::uintmax_t file_bytes = fs::file_size(path, ec);
+  if (!ec && file_bytes < h.inflated_bytes / kMaxDeflateRatio) {
+    throw Error(path.string() + ": truncated: the header says " + std::to_string(h.width) + "x" +
+                std::to_string(h.height) + " " + h.stored + " pixels (" +
+                std::to_string(h.inflated_bytes) + " bytes uncompressed), which need at least " +
+                std::to_string(h.inflated_bytes / kMaxDeflateRatio) +
+                " bytes of PNG data (deflate compresses at most 1032:1); the file has " +
+                std::to_string(file_bytes));
+  }
+  if (!start_decoding(s.png, s.info, samples, &out.header)) {
+    throw Error(path.string() + ": not a readable image (" + or_default(message, "bad PNG") + ")");
+  }
   const std::size_t row_values = static_cast<std::size_t>(h.width) * h.channels;
   std::vector<png_bytep> rows(static_cast<std::size_t>(h.height));
   if (h.bit_depth == 16) {
@@ -134,8 +184,8 @@ Pixels read_checked(const fs::path& path, Samples samples,
     for (int y = 0; y < h.height; ++y) rows[y] = out.bytes.data() + row_values * y;
   }
   if (!read_rows(s.png, rows.data())) {
-    throw Error(path.string() + ": cannot decode the pixels (" +
-                or_default(message, "truncated or corrupt") + ")");
+    throw Error(path.string() + ": cannot decode the pixels, the file is truncated or corrupt (" +
+                or_default(message, "libpng gave no reason") + ")");
   }
   return out;
 }

@@ -16,9 +16,23 @@ bool has_png_signature(const std::filesystem::path& path);
 struct Header {
   int width = 0;
   int height = 0;
-  int channels = 0;   // as decoded: palettes expanded, tRNS as alpha
-  int bit_depth = 0;  // 8 or 16 as decoded (1/2/4-bit grey becomes 8, see Samples)
+  // As decoded (palettes expanded, tRNS as alpha; 1/2/4-bit grey becomes 8,
+  // see Samples); as stored in the header that read()'s check is given.
+  int channels = 0;
+  int bit_depth = 0;
+  // As stored: "grey", "grey+alpha", "palette", "RGB" or "RGBA", with
+  // " with a tRNS transparency chunk" when it has one; and its bits per sample.
+  std::string stored;
+  int stored_bit_depth = 0;
+  // The pixel data's size before compression (rows of stored samples, each
+  // with its filter byte, as if not interlaced).
+  std::uint64_t inflated_bytes = 0;
 };
+
+// Deflate compresses at most 1032:1 (a length-258 match in two bits), so a
+// file smaller than inflated_bytes / kMaxDeflateRatio cannot hold the pixels
+// its header claims: read() refuses it before allocating them.
+inline constexpr std::uint64_t kMaxDeflateRatio = 1032;
 
 // How 1/2/4-bit grey is widened to 8 bits: kScaled to the full range, as
 // for images (4-bit 15 -> 255); kStored keeps the stored values, as label
@@ -33,7 +47,8 @@ struct Pixels {
 };
 
 // Reads the header, calls check(header) (which throws to refuse, e.g. a size
-// beyond the limits, before anything is decoded), then decodes. Throws
+// beyond the limits, before anything is decoded), refuses a file too small
+// for the pixels its header claims (kMaxDeflateRatio), then decodes. Throws
 // hair25d::Error naming the file when it is not a readable PNG.
 template <typename Check>
 Pixels read(const std::filesystem::path& path, Samples samples, Check check);

@@ -30,6 +30,7 @@ LayeringCaseResult evaluate_one(const AnnotatedCase& c, const LayeringEvalOption
   std::optional<layering::Result> result;
   try {
     if (options.from_strokes) regions = run_segment(c.image, &*c.strokes, nullptr, false).regions;
+    check_label_map(regions, c.folder.string() + ": the region map");
     const auto start = std::chrono::steady_clock::now();
     result = layering::layer_regions(c.image, regions, options.layering);
     const double seconds =
@@ -62,6 +63,7 @@ LayeringCaseResult evaluate_one(const AnnotatedCase& c, const LayeringEvalOption
 LayeringRun run_layering(const Image& image, const LabelMap& regions,
                          const layering::Options& options, Progress* progress) {
   LayeringRun run;
+  check_label_map(regions, "layering: the region map");
   run.result = layering::layer_regions(image, regions, options, progress);
   run.overlay = layering::render_overlay(image, run.result);
   return run;

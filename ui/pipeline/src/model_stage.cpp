@@ -229,6 +229,8 @@ ModelRun run_model(const Image& image, const LabelMap& regions, std::optional<Ve
   if (!options.is_valid(&why)) throw Error(why);
   if (regions.labels().empty())
     throw Error("model: the regions hold no hair region (every label is 0); nothing to model");
+  // Before layering: too many regions or scattered pieces would run for hours.
+  check_label_map(regions, "model: the region map");
   const auto start = Clock::now();
   std::vector<RegionRelation> relations;
   std::map<int, int> depth;

@@ -2,6 +2,7 @@
 // that looks whole: write under a temporary name beside the target, then rename.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -47,8 +48,15 @@ void check_inputs_outside(const std::filesystem::path& folder,
 // Writes text to a file atomically.
 void write_text_atomically(const std::filesystem::path& target, const std::string& text);
 
-// Reads a whole text file; throws hair25d::Error naming the file if it cannot.
-std::string read_text_file(const std::filesystem::path& path);
+// The largest text (JSON) file read: a model.json of a large drawing is a few
+// MB; parsing takes about ten times the file's size in memory.
+inline constexpr std::uintmax_t kMaxTextFileBytes = 256u << 20;
+
+// Reads a whole text file; throws hair25d::Error naming the file if it cannot
+// or if it holds more than max_bytes (checked before reading a regular file;
+// a pipe or device is read no further than that).
+std::string read_text_file(const std::filesystem::path& path,
+                           std::uintmax_t max_bytes = kMaxTextFileBytes);
 
 // Replaces folder `target` by a folder filled by fill(tmp_folder): the old
 // folder (if any) is removed only after the new one is complete. An existing

@@ -1,6 +1,7 @@
 // Image files through OpenImageIO: PNG, JPEG, TIFF, PSD (flattened composite),
 // EXR, WebP; 8/16-bit and float; grey, RGB, RGBA — all read into one RGBA8 Image.
-// Sizes are checked against limits before any pixel is decoded.
+// Sizes are checked against limits before any pixel is decoded; label maps'
+// region counts after.
 #pragma once
 
 #include <cstdint>
@@ -11,9 +12,18 @@
 
 namespace hair25d {
 
+// The limits keep every command within this project's reference machine
+// (24 GB): hair25d model held ~230 bytes a pixel (0.96 GB for a 4.2-megapixel
+// drawing), ~15 GB at max_pixels; a B4 page scanned at 600 dpi is 52
+// megapixels (docs/formats.md, "Limits").
 struct ImageLimits {
-  int max_side = 16384;                   // pixels, either side
-  std::int64_t max_pixels = 100'000'000;  // width × height
+  int max_side = 16384;                  // pixels, either side
+  std::int64_t max_pixels = 64'000'000;  // width × height
+  // Label maps: distinct non-zero labels, and 4-connected pieces of one label.
+  // The paper's drawings have tens of regions; layering's cost grows with the
+  // pieces' junctions (a million one-pixel regions: 160 s and 3.6 GB).
+  int max_regions = 4096;
+  std::int64_t max_pieces = 16384;
 
   // False, with a message naming the option, its value and the rule, if unusable.
   bool is_valid(std::string* error) const;
@@ -25,9 +35,16 @@ struct ImageLimits {
 // beyond `limits`.
 Image load_image(const std::filesystem::path& path, const ImageLimits& limits = {});
 
-// Reads channel 0 of a single-channel 8- or 16-bit image as integer labels
-// (an annotation's regions.png, a segment label map).
+// Reads a single-channel 1- to 16-bit image as integer labels, as stored
+// (an annotation's regions.png, a segment label map), then check_label_map.
 LabelMap load_label_map(const std::filesystem::path& path, const ImageLimits& limits = {});
+
+// Throws hair25d::Error naming `source` when a region label map breaks a
+// rule: a negative label, more than limits.max_regions distinct non-zero
+// labels or more than limits.max_pieces pieces. Called where label maps enter
+// the pipeline (read from a file, or made by segmentation), before layering.
+void check_label_map(const LabelMap& labels, const std::string& source,
+                     const ImageLimits& limits = {});
 
 // Writes an 8-bit RGBA PNG (or any format OpenImageIO knows by the extension)
 // atomically: a temporary name in the same folder, then a rename.

@@ -21,13 +21,21 @@ struct Stroke {
 struct Strokes {
   std::vector<Stroke> strokes;
   std::optional<Vec2> head_center;
+  std::string source;  // the file read, named in messages ("" if made in code)
 
   // The distinct positive labels, sorted.
   std::vector<int> labels() const;
 };
 
+// What a stroke file may hold (docs/formats.md): a drawing's markup has tens
+// of strokes of tens of points. 60000 one-pixel labels made segment take
+// 270 s and 7.4 GB; the same number of regions is allowed as in a label map.
+inline constexpr std::size_t kMaxStrokes = 100'000;
+inline constexpr std::size_t kMaxStrokePoints = 1'000'000;
+inline constexpr std::size_t kMaxStrokeLabels = 4096;
+
 // Strict reader: a malformed file throws hair25d::Error naming the file, the key
-// and what was expected.
+// and what was expected, and so does one beyond the limits above.
 Strokes read_strokes(const std::filesystem::path& path);
 // The same from text; `source` names it in errors.
 Strokes parse_strokes(const std::string& text, const std::string& source);
@@ -38,8 +46,11 @@ void write_strokes(const std::filesystem::path& path, const Strokes& strokes);
 // given size: kNoStroke where no stroke passes, 0 under background strokes,
 // the label under hair strokes. Later strokes paint over earlier ones; points
 // outside the image, however far, are clipped; a brush radius beyond the
-// image's diagonal is taken as the diagonal.
+// image's diagonal is taken as the diagonal. Throws hair25d::Error naming
+// strokes.source when the segments' boxes (grown by the brush radius, within
+// the image) hold more than kMaxBrushWork pixels together: the painting's cost.
 inline constexpr int kNoStroke = -1;
+inline constexpr double kMaxBrushWork = 1e9;
 LabelMap rasterize_strokes(const Strokes& strokes, int width, int height);
 
 }  // namespace hair25d
