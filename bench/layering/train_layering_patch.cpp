@@ -25,6 +25,7 @@
 #include "hair25d/layering/metrics.h"
 #include "patch_model.h"
 #include "train_layering_style.h"
+#include "train_patch_mlp.h"
 
 namespace {
 
@@ -204,7 +205,9 @@ void write_net(std::FILE* f, const detail::PatchNet& net) {
 // logistic stage with intercept on the other drawings, weighted by
 // √(length / line width) as that model is trained.
 detail::SameDepthNet train_same_depth(const std::vector<Record>& records, int net_cases,
-                                      int iterations, std::uint64_t seed, std::string* report) {
+                                      int iterations, std::uint64_t seed,
+                                      const hair25d::layering_training::MlpOptions* adam,
+                                      std::string* report) {
   int n = 0, positives = 0, total = 0;
   for (const Record& r : records)
     if (r.drawing < net_cases) n += static_cast<int>(r.ends.size()), ++total, positives += r.y == 0;
@@ -223,21 +226,41 @@ detail::SameDepthNet train_same_depth(const std::vector<Record>& records, int ne
   }
   std::printf("same depth: %d ends, %d of %d boundaries same depth ...\n", n, positives, total);
   std::fflush(stdout);
-  const cv::Ptr<cv::ml::ANN_MLP> mlp =
-      train_network(x, t, w, detail::kPatchHidden, iterations, seed);
   detail::SameDepthNet out;
-  copy_weights(*mlp, out.net);
-  {
-    // Our forward pass against OpenCV's on the first ends.
-    double worst = 0;
-    for (int k = 0; k < std::min(n, 2000); ++k) {
-      cv::Mat o;
-      mlp->predict(x.row(k), o);
-      const detail::Patch& p = *reinterpret_cast<const detail::Patch*>(x.ptr<float>(k));
-      worst = std::max(worst, std::abs(o.at<float>(0) - detail::patch_net(out.net, p)));
+  if (adam != nullptr) {
+    // One row per end and its exchanged patch side by side.
+    hair25d::layering_training::RowMatrix px(n, detail::kPatchInputs), ps(n, detail::kPatchInputs);
+    std::vector<float> py(n), pw(n);
+    for (int k = 0; k < n; ++k) {
+      px.row(k) = Eigen::Map<const Eigen::RowVectorXf>(x.ptr<float>(2 * k), detail::kPatchInputs);
+      ps.row(k) =
+          Eigen::Map<const Eigen::RowVectorXf>(x.ptr<float>(2 * k + 1), detail::kPatchInputs);
+      py[k] = t.at<float>(2 * k);
+      pw[k] = w.at<float>(2 * k);
     }
-    std::printf("same-depth network against OpenCV's forward pass: largest difference %.3g\n",
-                worst);
+    hair25d::layering_training::MlpOptions o = *adam;
+    o.symmetric = true;
+    o.inputs = detail::kPatchInputs;
+    o.wide_dropout = 0.0;
+    o.seed = seed + 1;
+    const detail::PatchNet net = hair25d::layering_training::train_patch_mlp(px, ps, py, pw, o);
+    out.net = net;
+  } else {
+    const cv::Ptr<cv::ml::ANN_MLP> mlp =
+        train_network(x, t, w, detail::kPatchHidden, iterations, seed);
+    copy_weights(*mlp, out.net);
+    {
+      // Our forward pass against OpenCV's on the first ends.
+      double worst = 0;
+      for (int k = 0; k < std::min(n, 2000); ++k) {
+        cv::Mat o;
+        mlp->predict(x.row(k), o);
+        const detail::Patch& p = *reinterpret_cast<const detail::Patch*>(x.ptr<float>(k));
+        worst = std::max(worst, std::abs(o.at<float>(0) - detail::patch_net(out.net, p)));
+      }
+      std::printf("same-depth network against OpenCV's forward pass: largest difference %.3g\n",
+                  worst);
+    }
   }
   // The stage on the other drawings: (1, 6c log-odds, score) → same depth.
   std::vector<Eigen::VectorXd> sx[2];
@@ -306,6 +329,18 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, detail::kPatchScales));
   app.add_option("--same-iterations", same_iterations, "RPROP iterations, same-depth network")
       ->check(CLI::PositiveNumber);
+  hair25d::layering_training::MlpOptions adam;
+  bool use_adam = false;
+  app.add_flag("--adam", use_adam,
+               "train by minibatch Adam on the pair scores (train_patch_mlp.h), not RPROP");
+  app.add_option("--epochs", adam.epochs, "Adam: passes over the ends")->check(CLI::PositiveNumber);
+  app.add_option("--rate", adam.rate, "Adam: step")->check(CLI::PositiveNumber);
+  app.add_option("--batch", adam.batch, "Adam: ends per step")->check(CLI::PositiveNumber);
+  app.add_option("--decay", adam.decay, "Adam: L2 on the weights")->check(CLI::NonNegativeNumber);
+  app.add_option("--wide-dropout", adam.wide_dropout,
+                 "Adam: share of order-network rows trained without the wide scale")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_flag("--anneal", adam.anneal, "Adam: the step falls linearly to 0");
   app.add_option("--dump", dump, "write the patches here and stop");
   app.add_option("--from", from, "read the patches from here instead of drawing");
   app.add_option("--write", write, "write layering/src/patch_weights.cpp here");
@@ -357,13 +392,29 @@ int main(int argc, char** argv) {
   // The order network may read the fine scale only: the wide one carries the
   // generator's strand shapes, which real drawings need not share.
   const int used = parts == 1 ? order_scales * detail::kPatchScaleInputs : d;
-  const cv::Ptr<cv::ml::ANN_MLP> mlp =
-      train_network(x.colRange(0, used).clone(), t, cv::Mat(), hidden, iterations, seed);
+  auto net = std::make_unique<detail::PatchNet>();
+  std::vector<double> score(records.size(), 0.0);
+  cv::Ptr<cv::ml::ANN_MLP> mlp;
+  if (use_adam) {
+    if (parts != 1 || hidden != detail::kPatchHidden)
+      throw hair25d::Error("train_layering_patch: --adam trains one patch file, 16 hidden units");
+    hair25d::layering_training::RowMatrix px(n, d), ps(n, d);
+    std::vector<float> py(n), pw(n, 1.0f);
+    for (int k = 0; k < n; ++k) {
+      px.row(k) = Eigen::Map<const Eigen::RowVectorXf>(x.ptr<float>(2 * k), d);
+      ps.row(k) = Eigen::Map<const Eigen::RowVectorXf>(x.ptr<float>(2 * k + 1), d);
+      py[k] = t.at<float>(2 * k);
+    }
+    adam.inputs = used;
+    adam.seed = seed;
+    *net = hair25d::layering_training::train_patch_mlp(px, ps, py, pw, adam);
+  } else {
+    mlp = train_network(x.colRange(0, used).clone(), t, cv::Mat(), hidden, iterations, seed);
+  }
 
   // Scores of every boundary by OpenCV's forward pass: Σ over its ends of
   // net(P) − net(swapped P).
-  std::vector<double> score(records.size(), 0.0);
-  {
+  if (mlp) {
     int m = 0;
     for (const Record& r : records) m += static_cast<int>(r.ends.size());
     cv::Mat all(2 * m, d, CV_32F), out;
@@ -380,8 +431,10 @@ int main(int argc, char** argv) {
         score[r] += out.at<float>(k) - out.at<float>(k + 1);
   }
   const bool writable = parts == 1 && hidden == detail::kPatchHidden;
-  auto net = std::make_unique<detail::PatchNet>();
-  if (writable) {
+  if (use_adam) {
+    for (std::size_t r = 0; r < records.size(); ++r)
+      for (const detail::Patch& p : records[r].ends) score[r] += detail::patch_score(*net, p);
+  } else if (writable) {
     copy_weights(*mlp, *net);
     // Our forward pass against OpenCV's.
     double worst = 0;
@@ -464,8 +517,18 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::string same_report;
-  const detail::SameDepthNet same =
-      train_same_depth(records, net_cases, same_iterations, seed, &same_report);
+  const detail::SameDepthNet same = train_same_depth(records, net_cases, same_iterations, seed,
+                                                     use_adam ? &adam : nullptr, &same_report);
+  char method_buffer[200];
+  if (use_adam)
+    std::snprintf(method_buffer, sizeof method_buffer,
+                  "--adam --epochs %d --rate %g --batch %d --decay %g --wide-dropout %g%s",
+                  adam.epochs, adam.rate, adam.batch, adam.decay, adam.wide_dropout,
+                  adam.anneal ? " --anneal" : "");
+  else
+    std::snprintf(method_buffer, sizeof method_buffer, "--iterations %d --same-iterations %d",
+                  iterations, same_iterations);
+  const std::string method = method_buffer;
   std::FILE* f = std::fopen(write.c_str(), "w");
   if (f == nullptr) {
     std::fprintf(stderr, "cannot write %s\n", write.c_str());
@@ -479,16 +542,16 @@ int main(int argc, char** argv) {
                "// clang-format off\n"
                "// Written by bench/layering/train_layering_patch.cpp on generated drawings only\n"
                "// (never the annotated cases), Release build:\n"
-               "//   train_layering_patch --cases %d --seed %llu --net-cases %d --iterations %d\n"
-               "//     --same-iterations %d --order-scales %d\n"
+               "//   train_layering_patch --cases %d --seed %llu --net-cases %d --order-scales %d\n"
+               "//     %s\n"
                "// Weights input-major (w1[input][hidden]). The network learnt from the %d\n"
                "// ends of ordered boundaries of the first %d drawings (and each exchanged);\n"
                "// boundary sign right there %.1f%%, on the other drawings %.1f%% (order\n"
                "// model %.1f%%), where the second stage was fitted.\n"
                "const PatchNet& patch_weights() {\n"
                "  static const PatchNet kNet = ",
-               cases, static_cast<unsigned long long>(seed), net_cases, iterations, same_iterations,
-               order_scales, n, net_cases, 100.0 * in_right / std::max(in_total, 1),
+               cases, static_cast<unsigned long long>(seed), net_cases, order_scales,
+               method.c_str(), n, net_cases, 100.0 * in_right / std::max(in_total, 1),
                100.0 * out_right_patch / std::max(out_total, 1),
                100.0 * out_right_order / std::max(out_total, 1));
   write_net(f, *net);

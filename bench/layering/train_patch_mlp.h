@@ -1,0 +1,160 @@
+// Minibatch training of the junction patch networks (layering/src/patch_model.h)
+// for train_layering_patch.cpp: the same one-hidden-layer form as OpenCV's
+// ANN_MLP, but trained on what the layering reads — the pair score
+// g(P) ∓ g(swapped P) of each end — by Adam on a logistic loss. OpenCV's
+// full-batch RPROP needs hundreds of passes over the data, which limits the
+// number of drawings it can learn from; a few dozen minibatch passes do.
+// Deterministic: the same seed gives the same weights (one thread, a fixed
+// shuffle from std::mt19937_64).
+#pragma once
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "patch_model.h"
+
+namespace hair25d::layering_training {
+
+struct MlpOptions {
+  int epochs = 30;
+  int batch = 128;
+  double rate = 1e-3;      // Adam's step
+  double decay = 1e-5;     // L2 on the weights (not the biases)
+  double sharpness = 2.0;  // the logistic loss reads sharpness × score
+  bool symmetric = false;  // score g(P) + g(P̄) instead of g(P) − g(P̄)
+  int inputs = hair25d::layering::detail::kPatchInputs;  // the first this many
+  // Share of training rows whose inputs past `fine_inputs` (the wide scale)
+  // are zeroed, so the network cannot lean on the wide scale alone.
+  double wide_dropout = 0.0;
+  bool anneal = false;  // the step falls linearly to 0 over the epochs
+
+  int fine_inputs = hair25d::layering::detail::kPatchScaleInputs;
+  std::uint64_t seed = 1;
+};
+
+using RowMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// `x` holds one end's patch per row, `xs` the same patch exchanged, `y` ±1
+// (antisymmetric: +1 when A is above; symmetric: +1 when same depth), `w`
+// each row's weight. Returns the network in the layering's layout.
+inline hair25d::layering::detail::PatchNet train_patch_mlp(const RowMatrix& x, const RowMatrix& xs,
+                                                           const std::vector<float>& y,
+                                                           const std::vector<float>& w,
+                                                           const MlpOptions& o) {
+  namespace detail = hair25d::layering::detail;
+  constexpr int H = detail::kPatchHidden;
+  const int d = o.inputs;
+  const int n = static_cast<int>(x.rows());
+  std::mt19937_64 rng(o.seed);
+  auto uniform = [&rng] { return static_cast<float>((rng() >> 11) * 0x1.0p-53 * 2.0 - 1.0); };
+  Eigen::MatrixXf w1(d, H);
+  for (int k = 0; k < d; ++k)
+    for (int h = 0; h < H; ++h) w1(k, h) = uniform() * 1.0f / std::sqrt(static_cast<float>(d) / 8);
+  Eigen::RowVectorXf b1 = Eigen::RowVectorXf::Zero(H);
+  Eigen::VectorXf w2(H);
+  for (int h = 0; h < H; ++h) w2(h) = uniform() / std::sqrt(static_cast<float>(H));
+  float b2 = 0;
+  const float alpha = 2.0f / 3.0f, beta = 1.7159f, half = 0.5f * alpha;
+  // Adam's moments.
+  Eigen::MatrixXf m1 = Eigen::MatrixXf::Zero(d, H), v1 = m1;
+  Eigen::RowVectorXf mb1 = Eigen::RowVectorXf::Zero(H), vb1 = mb1;
+  Eigen::VectorXf m2 = Eigen::VectorXf::Zero(H), v2 = m2;
+  float mb2 = 0, vb2 = 0;
+  long step = 0;
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  RowMatrix bx(o.batch, d), bs(o.batch, d);
+  for (int epoch = 0; epoch < o.epochs; ++epoch) {
+    for (int i = n - 1; i > 0; --i) std::swap(order[i], order[rng() % (i + 1)]);
+    double loss_sum = 0, weight_sum = 0;
+    for (int start = 0; start < n; start += o.batch) {
+      const int m = std::min(o.batch, n - start);
+      for (int r = 0; r < m; ++r) {
+        bx.row(r) = x.row(order[start + r]).head(d);
+        bs.row(r) = xs.row(order[start + r]).head(d);
+        if (o.wide_dropout > 0 && d > o.fine_inputs && (rng() >> 11) * 0x1.0p-53 < o.wide_dropout) {
+          bx.row(r).tail(d - o.fine_inputs).setZero();
+          bs.row(r).tail(d - o.fine_inputs).setZero();
+        }
+      }
+      // Forward both patches.
+      auto forward = [&](const RowMatrix& in, Eigen::MatrixXf& t, Eigen::VectorXf& g,
+                         Eigen::VectorXf& tg) {
+        Eigen::MatrixXf pre = in.topRows(m) * w1;
+        pre.rowwise() += b1;
+        t = (pre * half).array().tanh().matrix();
+        const Eigen::VectorXf out = (beta * t) * w2 + Eigen::VectorXf::Constant(m, b2);
+        tg = (out * half).array().tanh().matrix();
+        g = beta * tg;
+      };
+      Eigen::MatrixXf t1, t2;
+      Eigen::VectorXf g1, g2, tg1, tg2;
+      forward(bx, t1, g1, tg1);
+      forward(bs, t2, g2, tg2);
+      // Loss softplus(−y κ s), s = g1 ± g2; dL/ds.
+      Eigen::VectorXf ds(m);
+      float batch_weight = 0;
+      for (int r = 0; r < m; ++r) {
+        const float yy = y[order[start + r]], ww = w[order[start + r]];
+        const float s = o.symmetric ? g1(r) + g2(r) : g1(r) - g2(r);
+        const float z = -yy * static_cast<float>(o.sharpness) * s;
+        loss_sum += ww * (z > 0 ? z + std::log1p(std::exp(-z)) : std::log1p(std::exp(z)));
+        weight_sum += ww;
+        batch_weight += ww;
+        ds(r) = ww * -yy * static_cast<float>(o.sharpness) / (1.0f + std::exp(-z));
+      }
+      ds /= std::max(batch_weight, 1e-12f);
+      Eigen::MatrixXf gw1 = o.decay * w1;
+      Eigen::RowVectorXf gb1 = Eigen::RowVectorXf::Zero(H);
+      Eigen::VectorXf gw2 = o.decay * w2;
+      float gb2 = 0;
+      auto backward = [&](const RowMatrix& in, const Eigen::MatrixXf& t, const Eigen::VectorXf& tg,
+                          const Eigen::VectorXf& dg) {
+        const Eigen::VectorXf dout =
+            (dg.array() * beta * half * (1.0f - tg.array().square())).matrix();
+        gw2 += (beta * t).transpose() * dout;
+        gb2 += dout.sum();
+        const Eigen::MatrixXf dpre =
+            ((dout * w2.transpose()).array() * beta * half * (1.0f - t.array().square())).matrix();
+        gw1.noalias() += in.topRows(m).transpose() * dpre;
+        gb1 += dpre.colwise().sum();
+      };
+      backward(bx, t1, tg1, ds);
+      backward(bs, t2, tg2, o.symmetric ? Eigen::VectorXf(ds) : Eigen::VectorXf(-ds));
+      ++step;
+      const float b1c = 1.0f - std::pow(0.9f, static_cast<float>(step));
+      const float b2c = 1.0f - std::pow(0.999f, static_cast<float>(step));
+      const double progress = (epoch + static_cast<double>(start) / n) / o.epochs;
+      const float lr =
+          static_cast<float>(o.rate * (o.anneal ? 1.0 - progress : 1.0)) * std::sqrt(b2c) / b1c;
+      auto adam = [&](auto& p, auto& mm, auto& vv, const auto& g) {
+        mm = 0.9f * mm + 0.1f * g;
+        vv = 0.999f * vv + 0.001f * g.cwiseProduct(g);
+        p -= (lr * mm.array() / (vv.array().sqrt() + 1e-8f)).matrix();
+      };
+      adam(w1, m1, v1, gw1);
+      adam(b1, mb1, vb1, gb1);
+      adam(w2, m2, v2, gw2);
+      mb2 = 0.9f * mb2 + 0.1f * gb2;
+      vb2 = 0.999f * vb2 + 0.001f * gb2 * gb2;
+      b2 -= lr * mb2 / (std::sqrt(vb2) + 1e-8f);
+    }
+    std::printf("  epoch %d: loss %.4f\n", epoch + 1, loss_sum / std::max(weight_sum, 1e-12));
+    std::fflush(stdout);
+  }
+  auto net = std::make_unique<detail::PatchNet>();
+  for (int k = 0; k < detail::kPatchInputs; ++k)
+    for (int h = 0; h < H; ++h) net->w1[k][h] = k < d ? w1(k, h) : 0.0f;
+  for (int h = 0; h < H; ++h) net->b1[h] = b1(h), net->w2[h] = w2(h);
+  net->b2 = b2;
+  return *net;
+}
+
+}  // namespace hair25d::layering_training
