@@ -129,9 +129,14 @@ TEST(InputLimits, ForgedTiffHeadersAreRefusedNamingTheRule) {
   write_bytes(dir / "huge.tif", tiff_bytes(100000, 100000, 1, 8));
   EXPECT_HAS(error_of([&] { load_image(dir / "huge.tif"); }), "16384 pixels a side");
   EXPECT_HAS(error_of([&] { load_label_map(dir / "huge.tif"); }), "huge.tif");
+  // Uncompressed, 8000 x 7000 x 4 of 16 bits in a file of 130 bytes.
+  write_bytes(dir / "short.tif", tiff_bytes(8000, 7000, 4, 16));
+  const std::string small = error_of([&] { load_image(dir / "short.tif"); });
+  EXPECT_HAS(small, "short.tif: cannot decode the pixels (truncated: the header says 8000x7000");
+  EXPECT_HAS(small, "448000000 bytes of pixels");
   write_bytes(dir / "many.tif", tiff_bytes(3, 2, 1000, 8));
   const std::string many = error_of([&] { load_image(dir / "many.tif"); });
-  EXPECT_HAS(many, "many.tif");
+  EXPECT_HAS(many, "many.tif: 1000 channels; an image may have at most 64");
   write_bytes(dir / "gif.png", "GIF89a garbage, not an image");
   const std::string gif = error_of([&] { load_image(dir / "gif.png"); });
   EXPECT_HAS(gif, "gif.png: not a readable image");

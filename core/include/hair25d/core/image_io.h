@@ -13,9 +13,9 @@
 namespace hair25d {
 
 // The limits keep every command within this project's reference machine
-// (24 GB): hair25d model held ~230 bytes a pixel (0.96 GB for a 4.2-megapixel
+// (24 GB): hair25d model held ~235 bytes a pixel (0.98 GB for a 4.2-megapixel
 // drawing), ~15 GB at max_pixels; a B4 page scanned at 600 dpi is 52
-// megapixels (docs/formats.md, "Limits").
+// megapixels (docs/formats.md, "Limits of every input").
 struct ImageLimits {
   int max_side = 16384;                  // pixels, either side
   std::int64_t max_pixels = 64'000'000;  // width × height
