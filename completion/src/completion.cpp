@@ -249,6 +249,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     ra.completion = rb.completion = EdgeCase::kJoined;
     reports.push_back(ra);
     reports.push_back(rb);
+    for (const Polyline& band : j.bands)
+      pieces.areas.push_back({j.region_a, band, false, static_cast<int>(reports.size()) - 2});
     ++result.joins;
   }
   int done = 0;

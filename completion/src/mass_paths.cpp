@@ -19,6 +19,11 @@ constexpr int kColourSamples = 16;
 // A path goes on through this many pixels of label 0 in a row (the light rim
 // of a drawn line, 4-connected steps); longer runs are the face or paper.
 constexpr int kMaxZeroRun = 4;
+// The hidden part: a band this wide (px) along each of up to kBands straight
+// lines between a path's ends (the assembly keeps its pixels under the
+// strand's occluders only).
+constexpr double kBandWidth = 3.0;
+constexpr int kBands = 48;
 // Share of the straight line between a path's ends that must lie under the
 // common occluders (or on the two pieces, or on drawn lines).
 constexpr double kMinStraightCover = 0.9;
@@ -155,12 +160,19 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx) {
       j.region_b = b;
       j.rays = n;
       j.colour = step;
+      const int bands = std::min(n, kBands);
+      for (int s = 0; s < bands; ++s) {
+        const Landing& l = landings[static_cast<std::size_t>(s) * n / bands];
+        Vec2 side(-(l.to - l.from).y(), (l.to - l.from).x());
+        if (side.norm() < 1e-9) continue;
+        side *= 0.5 * kBandWidth / side.norm();
+        j.bands.push_back({l.from + side, l.to + side, l.to - side, l.from - side});
+      }
       out.push_back(std::move(j));
     }
-  std::sort(out.begin(), out.end(),
-            [](const MassJoin& x, const MassJoin& y) {
-              return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
-            });
+  std::sort(out.begin(), out.end(), [](const MassJoin& x, const MassJoin& y) {
+    return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
+  });
   return out;
 }
 

@@ -257,6 +257,24 @@ TEST(PathJoins, BackHairSliverIsJoinedUnderTheStrandLyingOnBoth) {
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
   EXPECT_EQ(test::regions_with(r, 3), (std::vector<int>{3}));
   EXPECT_EQ(test::regions_with(r, 4), (std::vector<int>{4}));
+  // The hidden part between them under strand 3 is completed; nothing
+  // completed shows where the drawing is visible.
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  int inside = 0, completed = 0;
+  for (int y = 0; y < s->mask.height(); ++y)
+    for (int x = 0; x < s->mask.width(); ++x) {
+      if (s->mask.at(x, y) != 2) continue;
+      const int l = r.regions.at(x + s->origin.x(), y + s->origin.y());
+      EXPECT_TRUE(l == 3 || l == 4) << x + s->origin.x() << "," << y + s->origin.y();
+    }
+  for (int y = 60; y <= 150; ++y)
+    for (int x = 142; x <= 170; ++x) {
+      ++inside;
+      const int mx = x - s->origin.x(), my = y - s->origin.y();
+      completed += s->mask.contains(mx, my) && s->mask.at(mx, my) == 2;
+    }
+  EXPECT_GT(completed, 0.5 * inside);
   // Without path joins no other rule joins them (the sliver is too shallow).
   const Input in = test::input_of(d, Vec2(170, 20));
   Options o;
