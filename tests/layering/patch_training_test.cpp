@@ -1,0 +1,91 @@
+// The patch networks' trainer (bench/layering/train_patch_mlp.h): it learns
+// a rule a patch shows, keeps the layering's symmetries, and repeats itself.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "patch_model.h"
+#include "train_patch_mlp.h"
+
+namespace {
+
+using hair25d::layering::detail::kPatchInputs;
+using hair25d::layering::detail::Patch;
+using hair25d::layering::detail::patch_same_score;
+using hair25d::layering::detail::patch_score;
+using hair25d::layering::detail::PatchNet;
+using hair25d::layering::detail::swapped;
+using hair25d::layering_training::MlpOptions;
+using hair25d::layering_training::RowMatrix;
+using hair25d::layering_training::train_patch_mlp;
+
+// Random values in the fine scale's first two rows (the far v < 0 edge),
+// "A above" when the A − B channel of the first row sums above 0: a rule
+// the network must learn from the patch and, exchanged, its opposite.
+struct Toy {
+  RowMatrix x, xs;
+  std::vector<float> y, w;
+  std::vector<Patch> patches;
+};
+
+Toy toy(int n, unsigned seed, int inputs) {
+  Toy t;
+  t.x.resize(n, inputs);
+  t.xs.resize(n, inputs);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1, 1);
+  for (int k = 0; k < n; ++k) {
+    Patch p{};
+    for (int i = 0; i < 64; ++i) p[i] = u(rng);  // rows 0 and 1, both channels
+    double upper = 0;
+    for (int i = 0; i < 16 * 2; i += 2) upper += p[i];  // row 0, channel A − B
+    t.y.push_back(upper > 0 ? 1.0f : -1.0f);
+    t.w.push_back(1.0f);
+    const Patch s = swapped(p);
+    for (int i = 0; i < inputs; ++i) t.x(k, i) = p[i], t.xs(k, i) = s[i];
+    t.patches.push_back(p);
+  }
+  return t;
+}
+
+TEST(PatchTraining, LearnsARuleAndKeepsTheSignFlip) {
+  const int inputs = 512;
+  const Toy train = toy(2000, 3, inputs), test = toy(300, 4, inputs);
+  MlpOptions o;
+  o.epochs = 15;
+  o.inputs = inputs;
+  o.seed = 7;
+  const PatchNet net = train_patch_mlp(train.x, train.xs, train.y, train.w, o);
+  int right = 0;
+  for (std::size_t k = 0; k < test.patches.size(); ++k) {
+    const double s = patch_score(net, test.patches[k]);
+    right += s * test.y[k] > 0;
+    EXPECT_EQ(patch_score(net, swapped(test.patches[k])), -s);
+  }
+  EXPECT_GT(right, 270) << "of 300";  // chance is 150
+  // Inputs past `inputs` are weighed 0, so the layering reads only those.
+  for (int k = inputs; k < kPatchInputs; ++k)
+    for (float v : net.w1[k]) ASSERT_EQ(v, 0.0f);
+}
+
+TEST(PatchTraining, TheSameSeedGivesTheSameWeights) {
+  const Toy train = toy(300, 5, kPatchInputs);
+  MlpOptions o;
+  o.epochs = 2;
+  o.symmetric = true;
+  o.anneal = true;
+  o.seed = 11;
+  const PatchNet a = train_patch_mlp(train.x, train.xs, train.y, train.w, o);
+  const PatchNet b = train_patch_mlp(train.x, train.xs, train.y, train.w, o);
+  EXPECT_EQ(a.w1, b.w1);
+  EXPECT_EQ(a.w2, b.w2);
+  EXPECT_EQ(a.b2, b.b2);
+  o.seed = 12;
+  const PatchNet c = train_patch_mlp(train.x, train.xs, train.y, train.w, o);
+  EXPECT_NE(a.w1, c.w1);
+  // A symmetric network's score does not change when A and B swap.
+  for (const Patch& p : train.patches)
+    EXPECT_EQ(patch_same_score(a, swapped(p)), patch_same_score(a, p));
+}
+
+}  // namespace
