@@ -97,3 +97,12 @@ hair25d_cli_test(segment_colour_tolerance_nan 2 STDERR "--colour-tolerance: must
   ARGS -q segment ${case5}/image.png --hair-colour "#5a82cc" --colour-tolerance nan -o seg_nan)
 hair25d_cli_test(model_colour_tolerance_needs_a_colour 2 STDERR "--colour-tolerance requires --hair-colour"
   ARGS -q model ${case5}/image.png --regions ${case5}/regions.png --colour-tolerance 3 -o model_tol)
+
+# Marked "hair" that is really the paper (a --hair-colour of the paper's own
+# colour) is built but called out on stderr; real hair is not.
+hair25d_cli_test(model_warns_when_the_hair_is_the_paper 0
+  STDERR "^warning: hair region [0-9]+ covers [0-9]+% of the drawing and touches all four of its sides: is it the paper\\? Check --hair-colour #e1f2ec"
+  ARGS -q model ${case5}/image.png --hair-colour "#e1f2ec" -o model_paper)
+add_test(NAME cli.model_real_hair_gives_no_warning
+  COMMAND bash -c "rm -rf model_hair && $<TARGET_FILE:hair25d> -q model ${case5}/image.png --hair-colour '#5a82cc' -o model_hair 2> model_real_hair_gives_no_warning.err; status=$?; cat model_real_hair_gives_no_warning.err; test $status = 0 && ! grep -q warning model_real_hair_gives_no_warning.err"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})

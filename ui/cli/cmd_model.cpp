@@ -11,6 +11,7 @@
 #include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
 #include "hair25d/core/strokes.h"
+#include "hair25d/pipeline/hair_check.h"
 #include "hair25d/pipeline/head_center.h"
 #include "hair25d/pipeline/model_stage.h"
 #include "hair25d/pipeline/segment_stage.h"
@@ -104,6 +105,11 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
                                     args->strokes + ": head_center");
       run = pipeline::run_model(image, &s, {}, &progress);
     }
+    const std::string source = !args->regions.empty() ? args->regions
+                               : hair_colour          ? "--hair-colour " + args->hair_colour
+                                                      : args->strokes;
+    for (const std::string& w : pipeline::hair_region_warnings(run.regions, source))
+      std::fprintf(stderr, "warning: %s\n", w.c_str());
     start = Clock::now();
     pipeline::write_model_run(args->out, run);
     run.seconds["write"] = seconds_since(start);

@@ -10,6 +10,7 @@
 #include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
 #include "hair25d/core/strokes.h"
+#include "hair25d/pipeline/hair_check.h"
 #include "hair25d/pipeline/segment_stage.h"
 #include "hair_colour.h"
 
@@ -54,6 +55,11 @@ void add_segment_command(CLI::App& app, const CommonOptions& common) {
       run = pipeline::run_segment(image, strokes ? &*strokes : nullptr, &progress);
     }
     pipeline::write_segment_run(args->out, run);
+    // Automatic regions include the paper on purpose; marked hair should not.
+    if (strokes || !args->hair_colour.empty())
+      for (const std::string& w : pipeline::hair_region_warnings(
+               run.regions, strokes ? args->strokes : "--hair-colour " + args->hair_colour))
+        std::fprintf(stderr, "warning: %s\n", w.c_str());
     std::set<int> regions(run.segmentation.triangle_region.begin(),
                           run.segmentation.triangle_region.end());
     regions.erase(0);
