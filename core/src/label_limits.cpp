@@ -13,7 +13,9 @@ namespace {
 
 std::string at_pixel(const LabelMap& labels, std::size_t i) {
   const auto w = static_cast<std::size_t>(labels.width());
-  return "(" + std::to_string(i % w) + ", " + std::to_string(i / w) + ")";
+  std::string out = "(";  // appended, not "(" + ...: GCC 12 warns falsely (-Wrestrict)
+  out += std::to_string(i % w) + ", " + std::to_string(i / w) + ")";
+  return out;
 }
 
 // Distinct non-zero labels, counting no further than `stop`.

@@ -227,6 +227,10 @@ HairModel read_model(const fs::path& folder, const ImageLimits& limits) {
     jr::fail(src, "width", "a width in 1.." + std::to_string(limits.max_side), &doc["width"]);
   if (m.height <= 0 || m.height > limits.max_side)
     jr::fail(src, "height", "a height in 1.." + std::to_string(limits.max_side), &doc["height"]);
+  if (std::int64_t{m.width} * m.height > limits.max_pixels) {
+    throw Error(src + ": width x height = " + std::to_string(std::int64_t{m.width} * m.height) +
+                " pixels; at most " + std::to_string(limits.max_pixels) + " are allowed");
+  }
   auto read_sized = [&](const char* key) {
     Image img = load_image(checked_path(folder, doc[key], src, key), limits);
     if (img.width() != m.width || img.height() != m.height) {
@@ -243,6 +247,15 @@ HairModel read_model(const fs::path& folder, const ImageLimits& limits) {
 
   const json& strands = jr::member(doc, src, "", "strands");
   jr::expect_array(strands, src, "strands");
+  // Strands come from regions (at most max_regions of them); their textures
+  // are crops of the drawing, all together at most kTextureBudget drawings'
+  // worth of the pixel limit, so a forged file cannot fill memory with them.
+  if (strands.size() > static_cast<std::size_t>(limits.max_regions)) {
+    jr::fail(src, "strands", "at most " + std::to_string(limits.max_regions) + " strands",
+             &strands);
+  }
+  constexpr std::int64_t kTextureBudget = 4;
+  std::int64_t texture_pixels = 0;
   std::set<int> ids, region_ids;
   for (std::size_t i = 0; i < strands.size(); ++i) {
     const std::string at = jr::index("strands", i);
@@ -266,7 +279,21 @@ HairModel read_model(const fs::path& folder, const ImageLimits& limits) {
     s.depth = jr::as_int(jr::member(js, src, at, "depth"), src, jr::join(at, "depth"));
     s.outline = read_points(jr::member(js, src, at, "outline"), src, jr::join(at, "outline"));
     if (const json* t = jr::optional_member(js, src, at, "texture")) {
-      s.texture = load_image(checked_path(folder, *t, src, jr::join(at, "texture")), limits);
+      const std::string tkey = jr::join(at, "texture");
+      s.texture = load_image(checked_path(folder, *t, src, tkey), limits);
+      if (s.texture.width() > m.width || s.texture.height() > m.height) {
+        throw Error(src + ": key '" + tkey + "': texture " + std::to_string(s.texture.width()) +
+                    "x" + std::to_string(s.texture.height()) + " is larger than the model's " +
+                    std::to_string(m.width) + "x" + std::to_string(m.height) +
+                    "; a strand's texture is a part of the drawing");
+      }
+      texture_pixels += std::int64_t{s.texture.width()} * s.texture.height();
+      if (texture_pixels > kTextureBudget * limits.max_pixels) {
+        throw Error(src + ": key '" + tkey + "': the strands' textures hold more than " +
+                    std::to_string(kTextureBudget * limits.max_pixels) +
+                    " pixels together; at most " + std::to_string(kTextureBudget) +
+                    " times the image pixel limit are allowed");
+      }
       const std::string okey = jr::join(at, "texture_origin");
       const Vec2 o = jr::as_point(jr::member(js, src, at, "texture_origin"), src, okey);
       s.texture_origin = {static_cast<int>(o.x()), static_cast<int>(o.y())};

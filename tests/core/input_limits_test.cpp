@@ -283,9 +283,10 @@ TEST(InputLimits, TextFilesAreReadNoFurtherThanTheLimit) {
 
 TEST(InputLimits, StrokeFilesBeyondTheLimitsNameTheKey) {
   std::string labels = R"({"format": "hair25d-strokes/1", "strokes": [)";
-  for (std::size_t i = 1; i <= kMaxStrokeLabels + 1; ++i)
-    labels += (i > 1 ? "," : "") + std::string(R"({"label": )") + std::to_string(i) +
-              R"(, "width": 1, "points": [[0, 0]]})";
+  for (std::size_t i = 1; i <= kMaxStrokeLabels + 1; ++i) {
+    labels += i > 1 ? R"(,{"label": )" : R"({"label": )";
+    labels += std::to_string(i) + R"(, "width": 1, "points": [[0, 0]]})";
+  }
   labels += "]}";
   const std::string many = error_of([&] { parse_strokes(labels, "l.json"); });
   EXPECT_HAS(many, "l.json: key 'strokes[4096].label'");

@@ -140,6 +140,64 @@ TEST_F(EditedModel, WrongTypesAndUnknownIdsAreNamed) {
   EXPECT_NE(error_after(doc).find("differs"), std::string::npos);
 }
 
+// A forged model.json must not fill memory: size, strand count, texture
+// size and all textures together are bounded.
+TEST_F(EditedModel, ModelsBeyondTheLimitsAreRefused) {
+  json doc = doc_;
+  doc.erase("image");
+  doc.erase("background");
+  doc["width"] = 16000;
+  doc["height"] = 16000;
+  EXPECT_NE(error_after(doc).find("width x height = 256000000 pixels; at most 64000000"),
+            std::string::npos)
+      << error_after(doc);
+  doc = doc_;
+  doc["strands"][0]["texture_origin"] = {0, 0};
+  write_model(dir_ / "big", [] {
+    HairModel big = small_model();
+    big.strands[0].texture = Image(8, 2);  // wider than the 7-pixel model
+    big.strands[0].texture_origin = {0, 0};
+    return big;
+  }());
+  std::string e;
+  try {
+    read_model(dir_ / "big");
+  } catch (const Error& error) {
+    e = error.what();
+  }
+  EXPECT_NE(e.find("strands[0].texture': texture 8x2 is larger than the model's 7x5"),
+            std::string::npos)
+      << e;
+  // 30 strands sharing one 3x2 texture: 180 pixels, over 4 x 35 allowed.
+  doc = doc_;
+  for (int i = 0; i < 30; ++i) {
+    json copy = doc_["strands"][0];
+    copy["id"] = 100 + i;
+    doc["strands"].push_back(copy);
+  }
+  write_text_atomically(dir_ / "m" / "model.json", doc.dump());
+  ImageLimits small;
+  small.max_pixels = 35;
+  try {
+    read_model(dir_ / "m", small);
+    ADD_FAILURE() << "30 textures beyond the budget were read";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("textures hold more than 140 pixels together"),
+              std::string::npos)
+        << error.what();
+  }
+  small = {};
+  small.max_regions = 31;  // 32 strands now
+  try {
+    read_model(dir_ / "m", small);
+    ADD_FAILURE() << "32 strands read with max_regions 31";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("'strands': expected at most 31 strands"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(ModelIo, RewritingReplacesTheFolderWhole) {
   testing::TempDir dir;
   HairModel m = small_model();
