@@ -308,7 +308,7 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   // sailor collar and its tie under light blue twin tails).
   // Inside the head the colour must also be one the hair is painted in:
   // an iris or a blush as dark as the hair is no hair.
-  cv::Mat hair_coloured(h, w, CV_8U, cv::Scalar(0));
+  cv::Mat hair_coloured(h, w, CV_8U, cv::Scalar(0)), band;
   {
     const CommonColours painted = hair_colours(ctx);
     for (int y = 0; y < h; ++y)
@@ -329,6 +329,17 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
     cv::Mat thick, grown, parts;
     cv::morphologyEx(hair_coloured, thick, cv::MORPH_OPEN,
                      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
+    // Only the band along the strands goes: a pixel taken from the
+    // background must be one a strand's texture covers at rest, or near
+    // enough to be its rim. A dark body of the hair's colour that no strand
+    // holds (a lock the segmentation missed, a black disk beside one
+    // labelled pixel) stays drawn in the background; otherwise it vanished
+    // from the model.
+    const int band_reach = o.outline_reach;
+    cv::dilate(hair, band,
+               cv::getStructuringElement(cv::MORPH_ELLIPSE,
+                                         cv::Size(2 * band_reach + 1, 2 * band_reach + 1)));
+    thick &= band;
     cv::dilate(hair, grown, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
     const int n = cv::connectedComponents(thick | grown, parts, 8, CV_32S);
     std::vector<std::uint8_t> touches(static_cast<std::size_t>(n), 0);
@@ -376,6 +387,16 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   // than dark_luma) touch the bangs: there it grows only through pixels of
   // the hair's colour (the bangs' tips and outline, not a blue eye).
   cv::Mat reachable = dark | hair;
+  // Nor does it eat into a thick dark area beyond the strands' band (dark
+  // clothes beside the hair, a black disk): no strand's texture covers that
+  // at rest, so what the growth took there vanished from the model. The
+  // outline is thinner than the opening.
+  {
+    cv::Mat thick_dark;
+    cv::morphologyEx(dark & ~hair, thick_dark, cv::MORPH_OPEN,
+                     cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
+    reachable &= ~(thick_dark & ~band);
+  }
   if (!head.mask.empty()) {
     reachable &= (head.mask == 0) | hair | hair_coloured;
     // Lashes and a glasses' frame as dark as the hair run along the bangs'

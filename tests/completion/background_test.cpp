@@ -584,5 +584,86 @@ TEST(HeadBehindHair, SpecksTheHairEnclosesGoWithIt) {
   EXPECT_EQ(sheet, 84) << "the speck over the sheet is left";
 }
 
+// The model at rest: the background with every strand's texture laid over
+// it (one strand here, nothing to order) gives the drawing back wherever no
+// strand is drawn, apart from the strands' own outline band. A black disk of
+// the hair's colour that no strand holds (one labelled pixel in it, as when
+// strokes miss a lock, a twin tail or dark clothes) stays in the background:
+// before, the "hair of the hair's colour" rule took all of it from the
+// background (12313 px inpainted on this case) and it vanished.
+TEST(BackgroundAtRest, DarkAreaNoStrandHoldsStaysDrawn) {
+  constexpr int kW = 300, kH = 200;
+  test::Drawing d{Image(kW, kH, Rgba{255, 255, 255, 255}), LabelMap(kW, kH, 0), {}};
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      if (std::hypot(x + 0.5 - 100, y + 0.5 - 100) <= 60) d.image.at(x, y) = Rgba{0, 0, 0, 255};
+  d.regions.at(100, 100) = 1;
+  Options o;
+  o.inpaint_strands = false;
+  const Result r = complete_strands(test::input_of(d, std::nullopt), o);
+  Image rest = r.background;
+  for (const CompletedStrand& s : r.strands)
+    for (int y = 0; y < s.texture.height(); ++y)
+      for (int x = 0; x < s.texture.width(); ++x)
+        if (s.texture.at(x, y).a == 255)
+          rest.at(x + s.origin.x(), y + s.origin.y()) = s.texture.at(x, y);
+  const int band = 2 * o.outline_reach + 3;
+  int disk = 0, kept = 0, changed_far = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (std::max(std::abs(x - 100), std::abs(y - 100)) <= band) continue;
+      changed_far += !(rest.at(x, y) == d.image.at(x, y));
+      if (d.image.at(x, y).r == 0) {
+        ++disk;
+        kept += r.background.at(x, y) == d.image.at(x, y);
+      }
+    }
+  EXPECT_GT(disk, 10000);
+  EXPECT_EQ(kept, disk) << "the disk was taken from the background";
+  EXPECT_EQ(changed_far, 0);
+}
+
+// Dark clothes touching the hair, of a colour near the hair's: the hair's
+// outline band goes with the hair, the rest of the clothes stays. A strand
+// (region 1, dark grey-violet hair with its 2 px black outline) lies over
+// the top of a dark purple body; at rest the drawing comes back more than
+// the band away from the strand.
+TEST(BackgroundAtRest, ClothesUnderTheHairStayBeyondItsOutlineBand) {
+  constexpr int kW = 320, kH = 240;
+  constexpr Rgba kBody{77, 42, 86, 255}, kDarkHair{95, 80, 110, 255};
+  test::Drawing d{Image(kW, kH, Rgba{190, 220, 225, 255}), LabelMap(kW, kH, 0), {}};
+  for (int y = 150; y < kH; ++y)
+    for (int x = 60; x < 260; ++x) d.image.at(x, y) = kBody;
+  test::paint(
+      d, [](double x, double y) { return x > 110 && x < 200 && y > 30 && y < 175; }, kDarkHair, 1);
+  Options o;
+  o.inpaint_strands = false;
+  const Result r = complete_strands(test::input_of(d, std::nullopt), o);
+  ASSERT_EQ(r.strands.size(), 1u);
+  const CompletedStrand& s = r.strands.front();
+  Image rest = r.background;
+  for (int y = 0; y < s.texture.height(); ++y)
+    for (int x = 0; x < s.texture.width(); ++x)
+      if (s.texture.at(x, y).a == 255)
+        rest.at(x + s.origin.x(), y + s.origin.y()) = s.texture.at(x, y);
+  const int band = 2 * o.outline_reach + 3;
+  int body = 0, changed_far = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      bool near = false;
+      for (int dy = -band; dy <= band && !near; ++dy)
+        for (int dx = -band; dx <= band; ++dx)
+          if (r.regions.contains(x + dx, y + dy) && r.regions.at(x + dx, y + dy) != 0) {
+            near = true;
+            break;
+          }
+      if (near) continue;
+      body += d.image.at(x, y) == kBody;
+      changed_far += !(rest.at(x, y) == d.image.at(x, y));
+    }
+  EXPECT_GT(body, 12000);
+  EXPECT_EQ(changed_far, 0);
+}
+
 }  // namespace
 }  // namespace hair25d::completion
