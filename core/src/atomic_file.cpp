@@ -1,9 +1,16 @@
 #include "hair25d/core/atomic_file.h"
 
+#include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
+#include <charconv>
+#include <climits>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <system_error>
@@ -20,6 +27,78 @@ namespace {
 // it (an empty filename) and the rename would fail.
 fs::path without_trailing_slash(const fs::path& target) {
   return target.has_filename() || !target.has_parent_path() ? target : target.parent_path();
+}
+
+// Where a write to `target` lands: a link as its last component is followed
+// (again and again, as open() would), so that writing through a link replaces
+// the link's target and keeps the link, instead of replacing the link by a file.
+fs::path follow_links(const fs::path& target) {
+  constexpr int kMaxHops = 40;  // as the kernel's ELOOP limit
+  fs::path path = target;
+  std::error_code ec;
+  for (int hops = 0; fs::is_symlink(fs::symlink_status(path, ec)); ++hops) {
+    if (hops == kMaxHops) {
+      throw Error(target.string() + ": more than " + std::to_string(kMaxHops) +
+                  " symbolic links in a row (a loop?)");
+    }
+    const fs::path link = fs::read_symlink(path, ec);
+    if (ec) throw Error(path.string() + ": cannot read the symbolic link: " + ec.message());
+    path = without_trailing_slash(link.is_absolute() ? link : path.parent_path() / link);
+  }
+  return path;
+}
+
+// A device, pipe or socket (a terminal, /dev/stdout, a FIFO): renaming a file
+// over it would replace it, so the bytes are written to it directly.
+// A link into /proc/PID/fd or /dev/fd (/dev/stdout) names an open file of
+// this process: whatever it is, replacing it by a new file would lose the
+// bytes written to the old one through the descriptor, so it too is written
+// directly.
+bool is_special_file(const fs::path& target) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(target, ec);
+  if (!ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status))
+    return true;
+  fs::path path = target;
+  for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(path, ec)); ++hops) {
+    const fs::path link = fs::read_symlink(path, ec);
+    if (ec) return false;
+    path = link.is_absolute() ? link : path.parent_path() / link;
+    const std::string text = path.lexically_normal().generic_string();
+    if (text.rfind("/proc/", 0) == 0 || text.rfind("/dev/fd/", 0) == 0) return true;
+  }
+  return false;
+}
+
+// Temporaries of `target` (".NAME.tmp-PID-N[.ext]") left by a process that no
+// longer runs (killed between writing and renaming) are removed; those of a
+// running process, this one included, are left alone.
+void sweep_stale_temporaries(const fs::path& target) {
+  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "." + string.
+  std::string prefix = ".";
+  prefix += target.filename().string();
+  prefix += ".tmp-";
+  const std::string extension = target.extension().string();
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    const char* first = name.data() + prefix.size();
+    const char* last = name.data() + name.size();
+    long pid = 0;
+    unsigned long counter = 0;
+    auto [after_pid, pid_error] = std::from_chars(first, last, pid);
+    if (pid_error != std::errc() || pid <= 0 || pid > INT_MAX || after_pid == last ||
+        *after_pid != '-')
+      continue;
+    auto [after_counter, counter_error] = std::from_chars(after_pid + 1, last, counter);
+    if (counter_error != std::errc() || std::string(after_counter, last) != extension) continue;
+    if (pid == ::getpid()) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == -1 && errno == ESRCH) stale.push_back(it->path());
+  }
+  for (const fs::path& path : stale) fs::remove_all(path, ec);
 }
 
 // Left in every folder written here, holding the kind of output, so that a
@@ -112,12 +191,17 @@ fs::path temporary_sibling(const fs::path& target_in) {
 
 void write_atomically(const fs::path& target_in,
                       const std::function<void(const fs::path&)>& write) {
-  const fs::path target = without_trailing_slash(target_in);
+  if (is_special_file(target_in)) {
+    write(target_in);
+    return;
+  }
+  const fs::path target = follow_links(without_trailing_slash(target_in));
   const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::error_code ec;
   if (!fs::is_directory(parent, ec)) {
     throw Error(target.string() + ": the folder " + parent.string() + " does not exist");
   }
+  sweep_stale_temporaries(target);
   const fs::path tmp = temporary_sibling(target);
   try {
     write(tmp);
@@ -131,7 +215,9 @@ void write_atomically(const fs::path& target_in,
   }
 }
 
-void check_output_file(const fs::path& target, const std::string& what) {
+void check_output_file(const fs::path& target_in, const std::string& what) {
+  if (is_special_file(target_in)) return;  // written directly
+  const fs::path target = follow_links(target_in);
   std::error_code ec;
   if (fs::is_directory(target, ec)) {
     throw Error(what + " " + target.string() + ": is a folder; expected a file name");
@@ -142,7 +228,8 @@ void check_output_file(const fs::path& target, const std::string& what) {
 
 void check_output_folder(const fs::path& target_in, const std::string& what,
                          const std::vector<std::string>& names, const std::string& kind) {
-  const fs::path target = without_trailing_slash(target_in);
+  check_folder_name(without_trailing_slash(target_in), what);
+  const fs::path target = follow_links(without_trailing_slash(target_in));
   check_folder_name(target, what);
   std::error_code ec;
   if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
@@ -218,7 +305,8 @@ std::string read_text_file(const fs::path& path, std::uintmax_t max_bytes) {
 void write_folder_atomically(const fs::path& target_in,
                              const std::function<void(const fs::path&)>& fill,
                              const std::string& kind) {
-  const fs::path target = without_trailing_slash(target_in);
+  check_folder_name(without_trailing_slash(target_in), "");
+  const fs::path target = follow_links(without_trailing_slash(target_in));
   check_folder_name(target, "");
   std::error_code ec;
   if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
@@ -227,22 +315,36 @@ void write_folder_atomically(const fs::path& target_in,
   const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   fs::create_directories(parent, ec);
   if (ec) throw Error(parent.string() + ": cannot create the folder: " + ec.message());
+  sweep_stale_temporaries(target);
   const fs::path tmp = temporary_sibling(target);
-  const fs::path old = temporary_sibling(target);
   try {
     fs::create_directory(tmp);
     fill(tmp);
     std::ofstream(tmp / kOutputMark) << mark_text(kind);
-    // rename() cannot replace a non-empty folder: move the old one aside first,
-    // so that at every moment either the old or the new complete folder exists.
-    const bool had_old = fs::exists(target);
-    if (had_old) {
-      const std::string foreign = foreign_entry(target, tmp, kind);
-      if (!foreign.empty()) throw foreign_folder_error(target, "", foreign);
-      fs::rename(target, old);
+    if (!fs::exists(target)) {
+      fs::rename(tmp, target);
+      return;
     }
+    const std::string foreign = foreign_entry(target, tmp, kind);
+    if (!foreign.empty()) throw foreign_folder_error(target, "", foreign);
+    // rename() cannot replace a non-empty folder; exchanging the two swaps
+    // them in one step, so that at every moment the old or the new complete
+    // folder is at the target. The old one, now under the temporary name, is
+    // removed after (or by the sweep of a later run if this one is killed).
+    if (::renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0) {
+      fs::remove_all(tmp, ec);
+      return;
+    }
+    if (errno != EINVAL && errno != ENOSYS) {
+      throw Error(target.string() + ": cannot replace the folder: " + std::strerror(errno));
+    }
+    // A filesystem without the exchange: the old folder moved aside first
+    // (killed between the two renames, the target is missing but the old
+    // folder survives under its temporary name).
+    const fs::path old = temporary_sibling(target);
+    fs::rename(target, old);
     fs::rename(tmp, target);
-    if (had_old) fs::remove_all(old, ec);
+    fs::remove_all(old, ec);
   } catch (const fs::filesystem_error& e) {
     fs::remove_all(tmp, ec);
     throw Error(target.string() + ": cannot write the folder: " + e.code().message());

@@ -1,6 +1,9 @@
 #include "hair25d/core/atomic_file.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <fstream>
 
@@ -218,6 +221,114 @@ TEST(AtomicFile, ReadingMissingOrFolderIsAnError) {
   testing::TempDir dir;
   EXPECT_THROW(read_text_file(dir / "none"), Error);
   EXPECT_THROW(read_text_file(dir.path()), Error);
+}
+
+TEST(AtomicFile, WritingThroughALinkReplacesItsTargetAndKeepsTheLink) {
+  testing::TempDir dir;
+  fs::create_directory(dir / "real");
+  write_text_atomically(dir / "real" / "report.json", "old");
+  fs::create_symlink("real/report.json", dir / "link.json");
+  fs::create_symlink("link.json", dir / "link2.json");  // a chain of two
+  write_text_atomically(dir / "link2.json", "new");
+  EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
+  EXPECT_TRUE(fs::is_symlink(dir / "link2.json"));
+  EXPECT_EQ(read_text_file(dir / "real" / "report.json"), "new");
+  // A dangling link: the file is made where it points.
+  fs::create_symlink("real/later.json", dir / "dangling.json");
+  write_text_atomically(dir / "dangling.json", "made");
+  EXPECT_TRUE(fs::is_symlink(dir / "dangling.json"));
+  EXPECT_EQ(read_text_file(dir / "real" / "later.json"), "made");
+  fs::create_symlink("loop_b", dir / "loop_a");
+  fs::create_symlink("loop_a", dir / "loop_b");
+  EXPECT_THROW(write_text_atomically(dir / "loop_a", "x"), Error);
+}
+
+TEST(AtomicFile, APipeIsWrittenDirectlyNotReplaced) {
+  // A FIFO (as a device, a terminal or /dev/stdout would be): a rename over it
+  // would replace it by a regular file; the bytes must go through it instead.
+  testing::TempDir dir;
+  const fs::path fifo = dir / "pipe.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  fs::create_symlink("pipe.json", dir / "link.json");
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  check_output_file(dir / "link.json", "--json");
+  write_text_atomically(dir / "link.json", "report");
+  char buffer[16] = {};
+  const ssize_t n = ::read(reader, buffer, sizeof buffer);
+  ::close(reader);
+  EXPECT_EQ(std::string(buffer, n > 0 ? static_cast<std::size_t>(n) : 0), "report");
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
+}
+
+TEST(AtomicFile, FolderWrittenThroughALinkKeepsTheLink) {
+  testing::TempDir dir;
+  const auto fill = [](const char* text) {
+    return [text](const fs::path& tmp) { std::ofstream(tmp / "a.txt") << text; };
+  };
+  write_folder_atomically(dir / "real", fill("old"), "model");
+  fs::create_symlink("real", dir / "link");
+  check_output_folder(dir / "link", "-o", {"a.txt"}, "model");
+  write_folder_atomically(dir / "link", fill("new"), "model");
+  EXPECT_TRUE(fs::is_symlink(dir / "link"));
+  EXPECT_EQ(read_text_file(dir / "real" / "a.txt"), "new");
+  // Checks look through the link: a folder not marked as ours holding a
+  // foreign file is refused and left as it is.
+  fs::create_directory(dir / "plain");
+  std::ofstream(dir / "plain" / "notes.txt") << "mine";
+  fs::create_symlink("plain", dir / "plain_link");
+  EXPECT_THROW(check_output_folder(dir / "plain_link", "-o", {"a.txt"}, "model"), Error);
+  EXPECT_THROW(write_folder_atomically(dir / "plain_link", fill("x"), "model"), Error);
+  EXPECT_TRUE(fs::exists(dir / "plain" / "notes.txt"));
+  EXPECT_TRUE(fs::is_symlink(dir / "plain_link"));
+  // An input inside the link's target lies inside the output folder.
+  EXPECT_TRUE(lies_inside(dir / "real" / "a.txt", dir / "link"));
+}
+
+TEST(AtomicFile, StaleTemporariesOfDeadProcessesAreSwept) {
+  testing::TempDir dir;
+  const auto fill = [](const fs::path& tmp) { std::ofstream(tmp / "a.txt") << "x"; };
+  write_folder_atomically(dir / "m", fill, "model");
+  // A pid above pid_max (4194304 at most on Linux) never runs.
+  const fs::path dead = dir / ".m.tmp-2147483000-3";
+  const fs::path alive = dir / (".m.tmp-" + std::to_string(::getppid()) + "-0");
+  const fs::path other = dir / ".n.tmp-2147483000-3";
+  for (const fs::path& p : {dead, alive, other}) {
+    fs::create_directory(p);
+    std::ofstream(p / "a.txt") << "half";
+  }
+  write_folder_atomically(dir / "m", fill, "model");
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_TRUE(fs::exists(alive));  // its process runs: maybe still writing
+  EXPECT_TRUE(fs::exists(other));  // another target's
+  std::ofstream(dir / ".f.txt.tmp-2147483000-0.txt") << "half";
+  write_text_atomically(dir / "f.txt", "whole");
+  EXPECT_FALSE(fs::exists(dir / ".f.txt.tmp-2147483000-0.txt"));
+}
+
+TEST(AtomicFile, ExchangeLeavesOnlyTheNewFolderAndKeepsTheOldOnFailure) {
+  testing::TempDir dir;
+  const auto fill = [](const char* text) {
+    return [text](const fs::path& tmp) {
+      fs::create_directory(tmp / "strands");
+      std::ofstream(tmp / "strands" / "s.txt") << text;
+    };
+  };
+  write_folder_atomically(dir / "m", fill("old"), "model");
+  EXPECT_THROW(write_folder_atomically(
+                   dir / "m",
+                   [](const fs::path& tmp) {
+                     std::ofstream(tmp / "half") << "1";
+                     throw Error("killed half way");
+                   },
+                   "model"),
+               Error);
+  EXPECT_EQ(read_text_file(dir / "m" / "strands" / "s.txt"), "old");
+  EXPECT_FALSE(fs::exists(dir / "m" / "half"));
+  write_folder_atomically(dir / "m", fill("new"), "model");
+  EXPECT_EQ(read_text_file(dir / "m" / "strands" / "s.txt"), "new");
+  EXPECT_EQ(count_entries(dir.path()), 1);  // the old folder is gone too
 }
 
 }  // namespace

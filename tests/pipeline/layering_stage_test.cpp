@@ -3,8 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
+#include "common/temp_dir.h"
+#include "hair25d/core/atomic_file.h"
 #include "hair25d/core/error.h"
 #include "hair25d/pipeline/layering_stage.h"
 
@@ -68,6 +73,35 @@ TEST(LayeringStage, ACaseTheLayeringRefusesCountsAsWrong) {
   EXPECT_FALSE(report.cases[0].error.empty());
   EXPECT_EQ(report.correct, 0);
   EXPECT_EQ(report.pairs, static_cast<int>(c.pairs.size()));
+}
+
+// Records every progress report, to see whether scoring started.
+class RecordingProgress final : public Progress {
+ public:
+  void report(std::string_view stage, double fraction, std::string_view message) override {
+    reports.push_back(std::string(stage) + " " + std::to_string(fraction) + " " +
+                      std::string(message));
+  }
+  std::vector<std::string> reports;
+};
+
+TEST(LayeringStage, ABadCaseAmongGoodOnesFailsBeforeAnyIsScored) {
+  namespace fs = std::filesystem;
+  testing::TempDir dir;
+  fs::copy(kCases / "case0", dir / "a_good", fs::copy_options::recursive);
+  fs::copy(kCases / "case1", dir / "b_bad", fs::copy_options::recursive);
+  const std::string text = read_text_file(dir / "b_bad" / "layering.json");
+  std::ofstream(dir / "b_bad" / "layering.json", std::ios::trunc)
+      << text.substr(0, text.size() / 2);
+  RecordingProgress progress;
+  try {
+    evaluate_layering(dir.path(), LayeringEvalOptions{}, &progress);
+    FAIL() << "a truncated layering.json was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("b_bad"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("layering.json"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(progress.reports.empty()) << progress.reports.front();
 }
 
 TEST(LayeringStage, RejectsFoldersWithoutCases) {

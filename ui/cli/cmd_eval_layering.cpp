@@ -34,7 +34,9 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
       "Layering accuracy over annotated cases (FORMATS.md): one row per case and the total");
   cmd->add_option("CASES_DIR", args->cases_dir, "Folder whose sub-folders hold layering.json")
       ->required();
-  cmd->add_option("--json", args->json_path, "Also write the report as JSON to this file");
+  cmd->add_option("--json", args->json_path,
+                  "Also write the report as JSON to this file ('-': standard output, instead of "
+                  "the table)");
   cmd->add_option("--overlays", args->overlays_dir,
                   "Write an overlay per case here: arrows occludee -> occluder, '=' for equal, "
                   "wrong pairs ringed in red");
@@ -44,7 +46,8 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
     pipeline::LayeringEvalOptions options;
     options.from_strokes = args->from_strokes;
     const std::vector<std::filesystem::path> cases = find_annotated_cases(args->cases_dir);
-    if (!args->json_path.empty()) {
+    const bool json_to_stdout = args->json_path == "-";
+    if (!args->json_path.empty() && !json_to_stdout) {
       check_output_file(args->json_path, "--json");
       // The report would replace a case's own file (its layering.json, its drawing).
       for (const auto& c : cases) {
@@ -73,6 +76,11 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
             report = pipeline::evaluate_layering(args->cases_dir, options, &progress);
           },
           kOverlaysKind);
+    }
+    if (json_to_stdout) {
+      // The table would make standard output unreadable as JSON.
+      std::fputs(pipeline::layering_report_json(report).c_str(), stdout);
+      return;
     }
     if (!args->json_path.empty()) {
       const std::filesystem::path json(args->json_path);

@@ -92,9 +92,13 @@ LayeringEvalReport evaluate_layering(const std::filesystem::path& cases_dir,
   if (folders.empty())
     throw Error("eval-layering: '" + cases_dir.string() +
                 "' has no case folder (a sub-folder with a layering.json)");
+  // Every case read and checked before any is scored: a bad file in the last
+  // case fails at once, not after the others' minutes of work. Read again
+  // below so that only one case is in memory at a time (cases can be large
+  // drawings); reading is a small part of scoring.
+  for (const std::filesystem::path& folder : folders) (void)read_annotated_case(folder);
   LayeringEvalReport report;
   for (std::size_t i = 0; i < folders.size(); ++i) {
-    // One case in memory at a time: cases can be large drawings.
     const AnnotatedCase c = read_annotated_case(folders[i]);
     LayeringEvalReport one = evaluate_layering(std::vector<AnnotatedCase>{c}, options);
     report.cases.push_back(std::move(one.cases.front()));

@@ -16,6 +16,9 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& target);
 
 // Calls write(tmp) with a temporary sibling path, then renames it onto target.
 // On any exception the temporary is removed and the exception rethrown.
+// Symbolic links at target are followed first (the link stays, its target is
+// replaced); a device, pipe or socket at target is written directly:
+// write(target). Temporaries of target left by dead processes are removed.
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path&)>& write);
 
@@ -64,7 +67,9 @@ std::string read_text_file(const std::filesystem::path& path,
 // the same `kind` of output ("model", "segment", ...: it leaves a hidden
 // mark naming it) or holds nothing, folders looked into, that the new one
 // does not hold too; otherwise it is left untouched and hair25d::Error names
-// the foreign entry.
+// the foreign entry. Links at target are followed (the link stays); the old
+// and the new folder are swapped in one step (renameat2 RENAME_EXCHANGE), and
+// temporaries of target left by dead processes (killed runs) are removed.
 void write_folder_atomically(const std::filesystem::path& target,
                              const std::function<void(const std::filesystem::path&)>& fill,
                              const std::string& kind);
