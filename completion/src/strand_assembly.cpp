@@ -64,6 +64,8 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
     for (int y = 0; y < box.height; ++y)
       for (int x = 0; x < box.width; ++x) {
         if (!area.at<std::uint8_t>(y, x) || mask.at<std::uint8_t>(y, x) == 1) continue;
+        // Nothing drawn hides it where the sheet is transparent.
+        if (ctx.image->at(x + box.x, y + box.y).a < 128) continue;
         const bool behind_face =
             a->face != nullptr && a->face->at<std::uint8_t>(y + box.y, x + box.x) != 0;
         if (!behind_face && !occluded_by_any(ctx, ctx.labels.at(x + box.x, y + box.y), members))
@@ -106,7 +108,9 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
       const int m = mask.at<std::uint8_t>(y, x);
       const int gx = x + box.x, gy = y + box.y;
       Rgba c = ctx.image->at(gx, gy);
-      c.a = m ? 255 : 0;
+      // The visible part keeps the drawing's alpha (a transparent sheet
+      // stays transparent at rest); the completed part is opaque.
+      if (m != 1) c.a = m ? 255 : 0;
       s.texture.at(x, y) = c;
       if (m == 2) {
         fill.at(x, y) = 1;
@@ -123,7 +127,10 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
                 break;
               }
         }
-        (occluder_line ? fill : source).at(x, y) = 1;
+        if (occluder_line)
+          fill.at(x, y) = 1;
+        else if (c.a != 0)  // transparent paper gives no texture to copy
+          source.at(x, y) = 1;
       }
     }
   bool any_fill = false;
@@ -134,6 +141,12 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
     inpainted->patches += r.patches;
     inpainted->unfilled += r.unfilled;
   }
+  // The occluders' lines inpainted along the visible part keep the drawing's
+  // alpha too (their anti-aliased rim over a transparent sheet).
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x)
+      if (mask.at<std::uint8_t>(y, x) == 1)
+        s.texture.at(x, y).a = ctx.image->at(x + box.x, y + box.y).a;
   s.mask = LabelMap(box.width, box.height);
   for (int y = 0; y < box.height; ++y)
     for (int x = 0; x < box.width; ++x) s.mask.at(x, y) = mask.at<std::uint8_t>(y, x);

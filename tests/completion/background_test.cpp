@@ -665,5 +665,55 @@ TEST(BackgroundAtRest, ClothesUnderTheHairStayBeyondItsOutlineBand) {
   EXPECT_EQ(changed_far, 0);
 }
 
+// A drawing on a transparent sheet whose regions the segmentation let spill
+// onto the sheet: a back strand (a vertical lock cut in two by a front
+// band, regions 1 and 3) and the front band (region 2), which is drawn only
+// on its left half but labelled on to the right over the transparent sheet
+// and the lock. The textures keep the drawing's alpha on their visible
+// pixels, and nothing is completed where nothing is drawn: no texture pixel
+// is opaque over the transparent sheet (before, every masked pixel was
+// opaque: black fringes at rest).
+TEST(BackgroundAtRest, StrandTexturesKeepTheSheetsAlpha) {
+  constexpr int kW = 200, kH = 170;
+  constexpr Rgba kSheet{0, 0, 0, 0}, kLock{200, 120, 60, 255}, kBand{90, 140, 190, 255};
+  test::Drawing d{Image(kW, kH, kSheet), LabelMap(kW, kH, 0), {}};
+  test::paint(
+      d, [](double x, double y) { return x > 50 && x < 90 && y > 10 && y < 70; }, kLock, 1);
+  test::paint(
+      d, [](double x, double y) { return x > 50 && x < 90 && y > 100 && y < 160; }, kLock, 3);
+  test::paint(
+      d, [](double x, double y) { return x > 20 && x < 72 && y > 66 && y < 104; }, kBand, 2);
+  for (int y = 67; y < 104; ++y)
+    for (int x = 72; x < 150; ++x) {
+      d.image.at(x, y) = kSheet;
+      d.regions.at(x, y) = 2;
+    }
+  for (int y = 10; y < 160; ++y)  // the lock's label spills 6 px to its right
+    for (int x = 90; x < 96; ++x)
+      if (d.regions.at(x, y) == 0 && d.image.at(x, y).a == 0) d.regions.at(x, y) = y < 70 ? 1 : 3;
+  d.relations = {test::below(1, 2), test::below(3, 2)};
+  Options o;
+  o.inpaint_strands = true;
+  const Result r = complete_strands(test::input_of(d, std::nullopt), o);
+  ASSERT_FALSE(r.strands.empty());
+  int visible = 0, transparent_visible = 0, wrong_alpha = 0, opaque_over_sheet = 0;
+  for (const CompletedStrand& s : r.strands)
+    for (int y = 0; y < s.texture.height(); ++y)
+      for (int x = 0; x < s.texture.width(); ++x) {
+        const Rgba drawn = d.image.at(x + s.origin.x(), y + s.origin.y());
+        const std::uint8_t a = s.texture.at(x, y).a;
+        if (s.mask.at(x, y) == 1) {
+          ++visible;
+          transparent_visible += drawn.a == 0;
+          wrong_alpha += a != drawn.a;
+        }
+        opaque_over_sheet += a >= 128 && drawn.a < 128;
+      }
+  EXPECT_GT(transparent_visible, 1000);  // the spilled labels are in the strands
+  EXPECT_GT(visible, 4000);
+  EXPECT_EQ(wrong_alpha, 0);
+  EXPECT_EQ(opaque_over_sheet, 0);
+}
+
 }  // namespace
 }  // namespace hair25d::completion
