@@ -49,7 +49,8 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
   regions->excludes(strokes)->excludes(colour);
   colour->excludes(strokes)->excludes(regions);
   cmd->add_option("--head", args->head, "Head centre X Y in pixels (overrides strokes.json)")
-      ->expected(2);
+      ->expected(2)
+      ->default_str("");  // none by default ("[]" says nothing)
   cmd->add_option("-o,--output", args->out,
                   "The model folder to write (an earlier model there is replaced; a folder of "
                   "other files is refused)")

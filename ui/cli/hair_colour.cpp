@@ -22,21 +22,27 @@ std::array<std::uint8_t, 3> parse_hair_colour(const std::string& text) {
 }
 
 CLI::Option* add_colour_tolerance(CLI::App* cmd, double* tolerance, CLI::Option* colour) {
-  // CLI::Range lets NaN through (every comparison with it is false).
-  const CLI::Validator finite(
+  // One check for NaN (CLI::Range lets it through: every comparison with it
+  // is false) and the range, whose bounds CLI::Range would print as 442.000000.
+  const CLI::Validator finite_in_range(
       [](std::string& text) {
         try {
-          return std::isfinite(std::stod(text)) ? std::string() : "must be a finite number";
+          std::size_t used = 0;
+          const double value = std::stod(text, &used);
+          if (used != text.size()) return std::string("must be a number");
+          if (!std::isfinite(value)) return std::string("must be a finite number");
+          if (value < 0.0 || value > 442.0)
+            return "must be a number from 0 to 442, not " + text;
+          return std::string();
         } catch (const std::exception&) {
           return std::string("must be a number");
         }
       },
-      "FINITE");
+      "0-442");
   return cmd
       ->add_option("--colour-tolerance", *tolerance,
                    "RGB distance (0-255) a region's mean colour may be from --hair-colour")
-      ->check(finite)
-      ->check(CLI::Range(0.0, 442.0))
+      ->check(finite_in_range)
       ->needs(colour);
 }
 

@@ -1,8 +1,11 @@
 // hair25d: the command line. Exit status 0 done, 1 bad input or failure (one
 // line on stderr saying what and where), 2 wrong usage.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "commands.h"
 #include "hair25d/core/error.h"
@@ -11,12 +14,35 @@ int main(int argc, char** argv) {
   using namespace hair25d::cli;
   CLI::App app{"hair25d: 2.5D cartoon hair modelling and animation from one drawing", "hair25d"};
   app.require_subcommand(1);
+  // --help shows every option's default (set before the commands copy it).
+  app.option_defaults()->always_capture_default();
   CommonOptions common;
   app.add_flag("-q,--quiet", common.quiet, "Print no progress");
   add_version_command(app, common);
   add_segment_command(app, common);
   add_eval_layering_command(app, common);
   add_model_command(app, common);
+  // -q after the command too (hair25d model -q ...), and listed in its --help.
+  for (CLI::App* command : app.get_subcommands({}))
+    command->add_flag("-q,--quiet", common.quiet, "Print no progress");
+  // A word where the command should be that names none: say so and list them
+  // (CLI11 would take it for a stray argument and say a command is required).
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view word = argv[i];
+    if (word == "-q" || word == "--quiet") continue;
+    if (word.empty() || word[0] == '-') break;  // --help, or an option CLI11 reports
+    const auto commands = app.get_subcommands({});
+    if (std::none_of(commands.begin(), commands.end(),
+                     [&](const CLI::App* c) { return c->check_name(std::string(word)); })) {
+      std::string names;
+      for (const CLI::App* command : commands)
+        names += (names.empty() ? "" : ", ") + command->get_name();
+      std::fprintf(stderr, "hair25d: unknown command '%s'; the commands are: %s\n", argv[i],
+                   names.c_str());
+      return 2;
+    }
+    break;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -27,6 +27,7 @@ std::string case_name(int index) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Writes synthetic cartoon-hair drawings with exact layering ground truth"};
+  app.option_defaults()->always_capture_default();  // --help shows the defaults
   std::filesystem::path out;
   int count = 1;
   std::uint64_t seed = 1;

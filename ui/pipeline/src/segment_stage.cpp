@@ -42,9 +42,10 @@ SegmentRun run_segment_by_colour(const Image& image, std::array<std::uint8_t, 3>
                    [](int l) { return l > 0; })) {
     char hex[8];
     std::snprintf(hex, sizeof hex, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
-    throw Error(std::string("segment: no region has a mean colour within ") +
-                std::to_string(tolerance) + " of " + hex +
-                "; pick another colour or a larger tolerance");
+    char within[32];
+    std::snprintf(within, sizeof within, "%g", tolerance);  // 40, not 40.000000
+    throw Error(std::string("segment: no region has a mean colour within ") + within + " of " +
+                hex + "; pick another colour or a larger tolerance");
   }
   s.adjacency = segment::label_adjacency(s.mesh, s.triangle_region);
   SegmentRun run;
