@@ -2,11 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
+#include <thread>
 
 #include "../completion/annotated_eval.h"
 #include "hair25d/core/annotation.h"
@@ -96,6 +99,38 @@ TEST(ModelStage, AnnotatedCaseBuildsWritesAndReadsBack) {
 // The contact sheet's panels: the drawing as it is (top left), completed
 // areas tinted light blue (top right), depth colours (bottom left), skeletons
 // (bottom right); panels are the hair's box shrunk by a whole factor.
+// Slow to take a skeleton report, as a terminal can be: the silent worker then
+// finishes the last strands while the reporting one waits here.
+class SlowSkeletonProgress final : public Progress {
+ public:
+  void report(std::string_view stage, double fraction, std::string_view) override {
+    if (stage != "skeleton") return;
+    fractions.push_back(fraction);
+    if (fraction < 1.0) std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  }
+  std::vector<double> fractions;
+};
+
+TEST(ModelStage, SkeletonProgressEndsAtOneWhicheverWorkerFinishesLast) {
+  // Strands of like sizes: the reporting worker's first (the longest) is not
+  // the last to finish.
+  generator::Options g;
+  g.width = 560;
+  g.height = 400;
+  g.strand_count = 10;
+  g.seed = 3;
+  const AnnotatedCase c = generator::generate_case(g);
+  ModelOptions options;
+  options.threads = 2;
+  SlowSkeletonProgress progress;
+  const ModelRun run =
+      build_model(c.image, c.regions, relations_of(c), {}, c.head_center, options, &progress);
+  ASSERT_GT(run.model.strands.size(), 2u);
+  ASSERT_FALSE(progress.fractions.empty());
+  EXPECT_EQ(progress.fractions.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(progress.fractions.begin(), progress.fractions.end()));
+}
+
 TEST(ModelStage, ContactSheetShowsTheCompletedAreasInLightBlue) {
   const AnnotatedCase c = read_annotated_case(HAIR25D_TEST_DATA_DIR "/annotated/case1");
   const ModelRun run = build_model(c.image, c.regions, relations_of(c), {}, c.head_center);

@@ -77,6 +77,7 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
           },
           kOverlaysKind);
     }
+    progress.end_line();
     if (json_to_stdout) {
       // The table would make standard output unreadable as JSON.
       std::fputs(pipeline::layering_report_json(report).c_str(), stdout);

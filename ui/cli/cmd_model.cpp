@@ -106,6 +106,7 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
                                     args->strokes + ": head_center");
       run = pipeline::run_model(image, &s, {}, &progress);
     }
+    progress.end_line();
     const std::string source = !args->regions.empty() ? args->regions
                                : hair_colour          ? "--hair-colour " + args->hair_colour
                                                       : args->strokes;

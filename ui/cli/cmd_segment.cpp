@@ -55,6 +55,7 @@ void add_segment_command(CLI::App& app, const CommonOptions& common) {
       run = pipeline::run_segment(image, strokes ? &*strokes : nullptr, &progress);
     }
     pipeline::write_segment_run(args->out, run);
+    progress.end_line();
     // Automatic regions include the paper on purpose; marked hair should not.
     if (strokes || !args->hair_colour.empty())
       for (const std::string& w : pipeline::hair_region_warnings(

@@ -14,8 +14,14 @@ TerminalProgress::Mode TerminalProgress::pick_mode(std::FILE* stream, bool quiet
 
 TerminalProgress::TerminalProgress(std::FILE* stream, Mode mode) : stream_(stream), mode_(mode) {}
 
-TerminalProgress::~TerminalProgress() {
-  if (bar_open_) std::fputc('\n', stream_);
+TerminalProgress::~TerminalProgress() { end_line(); }
+
+void TerminalProgress::end_line() {
+  if (!bar_open_) return;
+  std::fputc('\n', stream_);
+  std::fflush(stream_);
+  bar_open_ = false;
+  last_stage_.clear();  // a later report redraws its bar at once
 }
 
 void TerminalProgress::report(std::string_view stage, double fraction, std::string_view message) {

@@ -19,6 +19,9 @@ class TerminalProgress final : public Progress {
   TerminalProgress(std::FILE* stream, Mode mode);
   ~TerminalProgress() override;
   void report(std::string_view stage, double fraction, std::string_view message) override;
+  // Ends an open bar line, so that a summary or warning printed next (to this
+  // stream or to another on the same terminal) starts on a line of its own.
+  void end_line();
 
  private:
   std::FILE* stream_;

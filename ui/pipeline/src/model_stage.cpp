@@ -190,16 +190,19 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
     });
     std::atomic<std::size_t> next_strand{0};
     std::atomic<std::size_t> finished{0};
+    std::size_t reported = 0;  // by the reporting worker only
     const auto worker = [&](bool reports) {
       for (std::size_t k = next_strand++; k < count; k = next_strand++) {
         finish(work[k]);
         const std::size_t n = ++finished;
-        if (reports) report(progress, "skeleton", static_cast<double>(n) / count);
+        if (reports) report(progress, "skeleton", static_cast<double>(reported = n) / count);
       }
     };
     auto other = std::async(std::launch::async, worker, false);
     worker(true);
     other.get();
+    // The silent worker may finish the last strand: the stage still ends at 100%.
+    if (reported != count) report(progress, "skeleton", 1.0);
   } else {
     for (std::size_t i = 0; i < count; ++i) {
       finish(i);
