@@ -295,7 +295,17 @@ HairModel read_model(const fs::path& folder, const ImageLimits& limits) {
                     " times the image pixel limit are allowed");
       }
       const std::string okey = jr::join(at, "texture_origin");
-      const Vec2 o = jr::as_point(jr::member(js, src, at, "texture_origin"), src, okey);
+      const json& origin = jr::member(js, src, at, "texture_origin");
+      const Vec2 o = jr::as_point(origin, src, okey);
+      // The texture is a crop of the drawing, completed parts reaching at
+      // most one drawing size beyond it (checked before the cast to int).
+      if (o.x() < -m.width || o.x() > m.width || o.y() < -m.height || o.y() > m.height) {
+        jr::fail(src, okey,
+                 "an origin within one model size of the drawing (x in " +
+                     std::to_string(-m.width) + ".." + std::to_string(m.width) + ", y in " +
+                     std::to_string(-m.height) + ".." + std::to_string(m.height) + ")",
+                 &origin);
+      }
       s.texture_origin = {static_cast<int>(o.x()), static_cast<int>(o.y())};
     }
     s.mesh = read_mesh(jr::member(js, src, at, "mesh"), src, jr::join(at, "mesh"));
@@ -321,6 +331,18 @@ HairModel read_model(const fs::path& folder, const ImageLimits& limits) {
     if (static_cast<int>(s.skeleton.parent.size()) != n) {
       jr::fail(src, jr::join(skey, "parent"), "one parent per node (" + std::to_string(n) + ")",
                &sk["parent"]);
+    }
+    // A tree stored root first, every parent before its child: walking up
+    // from any node ends at the root, so no reader or solver loops forever.
+    for (int k = 0; k < n; ++k) {
+      const int p = s.skeleton.parent[static_cast<std::size_t>(k)];
+      if (k == 0 ? p != -1 : (p < 0 || p >= k)) {
+        jr::fail(src, jr::index(jr::join(skey, "parent"), static_cast<std::size_t>(k)),
+                 k == 0 ? std::string("-1 (node 0 is the root)")
+                        : "a node index in 0.." + std::to_string(k - 1) +
+                              " (parent[i] < i: a parent comes before its child)",
+                 &sk["parent"][static_cast<std::size_t>(k)]);
+      }
     }
     if (const json* ph = jr::optional_member(js, src, at, "physics")) {
       const std::string pkey = jr::join(at, "physics");

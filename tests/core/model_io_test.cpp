@@ -140,6 +140,38 @@ TEST_F(EditedModel, WrongTypesAndUnknownIdsAreNamed) {
   EXPECT_NE(error_after(doc).find("differs"), std::string::npos);
 }
 
+// The skeleton is a tree stored root first and textures lie near the
+// drawing: a cycle or an absurd origin is named, not taken.
+TEST_F(EditedModel, CyclicSkeletonsAndFarTexturesAreRefused) {
+  json doc = doc_;
+  doc["strands"][0]["skeleton"]["parent"][0] = 1;  // 0 -> 1 -> 0: a cycle
+  std::string e = error_after(doc);
+  EXPECT_NE(e.find("model.json"), std::string::npos) << e;
+  EXPECT_NE(e.find("strands[0].skeleton.parent[0]"), std::string::npos) << e;
+  EXPECT_NE(e.find("node 0 is the root"), std::string::npos) << e;
+  doc = doc_;
+  doc["strands"][0]["skeleton"]["parent"][1] = 2;  // a child before its parent
+  e = error_after(doc);
+  EXPECT_NE(e.find("strands[0].skeleton.parent[1]"), std::string::npos) << e;
+  EXPECT_NE(e.find("parent[i] < i"), std::string::npos) << e;
+  doc = doc_;
+  doc["strands"][0]["skeleton"]["parent"][2] = -1;  // a second root
+  EXPECT_NE(error_after(doc).find("strands[0].skeleton.parent[2]"), std::string::npos);
+  doc = doc_;
+  doc["strands"][0]["skeleton"]["tips"][0] = 3;
+  EXPECT_NE(error_after(doc).find("strands[0].skeleton.tips[0]"), std::string::npos);
+  for (const json& origin : {json::array({1e12, -5}), json::array({2, -6}), json::array({8, 0})}) {
+    doc = doc_;
+    doc["strands"][0]["texture_origin"] = origin;
+    e = error_after(doc);
+    EXPECT_NE(e.find("strands[0].texture_origin"), std::string::npos) << origin << ": " << e;
+    EXPECT_NE(e.find("x in -7..7, y in -5..5"), std::string::npos) << e;
+  }
+  doc = doc_;
+  doc["strands"][0]["texture_origin"] = json::array({-7, 5});  // at the bound: taken
+  EXPECT_EQ(error_after(doc), "");
+}
+
 // A forged model.json must not fill memory: size, strand count, texture
 // size and all textures together are bounded.
 TEST_F(EditedModel, ModelsBeyondTheLimitsAreRefused) {
