@@ -79,9 +79,12 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       throw Error("completion::complete_strands: relation " + std::to_string(r.a) + " / " +
                   std::to_string(r.b) + " names a region that is not in the region map");
     }
-    if (r.relation == Relation::kEqual)
-      strands.unite(r.a, r.b);  // same depth and touching: halves of one strand
-    else if (r.relation == Relation::kBelow)
+    if (r.relation == Relation::kEqual) {
+      // Same depth and touching: halves of one strand (counted once per two
+      // groups made one, so the summary adds up: regions - strands).
+      if (strands.find(r.a) != strands.find(r.b)) ++result.equal_merges;
+      strands.unite(r.a, r.b);
+    } else if (r.relation == Relation::kBelow)
       ctx.regions[r.a].occluders.insert(r.b);
     else
       ctx.regions[r.b].occluders.insert(r.a);
@@ -287,9 +290,10 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   result.regions = std::move(ctx.labels);
   std::ostringstream s;
   s << result.strands.size() << " strands from " << ctx.regions.size()
-    << " regions: " << result.joins << " joins, " << result.roots << " roots, " << result.tips
-    << " tips completed; " << result.strand_inpaint.filled << " strand and "
-    << result.background_inpaint.filled << " background pixels inpainted";
+    << " regions: " << result.equal_merges << " same-depth merges, " << result.joins << " joins, "
+    << result.roots << " roots, " << result.tips << " tips completed; "
+    << result.strand_inpaint.filled << " strand and " << result.background_inpaint.filled
+    << " background pixels inpainted";
   result.summary = s.str();
   report(progress, "completion", 1.0, result.summary);
   return result;

@@ -131,6 +131,26 @@ TEST(ModelStage, SkeletonProgressEndsAtOneWhicheverWorkerFinishesLast) {
   EXPECT_TRUE(std::is_sorted(progress.fractions.begin(), progress.fractions.end()));
 }
 
+// Every region is in one strand: regions made one by "equal" relations and by
+// joins account for the difference, and the summary says both.
+TEST(ModelStage, SummaryCountsSameDepthMergesAndJoins) {
+  const AnnotatedCase c = read_annotated_case(HAIR25D_TEST_DATA_DIR "/annotated/case1");
+  const std::vector<RegionRelation> relations = relations_of(c);
+  ASSERT_TRUE(std::any_of(relations.begin(), relations.end(),
+                          [](const RegionRelation& r) { return r.relation == Relation::kEqual; }));
+  const ModelRun run = build_model(c.image, c.regions, relations, {}, c.head_center);
+  std::set<int> regions;
+  for (int y = 0; y < c.regions.height(); ++y)
+    for (int x = 0; x < c.regions.width(); ++x)
+      if (c.regions.at(x, y) > 0) regions.insert(c.regions.at(x, y));
+  EXPECT_GT(run.completion.equal_merges, 0);
+  EXPECT_EQ(run.completion.equal_merges + run.completion.joins,
+            static_cast<int>(regions.size() - run.model.strands.size()));
+  EXPECT_NE(run.summary.find(std::to_string(run.completion.equal_merges) + " same-depth merges"),
+            std::string::npos)
+      << run.summary;
+}
+
 TEST(ModelStage, ContactSheetShowsTheCompletedAreasInLightBlue) {
   const AnnotatedCase c = read_annotated_case(HAIR25D_TEST_DATA_DIR "/annotated/case1");
   const ModelRun run = build_model(c.image, c.regions, relations_of(c), {}, c.head_center);

@@ -101,6 +101,9 @@ struct Result {
   Vec2 head_center{0, 0};  // used (given or estimated)
   bool head_center_estimated = false;
   int joins = 0, roots = 0, tips = 0;
+  // Regions made one strand by "equal" relations (two groups becoming one
+  // counts one); with the joins, regions - strands = equal_merges + joins.
+  int equal_merges = 0;
   InpaintResult strand_inpaint, background_inpaint;
   std::string summary;
 };
