@@ -129,20 +129,41 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
     Strand& s = m.strands[i];
     StrandReport& info = run.strands[i];
     if (s.outline.size() >= 3) {
-      // A corner under a strand drawn above is hidden: not a tip (§6).
+      // A corner under a strand drawn above is hidden: not a tip (§6). It is
+      // under it when its own pixel is that strand's (a visible region or a
+      // completed hidden part), or most of the disc round it is: a strand
+      // merely lying alongside, sharing or nearing the outline, leaves a
+      // visible tip a tip (before, any front pixel within the reach hid it:
+      // wikipe-tan's left side lock and lucy's lock lost their skeletons).
+      const auto in_front = [&](int x, int y) {
+        if (!run.regions.contains(x, y)) return false;
+        const auto it = strand_depth_of_region.find(run.regions.at(x, y));
+        if (it != strand_depth_of_region.end() && it->second > s.depth) return true;
+        for (std::size_t j = 0; j < m.strands.size(); ++j) {
+          if (m.strands[j].depth <= s.depth) continue;
+          const LabelMap& mask = run.strands[j].mask;
+          const int mx = x - m.strands[j].texture_origin.x();
+          const int my = y - m.strands[j].texture_origin.y();
+          if (mask.contains(mx, my) && mask.at(mx, my) == 2) return true;
+        }
+        return false;
+      };
       std::vector<bool> covered(s.outline.size(), false);
       const int reach = options.cover_reach;
       for (std::size_t v = 0; v < s.outline.size(); ++v) {
         const int cx = static_cast<int>(s.outline[v].x()), cy = static_cast<int>(s.outline[v].y());
-        for (int dy = -reach; dy <= reach && !covered[v]; ++dy)
+        if (in_front(cx, cy)) {
+          covered[v] = true;
+          continue;
+        }
+        int disc = 0, front = 0;
+        for (int dy = -reach; dy <= reach; ++dy)
           for (int dx = -reach; dx <= reach; ++dx) {
-            if (!run.regions.contains(cx + dx, cy + dy)) continue;
-            auto it = strand_depth_of_region.find(run.regions.at(cx + dx, cy + dy));
-            if (it != strand_depth_of_region.end() && it->second > s.depth) {
-              covered[v] = true;
-              break;
-            }
+            if (dx * dx + dy * dy > reach * reach) continue;
+            ++disc;
+            front += in_front(cx + dx, cy + dy);
           }
+        covered[v] = 2 * front > disc;
       }
       try {
         skeleton::Input sk;

@@ -27,8 +27,8 @@ struct ModelOptions {
   completion::Options completion;
   skeleton::Options skeleton;
   skeleton::MeshOptions mesh;
-  // An outline vertex is covered (not a tip) when a strand drawn above has a
-  // pixel within this many pixels of it.
+  // An outline vertex is covered (not a tip) when its own pixel, or more than
+  // half of the disc of this radius round it, belongs to a strand drawn above.
   int cover_reach = 3;
   int threads = 2;  // skeletons and meshes built by up to this many threads (1 = serial)
 
