@@ -31,8 +31,7 @@ CLI::Option* add_colour_tolerance(CLI::App* cmd, double* tolerance, CLI::Option*
           const double value = std::stod(text, &used);
           if (used != text.size()) return std::string("must be a number");
           if (!std::isfinite(value)) return std::string("must be a finite number");
-          if (value < 0.0 || value > 442.0)
-            return "must be a number from 0 to 442, not " + text;
+          if (value < 0.0 || value > 442.0) return "must be a number from 0 to 442, not " + text;
           return std::string();
         } catch (const std::exception&) {
           return std::string("must be a number");
