@@ -163,5 +163,22 @@ TEST(StrandMesh, OutlineThatTouchesItself) {
   EXPECT_GT(area, 0.5 * std::abs(signed_area(outline)));
 }
 
+// A large outline that only exact constructions can mesh: their refinement
+// stops at a few thousand vertices (without the limit it ran for minutes,
+// each point dearer than the last), and the mesh still covers the shape.
+TEST(StrandMesh, LargeFoldedOutlineIsMeshedWithinTheExactLimit) {
+  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) + "/skeleton/large_folded_outline.txt");
+  ASSERT_TRUE(in) << "missing test data";
+  Polyline outline;
+  double x = 0, y = 0;
+  while (in >> x >> y) outline.emplace_back(x, y);
+  ASSERT_EQ(outline.size(), 1821u);
+  const MeshResult r = mesh_strand(outline);
+  EXPECT_NO_THROW(r.mesh.validate("large folded strand mesh"));
+  EXPECT_LE(r.mesh.V.rows(), 3000);
+  EXPECT_EQ(r.status, MeshStatus::kVertexLimit);
+  EXPECT_GT(mesh_area(r.mesh), 0.9 * std::abs(signed_area(outline)));
+}
+
 }  // namespace
 }  // namespace hair25d::skeleton
