@@ -199,20 +199,25 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   }
   // Back hair cut by a fan of overlapping strands: no single edge pair faces
   // across them, so its pieces are matched region to region (bank_crossings.h).
-  for (detail::MassJoin& j : detail::mass_join_candidates(ctx)) {
-    if (!try_join(j.region_a, j.region_b)) continue;
+  // A join whose hidden part is bands between the two pieces; `ends` puts the
+  // reports' end points at the first band's ends (the ray joins have them).
+  auto join_by_bands = [&](const detail::MassJoin& j, bool ends) {
+    if (!try_join(j.region_a, j.region_b)) return;
     EdgeReport ra, rb;
     ra.region = j.region_a, ra.joined_region = j.region_b;
     rb.region = j.region_b, rb.joined_region = j.region_a;
-    ra.p = ra.q = j.bands.empty() ? Vec2(0, 0) : j.bands.front().front();
-    rb.p = rb.q = j.bands.empty() ? Vec2(0, 0) : j.bands.front().back();
+    if (ends) {
+      ra.p = ra.q = j.bands.empty() ? Vec2(0, 0) : j.bands.front().front();
+      rb.p = rb.q = j.bands.empty() ? Vec2(0, 0) : j.bands.front().back();
+    }
     ra.completion = rb.completion = EdgeCase::kJoined;
     reports.push_back(ra);
     reports.push_back(rb);
     for (const Polyline& band : j.bands)
       pieces.areas.push_back({j.region_a, band, false, static_cast<int>(reports.size()) - 2});
     ++result.joins;
-  }
+  };
+  for (const detail::MassJoin& j : detail::mass_join_candidates(ctx)) join_by_bands(j, true);
   std::set<int> front;
   for (const auto& [id, ups] : ctx.above)
     for (int up : ups) front.insert(strands.find(up));
@@ -244,18 +249,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     ++result.joins;
   }
   // Back-hair pieces linked under the regions above both (mass_paths.cpp).
-  for (const detail::MassJoin& j : detail::path_join_candidates(ctx)) {
-    if (!try_join(j.region_a, j.region_b)) continue;
-    EdgeReport ra, rb;
-    ra.region = j.region_a, ra.joined_region = j.region_b;
-    rb.region = j.region_b, rb.joined_region = j.region_a;
-    ra.completion = rb.completion = EdgeCase::kJoined;
-    reports.push_back(ra);
-    reports.push_back(rb);
-    for (const Polyline& band : j.bands)
-      pieces.areas.push_back({j.region_a, band, false, static_cast<int>(reports.size()) - 2});
-    ++result.joins;
-  }
+  for (const detail::MassJoin& j : detail::path_join_candidates(ctx)) join_by_bands(j, false);
   int done = 0;
   for (const auto& [id, list] : atoms_of_region) {
     std::vector<detail::Edge> open;
