@@ -7,6 +7,7 @@
 #include <map>
 #include <vector>
 
+#include "completion/synthetic.h"
 #include "hair25d/core/error.h"
 #include "hair25d/pipeline/model_stage.h"
 
@@ -14,7 +15,7 @@ namespace hair25d::pipeline {
 namespace {
 
 constexpr int kW = 220, kH = 190;
-constexpr Rgba kSheet{245, 245, 240, 255}, kInk{20, 15, 10, 255};
+constexpr Rgba kSheet{245, 245, 240, 255};
 
 struct Triangle {
   Vec2 a, b, c;
@@ -26,29 +27,6 @@ struct Triangle {
     return (s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0);
   }
 };
-
-// Paints `inside` pixels with `colour` and `label`, with an ink outline
-// `line` px wide (label 0) just inside its border, as the annotated cases
-// are drawn (flat colour without outline: line 0).
-template <typename Inside>
-void paint(Image& image, LabelMap& regions, Inside inside, Rgba colour, int label, int line = 2) {
-  const auto in = [&](int x, int y) {
-    return x >= 0 && y >= 0 && x < kW && y < kH && inside(x + 0.5, y + 0.5);
-  };
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      if (!in(x, y)) continue;
-      bool border = false;
-      for (int dy = -line; dy <= line && !border; ++dy)
-        for (int dx = -line; dx <= line; ++dx)
-          if (!in(x + dx, y + dy)) {
-            border = true;
-            break;
-          }
-      image.at(x, y) = border ? kInk : colour;
-      regions.at(x, y) = border ? 0 : label;
-    }
-}
 
 // The strand holding `region`.
 const Strand& strand_of(const ModelRun& run, int region, std::size_t* index) {
@@ -74,19 +52,16 @@ double nearest_tip(const Strand& s, const Vec2& p) {
 // before, the front lock's pixels within 3 px of the left lock's point hid
 // it and its skeleton ran to the farthest end instead.
 TEST(SkeletonTips, LockBesideAFrontLockKeepsItsTip) {
-  Image image(kW, kH, kSheet);
-  LabelMap regions(kW, kH, 0);
+  completion::test::Drawing d{Image(kW, kH, kSheet), LabelMap(kW, kH, 0), {}};
   const Triangle left{{40, 0}, {86, 0}, {86, 150}};
   const Triangle right{{87, 0}, {134, 0}, {87, 175}};
-  paint(
-      image, regions, [&](double x, double y) { return left.contains(x, y); },
-      Rgba{120, 80, 50, 255}, 1, 0);
-  paint(
-      image, regions, [&](double x, double y) { return right.contains(x, y); },
-      Rgba{150, 100, 60, 255}, 2, 0);
+  completion::test::paint(
+      d, [&](double x, double y) { return left.contains(x, y); }, Rgba{120, 80, 50, 255}, 1, 0);
+  completion::test::paint(
+      d, [&](double x, double y) { return right.contains(x, y); }, Rgba{150, 100, 60, 255}, 2, 0);
   const std::vector<RegionRelation> relations = {{1, 2, Relation::kBelow, 1.0}};
   const std::map<int, int> depth = {{1, 0}, {2, 1}};
-  const ModelRun run = build_model(image, regions, relations, depth, Vec2(88, -40));
+  const ModelRun run = build_model(d.image, d.regions, relations, depth, Vec2(88, -40));
   ASSERT_EQ(run.model.strands.size(), 2u);
   std::size_t li = 0, ri = 0;
   const Strand& l = strand_of(run, 1, &li);
@@ -101,18 +76,16 @@ TEST(SkeletonTips, LockBesideAFrontLockKeepsItsTip) {
 // A lock whose point lies under a band drawn above it (region 2 across rows
 // 110-170): its corners under the band are no tips, so no tip lies there.
 TEST(SkeletonTips, PointUnderAFrontStrandIsNoTip) {
-  Image image(kW, kH, kSheet);
-  LabelMap regions(kW, kH, 0);
+  completion::test::Drawing d{Image(kW, kH, kSheet), LabelMap(kW, kH, 0), {}};
   const Triangle lock{{50, 0}, {110, 0}, {80, 160}};
-  paint(
-      image, regions, [&](double x, double y) { return lock.contains(x, y); },
-      Rgba{120, 80, 50, 255}, 1);
-  paint(
-      image, regions, [](double x, double y) { return x > 20 && x < 160 && y > 110 && y < 175; },
+  completion::test::paint(
+      d, [&](double x, double y) { return lock.contains(x, y); }, Rgba{120, 80, 50, 255}, 1);
+  completion::test::paint(
+      d, [](double x, double y) { return x > 20 && x < 160 && y > 110 && y < 175; },
       Rgba{90, 140, 190, 255}, 2);
   const std::vector<RegionRelation> relations = {{1, 2, Relation::kBelow, 1.0}};
   const std::map<int, int> depth = {{1, 0}, {2, 1}};
-  const ModelRun run = build_model(image, regions, relations, depth, Vec2(80, -40));
+  const ModelRun run = build_model(d.image, d.regions, relations, depth, Vec2(80, -40));
   std::size_t li = 0;
   const Strand& l = strand_of(run, 1, &li);
   if (run.strands[li].skeleton == skeleton::SkeletonStatus::kTips) {
