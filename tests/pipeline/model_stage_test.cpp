@@ -96,9 +96,17 @@ TEST(ModelStage, AnnotatedCaseBuildsWritesAndReadsBack) {
   fs::remove_all(dir);
 }
 
-// The contact sheet's panels: the drawing as it is (top left), completed
-// areas tinted light blue (top right), depth colours (bottom left), skeletons
-// (bottom right); panels are the hair's box shrunk by a whole factor.
+#ifdef HAIR25D_HAVE_GENERATOR
+// A generated 560 x 400 drawing of ten strands.
+AnnotatedCase generated_non_square_case() {
+  generator::Options g;
+  g.width = 560;
+  g.height = 400;
+  g.strand_count = 10;
+  g.seed = 3;
+  return generator::generate_case(g);
+}
+
 // Slow to take a skeleton report, as a terminal can be: the silent worker then
 // finishes the last strands while the reporting one waits here.
 class SlowSkeletonProgress final : public Progress {
@@ -114,12 +122,7 @@ class SlowSkeletonProgress final : public Progress {
 TEST(ModelStage, SkeletonProgressEndsAtOneWhicheverWorkerFinishesLast) {
   // Strands of like sizes: the reporting worker's first (the longest) is not
   // the last to finish.
-  generator::Options g;
-  g.width = 560;
-  g.height = 400;
-  g.strand_count = 10;
-  g.seed = 3;
-  const AnnotatedCase c = generator::generate_case(g);
+  const AnnotatedCase c = generated_non_square_case();
   ModelOptions options;
   options.threads = 2;
   SlowSkeletonProgress progress;
@@ -130,6 +133,7 @@ TEST(ModelStage, SkeletonProgressEndsAtOneWhicheverWorkerFinishesLast) {
   EXPECT_EQ(progress.fractions.back(), 1.0);
   EXPECT_TRUE(std::is_sorted(progress.fractions.begin(), progress.fractions.end()));
 }
+#endif
 
 // Every region is in one strand: regions made one by "equal" relations and by
 // joins account for the difference, and the summary says both.
@@ -151,6 +155,9 @@ TEST(ModelStage, SummaryCountsSameDepthMergesAndJoins) {
       << run.summary;
 }
 
+// The contact sheet's panels: the drawing as it is (top left), completed
+// areas tinted light blue (top right), depth colours (bottom left), skeletons
+// (bottom right); panels are the hair's box shrunk by a whole factor.
 TEST(ModelStage, ContactSheetShowsTheCompletedAreasInLightBlue) {
   const AnnotatedCase c = read_annotated_case(HAIR25D_TEST_DATA_DIR "/annotated/case1");
   const ModelRun run = build_model(c.image, c.regions, relations_of(c), {}, c.head_center);
@@ -292,12 +299,7 @@ TEST(ModelStage, EndToEndWithPredictedRelationsOnAnnotatedCases) {
 
 #ifdef HAIR25D_HAVE_GENERATOR
 TEST(ModelStage, GeneratedNonSquareDrawing) {
-  generator::Options g;
-  g.width = 560;
-  g.height = 400;
-  g.strand_count = 10;
-  g.seed = 3;
-  const AnnotatedCase c = generator::generate_case(g);
+  const AnnotatedCase c = generated_non_square_case();
   const ModelRun run = build_model(c.image, c.regions, relations_of(c), {}, c.head_center);
   expect_consistent(run, c.regions);
   EXPECT_EQ(run.model.width, 560);

@@ -137,16 +137,22 @@ TEST(StrandMesh, BothLobesOfACrossedOutline) {
   EXPECT_GT(right, 10);
 }
 
+// An outline from tests/data/skeleton: "x y" per line, pixels (empty when
+// the file is missing, which the tests' size checks then report).
+Polyline read_outline(const std::string& name) {
+  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) + "/skeleton/" + name);
+  Polyline outline;
+  double x = 0, y = 0;
+  while (in >> x >> y) outline.emplace_back(x, y);
+  return outline;
+}
+
 // A completed strand that folds over itself (tests/data/README.md): CGAL's
 // mesher crashed on it. The mesh covers the inside: the outline is resampled
 // every 6 px before meshing, so a sliver of triangles may stick out where two
 // parts of it nearly touch, nothing more.
 TEST(StrandMesh, OutlineThatTouchesItself) {
-  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) + "/skeleton/folded_outline.txt");
-  ASSERT_TRUE(in) << "missing test data";
-  Polyline outline;
-  double x = 0, y = 0;
-  while (in >> x >> y) outline.emplace_back(x, y);
+  const Polyline outline = read_outline("folded_outline.txt");
   ASSERT_EQ(outline.size(), 190u);
   const MeshResult r = mesh_strand(outline);
   EXPECT_NO_THROW(r.mesh.validate("folded strand mesh"));
@@ -167,11 +173,7 @@ TEST(StrandMesh, OutlineThatTouchesItself) {
 // stops at a few thousand vertices (without the limit it ran for minutes,
 // each point dearer than the last), and the mesh still covers the shape.
 TEST(StrandMesh, LargeFoldedOutlineIsMeshedWithinTheExactLimit) {
-  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) + "/skeleton/large_folded_outline.txt");
-  ASSERT_TRUE(in) << "missing test data";
-  Polyline outline;
-  double x = 0, y = 0;
-  while (in >> x >> y) outline.emplace_back(x, y);
+  const Polyline outline = read_outline("large_folded_outline.txt");
   ASSERT_EQ(outline.size(), 1821u);
   const MeshResult r = mesh_strand(outline);
   EXPECT_NO_THROW(r.mesh.validate("large folded strand mesh"));
