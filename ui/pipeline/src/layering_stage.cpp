@@ -9,17 +9,11 @@
 #include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
 #include "hair25d/layering/overlay.h"
+#include "hair25d/pipeline/eval_overlay.h"
 #include "hair25d/pipeline/segment_stage.h"
 
 namespace hair25d::pipeline {
 namespace {
-
-std::vector<std::pair<int, int>> wrong_pairs(const layering::CaseScore& score) {
-  std::vector<std::pair<int, int>> wrong;
-  for (const layering::PairOutcome& o : score.outcomes)
-    if (!o.correct) wrong.emplace_back(o.a, o.b);
-  return wrong;
-}
 
 LayeringCaseResult evaluate_one(const AnnotatedCase& c, const LayeringEvalOptions& options) {
   LayeringCaseResult out;
@@ -53,7 +47,7 @@ LayeringCaseResult evaluate_one(const AnnotatedCase& c, const LayeringEvalOption
                   ": cannot create the overlays folder: " + ec.message());
     }
     save_image(options.overlays_dir / (c.name + ".png"),
-               layering::render_overlay(c.image, *result, wrong_pairs(out.score)));
+               render_eval_overlay(c.image, *result, out.score));
   }
   return out;
 }
