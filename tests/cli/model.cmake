@@ -93,7 +93,7 @@ hair25d_cli_test(model_head_not_a_number 1 STDERR "^hair25d: --head \\(nan, 100\
   ARGS -q model ${case5}/image.png --regions ${case5}/regions.png --head nan 100 -o model_nan_head)
 hair25d_cli_test(segment_hair_colour_with_signs 1 STDERR "expected #RRGGBB"
   ARGS -q segment ${case5}/image.png --hair-colour "#-1-1-1" -o seg_signs)
-hair25d_cli_test(segment_colour_tolerance_nan 2 STDERR "--colour-tolerance: must be a finite number"
+hair25d_cli_test(segment_colour_tolerance_nan 1 STDERR "--colour-tolerance: must be a finite number"
   ARGS -q segment ${case5}/image.png --hair-colour "#5a82cc" --colour-tolerance nan -o seg_nan)
 hair25d_cli_test(model_colour_tolerance_needs_a_colour 2 STDERR "--colour-tolerance requires --hair-colour"
   ARGS -q model ${case5}/image.png --regions ${case5}/regions.png --colour-tolerance 3 -o model_tol)

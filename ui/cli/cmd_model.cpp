@@ -50,6 +50,18 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
   colour->excludes(strokes)->excludes(regions);
   cmd->add_option("--head", args->head, "Head centre X Y in pixels (overrides strokes.json)")
       ->expected(2)
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            // "Could not convert: --head = a,b" named neither the rule nor which.
+            try {
+              std::size_t used = 0;
+              (void)std::stod(text, &used);
+              if (used == text.size()) return {};
+            } catch (const std::exception&) {
+            }
+            return "X and Y must be numbers (pixels), not " + text;
+          },
+          "NUMBER"))
       ->default_str("");  // none by default ("[]" says nothing)
   cmd->add_option("-o,--output", args->out,
                   "The model folder to write (an earlier model there is replaced; a folder of "
@@ -63,9 +75,11 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
     if (args->strokes.empty() && args->regions.empty() && args->hair_colour.empty()) {
       // Automatic regions take every enclosed area for a strand: the paper,
       // the face and the clothes would be completed and animated as hair.
-      throw CLI::ValidationError("model",
-                                 "say which regions are hair: --strokes S.json, --regions R.png or "
-                                 "--hair-colour #RRGGBB");
+      // Wrong usage (status 2), as a missing -o is.
+      throw CLI::RequiredError(
+          "model: say which regions are hair: --strokes S.json, --regions R.png or "
+          "--hair-colour #RRGGBB",
+          CLI::ExitCodes::RequiredError);
     }
     pipeline::check_model_folder(args->out, "-o");
     check_inputs_outside(args->out, {args->image, args->strokes, args->regions}, "-o");

@@ -1,5 +1,6 @@
-// hair25d: the command line. Exit status 0 done, 1 bad input or failure (one
-// line on stderr saying what and where), 2 wrong usage.
+// hair25d: the command line. Exit status 0 done, 1 bad input (a file, or an
+// option's value that breaks its rule) or failure (one line on stderr saying
+// what and where), 2 wrong usage (an unknown or missing option or command).
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -49,8 +50,17 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::ValidationError& e) {
+    // A value that breaks its option's rule (--colour-tolerance 500) is bad
+    // input like a bad file: one line, status 1 (as hair25d-generate).
+    std::fprintf(stderr, "hair25d: %s\n", e.what());
+    return 1;
+  } catch (const CLI::ConversionError& e) {
+    std::fprintf(stderr, "hair25d: %s\n", e.what());
+    return 1;
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    // Wrong usage: an unknown or missing option or argument.
+    std::fprintf(stderr, "hair25d: %s\nRun with --help for more information.\n", e.what());
     return 2;
   } catch (const hair25d::Error& e) {
     std::fprintf(stderr, "hair25d: %s\n", e.what());

@@ -1,11 +1,17 @@
 // hair25d-generate: writes synthetic annotated cartoon-hair cases (FORMATS.md)
 // to a folder, one sub-folder a case, for tests, benchmarks and eval-layering.
+// Exit status as hair25d's (docs/cli.md): 0 done; 1 a bad option value, bad
+// input or a failure, one line on stderr naming the option, value and rule;
+// 2 wrong usage (an unknown or missing option).
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "hair25d/core/error.h"
 #include "hair25d/generator/generator.h"
@@ -16,6 +22,42 @@ namespace gen = hair25d::generator;
 
 const std::map<std::string, int> kShadingNames = {
     {"flat", 0}, {"two-tone", 1}, {"gradient", 2}, {"screentone", 3}, {"mixed", -1}};
+
+// A whole number in [lo, hi]; CLI::Range says "Value abc not in range" for
+// text and lets 1.5 through as 1.
+CLI::Validator whole_number(int lo, int hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        const bool digits =
+            !text.empty() && text.size() <= 9 && std::all_of(text.begin(), text.end(), [](char c) {
+              return std::isdigit(static_cast<unsigned char>(c));
+            });
+        const int value = digits ? std::stoi(text) : lo - 1;
+        if (value < lo || value > hi)
+          return "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                 ", not " + text;
+        return {};
+      },
+      std::to_string(lo) + "-" + std::to_string(hi));
+}
+
+// The generator's own check names its fields (generator::Options::width):
+// say the option the user typed instead.
+std::string with_option_names(std::string why) {
+  static const std::pair<const char*, const char*> kOptions[] = {
+      {"width", "--width"},           {"height", "--height"},     {"strand_count", "--strands"},
+      {"line_width", "--line-width"}, {"noise_sigma", "--noise"}, {"jpeg_quality", "--jpeg"},
+      {"shading", "--shading"}};
+  for (const auto& [field, option] : kOptions) {
+    const std::string prefix = std::string("generator::Options::") + field + " = ";
+    if (why.rfind(prefix, 0) == 0) {
+      why = std::string(option) + " " + why.substr(prefix.size());
+      if (const auto semi = why.find("; "); semi != std::string::npos) why.replace(semi, 2, ": ");
+      break;
+    }
+  }
+  return why;
+}
 
 std::string case_name(int index) {
   char buf[32];
@@ -35,23 +77,72 @@ int main(int argc, char** argv) {
   int shading = 0;
   bool coloured = false;
   app.add_option("-o,--output", out, "Folder to write case000, case001, ... into")->required();
-  app.add_option("--count", count, "Number of cases")->check(CLI::Range(1, 100000));
-  app.add_option("--seed", seed, "Seed of the first case; case i uses seed + i");
+  app.add_option("--count", count, "Number of cases")->check(whole_number(1, 100000));
+  app.add_option("--seed", seed, "Seed of the first case; case i uses seed + i")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            // CLI11 would take -1 for 2^64 - 1.
+            const bool digits = !text.empty() && text.size() <= 19 &&
+                                std::all_of(text.begin(), text.end(), [](char c) {
+                                  return std::isdigit(static_cast<unsigned char>(c));
+                                });
+            return digits ? std::string()
+                          : "must be a whole number from 0 to 10^19 - 1, not " + text;
+          },
+          "0-9999999999999999999"));
   app.add_option("--width", opt.width, "Image width, pixels");
   app.add_option("--height", opt.height, "Image height, pixels");
   app.add_option("--strands", opt.strand_count, "Hair strands a case");
   app.add_option("--line-width", opt.line_width, "Outline width, pixels");
   app.add_option("--shading", shading, "flat, two-tone, gradient, screentone, or mixed (cycles)")
-      ->transform(CLI::CheckedTransformer(kShadingNames, CLI::ignore_case));
+      ->transform(CLI::Validator(
+          [](std::string& text) -> std::string {
+            std::string lower;
+            for (char c : text)
+              lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            const auto it = kShadingNames.find(lower);
+            if (it == kShadingNames.end())
+              return "must be flat, two-tone, gradient, screentone or mixed, not " + text;
+            text = std::to_string(it->second);
+            return {};
+          },
+          "flat|two-tone|gradient|screentone|mixed"));
   app.add_option("--noise", opt.noise_sigma, "Gaussian noise sigma, 0..255 scale");
   app.add_option("--jpeg", opt.jpeg_quality, "JPEG round trip at this quality (0 = none)");
   app.add_flag("--coloured-lines", coloured, "Outlines in a dark hair colour, not black");
   bool fading = false;
   app.add_flag("--fading-forks", fading,
                "Fork lines stop inside the strand; the annotation still splits it");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ValidationError& e) {
+    // A value that breaks its option's rule is bad input: one line, status 1.
+    std::fprintf(stderr, "hair25d-generate: %s\n", e.what());
+    return 1;
+  } catch (const CLI::ConversionError& e) {
+    std::fprintf(stderr, "hair25d-generate: %s\n", e.what());
+    return 1;
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "hair25d-generate: %s\nRun with --help for more information.\n", e.what());
+    return 2;
+  }
   opt.coloured_lines = coloured;
   opt.fading_forks = fading;
+  // Every case's options checked before the folder is made: a bad --width
+  // leaves nothing behind.
+  {
+    gen::Options o = opt;
+    o.shading = static_cast<gen::Shading>(std::max(shading, 0));  // mixed: each is valid
+    std::string why;
+    if (!o.is_valid(&why)) {
+      std::fprintf(stderr, "hair25d-generate: %s\n", with_option_names(why).c_str());
+      return 1;
+    }
+  }
 
   try {
     std::filesystem::create_directories(out);
