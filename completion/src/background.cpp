@@ -200,6 +200,14 @@ namespace {
 constexpr int kOpaque = 128;
 // RGB distance from a hair region's mean colour of hair the segmentation left.
 constexpr double kHairColour = 60.0;
+// RGB distance from the skin's median within which a colour is skin (a
+// shadow or a blush on it), never hair.
+constexpr double kSkinColour = 48.0;
+// RGB distance from the hair's outline colour of a dark pixel of that line.
+constexpr double kLineColour = 24.0;
+// How far (px, chessboard) from the grown hair a wedge of the outline's
+// colour where a lock's point lies on the face may reach.
+constexpr int kWedgeReach = 24;
 
 // The colour of the drawing's lines next to the hole (the face's outline,
 // the clothes'): the median by luma of the ink just outside it.
@@ -309,8 +317,8 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   // Inside the head the colour must also be one the hair is painted in:
   // an iris or a blush as dark as the hair is no hair.
   cv::Mat hair_coloured(h, w, CV_8U, cv::Scalar(0)), band;
+  const CommonColours painted = hair_colours(ctx);
   {
-    const CommonColours painted = hair_colours(ctx);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         if (!dark.at<std::uint8_t>(y, x)) continue;
@@ -351,6 +359,50 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
         if (thick.at<std::uint8_t>(y, x) && touches[static_cast<std::size_t>(parts.at<int>(y, x))])
           hair.at<std::uint8_t>(y, x) = 255;
   }
+  // On the head the bangs' points are drawn lighter than the regions the
+  // segmentation gave them (a highlight, the anti-aliased taper): they are
+  // no dark outline, and left in the background they were orange and pink
+  // flecks on sylvie's brows. Hair grows there through pixels of a colour
+  // the hair is painted in that is no skin colour, within the outline's
+  // reach.
+  cv::Mat tips = hair.clone();
+  if (!head.mask.empty()) {
+    cv::Mat light(h, w, CV_8U, cv::Scalar(0)), grown;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const Rgba& c = image.at(x, y);
+        if (head.mask.at<std::uint8_t>(y, x) && !dark.at<std::uint8_t>(y, x) && c.a >= kOpaque &&
+            colour_distance(c, head.colour) > kSkinColour && painted.common(c))
+          light.at<std::uint8_t>(y, x) = 255;
+      }
+    light |= hair;
+    for (int k = 0; k < o.outline_reach; ++k) {
+      cv::dilate(tips, grown, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3)));
+      tips = grown & light;
+    }
+  }
+  // The colour of the hair's drawn outline: the median by luma of the dark
+  // pixels the outline assignment gave the regions. Where a strand's point
+  // lies on the face its two outlines converge into a thick wedge of that
+  // colour beyond the labelled pixels (generated seed 50: black wedges
+  // along a diagonal lock stayed on the face as if they were eyes).
+  cv::Mat outline_coloured(h, w, CV_8U, cv::Scalar(0));
+  if (!head.mask.empty()) {
+    std::vector<Rgba> assigned;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (dark.at<std::uint8_t>(y, x) && ctx.labels.at(x, y) != 0 && ctx.original->at(x, y) == 0)
+          assigned.push_back(image.at(x, y));
+    if (!assigned.empty()) {
+      std::nth_element(assigned.begin(), assigned.begin() + assigned.size() / 2, assigned.end(),
+                       [](const Rgba& a, const Rgba& b) { return luma(a) < luma(b); });
+      const Rgba line = assigned[assigned.size() / 2];
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          if (dark.at<std::uint8_t>(y, x) && colour_distance(image.at(x, y), line) <= kLineColour)
+            outline_coloured.at<std::uint8_t>(y, x) = 255;
+    }
+  }
   // The face's thick dark features that the hair's outline pixels took
   // where the bangs touch them (an eye's upper lash line: thick, dark, not
   // of the hair's colour) stay: the hair's outline is thinner.
@@ -361,7 +413,8 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
       for (int x = 0; x < w; ++x)
         candidate.at<std::uint8_t>(y, x) =
             dark.at<std::uint8_t>(y, x) && !hair_coloured.at<std::uint8_t>(y, x) &&
-                    head.mask.at<std::uint8_t>(y, x) && ctx.original->at(x, y) == 0
+                    !outline_coloured.at<std::uint8_t>(y, x) && head.mask.at<std::uint8_t>(y, x) &&
+                    ctx.original->at(x, y) == 0
                 ? 255
                 : 0;
     cv::morphologyEx(candidate, features, cv::MORPH_OPEN,
@@ -419,11 +472,21 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   cv::dilate(hair, near, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(17, 17)));
   cv::dilate(hair, hair, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
   hair |= outline;
+  // The points go with the hair but do not lead the outline's growth on
+  // (the growth from them ran into sylvie's iris).
+  hair |= tips;
   // On the face, a lock's point beyond the outline growth (the growth there
   // follows the hair's colour only) is measured from the grown hair.
   cv::Mat near_grown;
   if (!head.mask.empty())
     cv::dilate(hair, near_grown, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(17, 17)));
+  // A wedge of the outline's colour reaches farther from the labelled
+  // pixels than a lock's point of the hair's colour.
+  cv::Mat near_wedge;
+  if (!head.mask.empty())
+    cv::dilate(hair, near_wedge,
+               cv::getStructuringElement(cv::MORPH_RECT,
+                                         cv::Size(2 * kWedgeReach + 1, 2 * kWedgeReach + 1)));
   // Where outlines converge (sharp tips) the drawn line is wider than the
   // outline reach: dark specks close to the hair are hair too. Dark pieces
   // reaching farther are other things' lines (a hair clip's, the face's) and
@@ -435,13 +498,24 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   cv::Mat pieces;
   const int count = cv::connectedComponents(dark, pieces, 8, CV_32S);
   std::vector<std::uint8_t> beyond(static_cast<std::size_t>(count), 0);
+  // A wedge is all of the outline's or the hair's colour: one holding an
+  // eye's pixel is the eye's lash line.
+  std::vector<std::uint8_t> mixed(static_cast<std::size_t>(count), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (dark.at<std::uint8_t>(y, x) && !outline_coloured.at<std::uint8_t>(y, x) &&
+          !hair_coloured.at<std::uint8_t>(y, x))
+        mixed[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       if (dark.at<std::uint8_t>(y, x)) {
         const bool on_head = !head.mask.empty() && head.mask.at<std::uint8_t>(y, x);
         const bool own = hair_coloured.at<std::uint8_t>(y, x);
         const bool thick_feature = on_head && features.at<std::uint8_t>(y, x);
-        if (thick_feature || !(on_head && own ? near_grown : near).at<std::uint8_t>(y, x))
+        const bool wedge = on_head && outline_coloured.at<std::uint8_t>(y, x) &&
+                           !mixed[static_cast<std::size_t>(pieces.at<int>(y, x))];
+        const cv::Mat& reach = wedge ? near_wedge : on_head && own ? near_grown : near;
+        if (thick_feature || !reach.at<std::uint8_t>(y, x))
           beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
       }
   cv::Mat holes(h, w, CV_8U, cv::Scalar(0));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
@@ -33,6 +34,9 @@ constexpr double kSmoothSigma = 5.0;
 // The face's shading next to the hole fades into its median colour over
 // this many px (a shadow under the bangs, a highlight, do not fill the skull).
 constexpr double kShadingReach = 16.0;
+// Skin beyond the face's mask within this many px of its skin (across a
+// line) is the face's too.
+constexpr int kLineGap = 4;
 
 // Mean |luma − its 3×3 median| over the skin pixels (0 on flat or softly
 // shaded skin).
@@ -119,17 +123,55 @@ Head find_head(const Context& ctx, const Face& face, const InpaintOptions& optio
   const double radius = (1.0 + (kSkullScale - 1.0) * share) * 0.5 * widest;
   // The face's hull, without what runs on below the jaw (an open outline
   // lets the face run into the neck and the chest).
+  // The face's skin runs on beyond find_face's mask: lucy's face is the
+  // band of her eyes and glasses, her cheeks and jaw are skin joined to it.
+  // Left out of the head, they bordered the rest of the hole and the flat
+  // fill continued them sideways to the hair's outer edge. Known pixels of
+  // the skin's colour joined to the face's skin count with the face.
+  cv::Mat skin_like(h, w, CV_8U, cv::Scalar(0)), parts;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Rgba& c = image.at(x, y);
+      if (ctx.label(x, y) == 0 && !ink[static_cast<std::size_t>(y) * w + x] && c.a >= 240 &&
+          colour_distance(c, head.colour) <= kSkinDistance)
+        skin_like.at<std::uint8_t>(y, x) = 1;
+    }
+  // Joined across a line (her glasses' frame, the nose's line): within
+  // kLineGap px of the face's skin.
+  cv::Mat reach;
+  cv::dilate(
+      head.skin, reach,
+      cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * kLineGap + 1, 2 * kLineGap + 1)));
+  const int n = cv::connectedComponents(skin_like, parts, 8, CV_32S);
+  std::vector<std::uint8_t> joined(static_cast<std::size_t>(n), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (reach.at<std::uint8_t>(y, x)) joined[static_cast<std::size_t>(parts.at<int>(y, x))] = 1;
   std::vector<cv::Point> near, hull;
+  auto within = [&](int x, int y) {
+    return std::hypot(x + 0.5 - ctx.head.x(), y + 0.5 - ctx.head.y()) <= kFaceReach * radius;
+  };
   for (const cv::Point& p : points)
-    if (std::hypot(p.x + 0.5 - ctx.head.x(), p.y + 0.5 - ctx.head.y()) <= kFaceReach * radius)
-      near.push_back(p);
-  if (near.size() >= 3) cv::convexHull(near, hull);
+    if (within(p.x, p.y)) near.push_back(p);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int k = parts.at<int>(y, x);
+      if (k > 0 && joined[static_cast<std::size_t>(k)] && skin_like.at<std::uint8_t>(y, x) &&
+          !face.mask.at<std::uint8_t>(y, x) && within(x, y))
+        near.emplace_back(x, y);
+    }
+  // The head is one convex shape, the skull and the face: its outline runs
+  // from the jaw straight on to the skull (the disc and the face's hull
+  // apart left a notch at the cheeks, which the rim line followed).
+  const int disc_points = 64;
+  for (int i = 0; i < disc_points; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / disc_points;
+    near.emplace_back(static_cast<int>(std::lround(ctx.head.x() + radius * std::cos(a))),
+                      static_cast<int>(std::lround(ctx.head.y() + radius * std::sin(a))));
+  }
+  cv::convexHull(near, hull);
   head.mask = cv::Mat(h, w, CV_8U, cv::Scalar(0));
-  if (!hull.empty()) cv::fillConvexPoly(head.mask, hull, cv::Scalar(1));
-  cv::circle(head.mask,
-             cv::Point(static_cast<int>(std::lround(ctx.head.x())),
-                       static_cast<int>(std::lround(ctx.head.y()))),
-             static_cast<int>(std::lround(radius)), cv::Scalar(1), cv::FILLED);
+  cv::fillConvexPoly(head.mask, hull, cv::Scalar(1));
   return head;
 }
 
