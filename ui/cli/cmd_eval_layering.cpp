@@ -34,15 +34,34 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
       "Layering accuracy over annotated cases (FORMATS.md): one row per case and the total");
   cmd->add_option("CASES_DIR", args->cases_dir, "Folder whose sub-folders hold layering.json")
       ->required();
-  cmd->add_option("--json", args->json_path,
-                  "Also write the report as JSON to this file ('-': standard output, instead of "
-                  "the table)");
-  cmd->add_option("--overlays", args->overlays_dir,
-                  "Write an overlay per case here: arrows occludee -> occluder, '=' for equal, "
-                  "wrong pairs ringed in red");
+  CLI::Option* json = cmd->add_option(
+      "--json", args->json_path,
+      "Also write the report as JSON to this file ('-': standard output, instead of "
+      "the table)");
+  CLI::Option* overlays =
+      cmd->add_option("--overlays", args->overlays_dir,
+                      "Write an overlay per case here: arrows occludee -> occluder, '=' for equal, "
+                      "wrong pairs ringed in red");
   cmd->add_flag("--from-strokes", args->from_strokes,
                 "Layer regions segmented from each case's strokes.json instead of regions.png");
-  cmd->callback([args, &common] {
+  cmd->callback([args, json, overlays, &common] {
+    // Given but empty (a script's unset variable) is not "not given": the
+    // report or the overlays would silently go nowhere.
+    if (json->count() > 0 && args->json_path.empty())
+      throw Error("--json \"\": give the report a file name (or '-' for standard output)");
+    if (overlays->count() > 0 && args->overlays_dir.empty())
+      throw Error(
+          "--overlays \"\": give the output folder a name of its own (not \"\", \".\" or "
+          "\"..\")");
+    {
+      // find_annotated_cases says "not a folder of annotated cases" for both.
+      std::error_code ec;
+      const auto status = std::filesystem::status(args->cases_dir, ec);
+      if (status.type() == std::filesystem::file_type::not_found)
+        throw Error(args->cases_dir + ": no such folder (CASES_DIR: a folder of annotated cases)");
+      if (!ec && status.type() != std::filesystem::file_type::directory)
+        throw Error(args->cases_dir + ": is a file; CASES_DIR must be a folder of annotated cases");
+    }
     pipeline::LayeringEvalOptions options;
     options.from_strokes = args->from_strokes;
     const std::vector<std::filesystem::path> cases = find_annotated_cases(args->cases_dir);

@@ -34,16 +34,23 @@ void add_model_command(CLI::App& app, const CommonOptions& common) {
       "model",
       "Build the 2.5D hair model (paper §3–§6): segment, layer, complete and skeletonise "
       "every strand, and write the model folder with a contact sheet");
-  cmd->add_option("image", args->image, "The drawing (PNG, JPEG, TIFF, PSD, ...)")->required();
+  cmd->add_option("image", args->image, "The drawing (PNG, JPEG, TIFF, PSD, ...)")
+      ->required()
+      ->check(not_empty("the drawing's file name"));
   auto* strokes = cmd->add_option("--strokes", args->strokes,
-                                  "strokes.json: labelled hair strokes (and the head centre)");
-  auto* regions = cmd->add_option(
-      "--regions", args->regions,
-      "regions.png: hair region ids (0 = background and outlines) instead of segmenting");
-  auto* colour = cmd->add_option(
-      "--hair-colour", args->hair_colour,
-      "Without strokes or regions: the regions of this colour (#RRGGBB) are the hair, one "
-      "strand each");
+                                  "strokes.json: labelled hair strokes (and the head centre)")
+                      ->check(not_empty("the strokes file's name"));
+  auto* regions =
+      cmd->add_option(
+             "--regions", args->regions,
+             "regions.png: hair region ids (0 = background and outlines) instead of segmenting")
+          ->check(not_empty("the region map's file name"));
+  auto* colour =
+      cmd->add_option(
+             "--hair-colour", args->hair_colour,
+             "Without strokes or regions: the regions of this colour (#RRGGBB) are the hair, one "
+             "strand each")
+          ->check(not_empty("a colour #RRGGBB"));
   add_colour_tolerance(cmd, &args->tolerance, colour);
   strokes->excludes(regions)->excludes(colour);
   regions->excludes(strokes)->excludes(colour);

@@ -27,14 +27,18 @@ void add_segment_command(CLI::App& app, const CommonOptions& common) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "segment", "Split a drawing into hair regions (paper §3): from strokes, or automatic");
-  cmd->add_option("image", args->image, "The drawing (PNG, JPEG, TIFF, PSD, ...)")->required();
+  cmd->add_option("image", args->image, "The drawing (PNG, JPEG, TIFF, PSD, ...)")
+      ->required()
+      ->check(not_empty("the drawing's file name"));
   cmd->add_option("--strokes", args->strokes,
                   "strokes.json: labelled hair strokes; without it every face enclosed by "
-                  "lines becomes a region");
+                  "lines becomes a region")
+      ->check(not_empty("the strokes file's name"));
   CLI::Option* colour =
       cmd->add_option("--hair-colour", args->hair_colour,
                       "Without strokes: take the regions of this colour (#RRGGBB) as the hair, "
                       "one region each")
+          ->check(not_empty("a colour #RRGGBB"))
           ->excludes(cmd->get_option("--strokes"));
   add_colour_tolerance(cmd, &args->tolerance, colour);
   cmd->add_option("-o,--output", args->out,

@@ -29,12 +29,14 @@ CLI::Option* add_colour_tolerance(CLI::App* cmd, double* tolerance, CLI::Option*
         try {
           std::size_t used = 0;
           const double value = std::stod(text, &used);
-          if (used != text.size()) return std::string("must be a number");
+          if (used != text.size()) return "must be a number from 0 to 442, not " + text;
           if (!std::isfinite(value)) return std::string("must be a finite number");
           if (value < 0.0 || value > 442.0) return "must be a number from 0 to 442, not " + text;
           return std::string();
+        } catch (const std::out_of_range&) {
+          return "must be a number from 0 to 442, not " + text;  // 1e999
         } catch (const std::exception&) {
-          return std::string("must be a number");
+          return "must be a number from 0 to 442, not " + text;
         }
       },
       "0-442");

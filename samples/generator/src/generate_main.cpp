@@ -12,7 +12,9 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "hair25d/core/atomic_file.h"
 #include "hair25d/core/error.h"
 #include "hair25d/generator/generator.h"
 
@@ -20,8 +22,15 @@ namespace {
 
 namespace gen = hair25d::generator;
 
+// The numbers too, as scripts and docs written before the names use them.
 const std::map<std::string, int> kShadingNames = {
-    {"flat", 0}, {"two-tone", 1}, {"gradient", 2}, {"screentone", 3}, {"mixed", -1}};
+    {"flat", 0}, {"two-tone", 1}, {"gradient", 2}, {"screentone", 3}, {"mixed", -1},
+    {"0", 0},    {"1", 1},        {"2", 2},        {"3", 3},          {"-1", -1}};
+
+// The mark write_folder_atomically leaves in the -o folder: a second run
+// replaces the whole set (no stale case005 from a run of --count 6 after one
+// of --count 2), and a folder of other files is refused.
+constexpr const char* kCasesKind = "generated cases";
 
 // A whole number in [lo, hi]; CLI::Range says "Value abc not in range" for
 // text and lets 1.5 through as 1.
@@ -145,23 +154,37 @@ int main(int argc, char** argv) {
   }
 
   try {
-    std::filesystem::create_directories(out);
-    for (int i = 0; i < count; ++i) {
-      gen::Options o = opt;
-      o.seed = seed + static_cast<std::uint64_t>(i);
-      o.shading = static_cast<gen::Shading>(shading >= 0 ? shading : i % 4);
-      const auto t0 = std::chrono::steady_clock::now();
-      hair25d::AnnotatedCase c = gen::generate_case(o);
-      const auto t1 = std::chrono::steady_clock::now();
-      c.name = case_name(i);
-      hair25d::write_annotated_case(out / c.name, c);
-      const auto t2 = std::chrono::steady_clock::now();
-      std::printf("%s  seed %llu  %dx%d  %zu regions  %zu pairs  generate %.3f s  write %.3f s\n",
-                  c.name.c_str(), static_cast<unsigned long long>(o.seed), o.width, o.height,
-                  c.region_list.size(), c.pairs.size(),
-                  std::chrono::duration<double>(t1 - t0).count(),
-                  std::chrono::duration<double>(t2 - t1).count());
-    }
+    std::vector<std::string> names;
+    for (int i = 0; i < count; ++i) names.push_back(case_name(i));
+    hair25d::check_output_folder(out, "-o", names, kCasesKind);
+    // Written under a temporary name and swapped in when every case is there:
+    // a run stopped half-way leaves no half set that looks whole.
+    hair25d::write_folder_atomically(
+        out,
+        [&](const std::filesystem::path& tmp) {
+          for (int i = 0; i < count; ++i) {
+            gen::Options o = opt;
+            o.seed = seed + static_cast<std::uint64_t>(i);
+            o.shading = static_cast<gen::Shading>(shading >= 0 ? shading : i % 4);
+            const auto t0 = std::chrono::steady_clock::now();
+            hair25d::AnnotatedCase c = gen::generate_case(o);
+            const auto t1 = std::chrono::steady_clock::now();
+            c.name = case_name(i);
+            hair25d::write_annotated_case(tmp / c.name, c);
+            const auto t2 = std::chrono::steady_clock::now();
+            std::printf(
+                "%s  seed %llu  %dx%d  %zu regions  %zu pairs  generate %.3f s  write %.3f s\n",
+                c.name.c_str(), static_cast<unsigned long long>(o.seed), o.width, o.height,
+                c.region_list.size(), c.pairs.size(),
+                std::chrono::duration<double>(t1 - t0).count(),
+                std::chrono::duration<double>(t2 - t1).count());
+          }
+        },
+        kCasesKind);
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::fprintf(stderr, "hair25d-generate: %s: %s\n", e.path1().string().c_str(),
+                 e.code().message().c_str());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hair25d-generate: %s\n", e.what());
     return 1;
