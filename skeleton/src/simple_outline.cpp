@@ -4,10 +4,43 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <map>
 #include <utility>
 #include <vector>
 
 namespace hair25d::skeleton::detail {
+
+namespace {
+
+// A traced boundary passes a cell twice where the shape is pinched to one
+// cell or two cells touch only diagonally: a polygon that touches itself.
+// Cutting the trace into loops at every repeated cell leaves loops that each
+// visit a cell once (the lobes either side of the pinch).
+std::vector<std::vector<cv::Point>> split_at_repeats(const std::vector<cv::Point>& contour) {
+  std::vector<std::vector<cv::Point>> loops;
+  std::vector<cv::Point> stack;
+  std::map<std::pair<int, int>, std::size_t> position;  // cell -> index in stack
+  for (const cv::Point& p : contour) {
+    const auto key = std::make_pair(p.x, p.y);
+    auto it = position.find(key);
+    if (it == position.end()) {
+      position.emplace(key, stack.size());
+      stack.push_back(p);
+      continue;
+    }
+    // The cells since the first visit close a loop; the cell stays for the rest.
+    const std::size_t from = it->second;
+    loops.emplace_back(stack.begin() + static_cast<std::ptrdiff_t>(from), stack.end());
+    for (std::size_t k = from + 1; k < stack.size(); ++k)
+      position.erase(std::make_pair(stack[k].x, stack[k].y));
+    stack.resize(from + 1);
+  }
+  loops.push_back(std::move(stack));
+  return loops;
+}
+
+}  // namespace
 
 std::vector<Polyline> simple_outline(const Polyline& polygon) {
   constexpr double kScale = 2.0;  // raster cells per pixel
@@ -38,18 +71,22 @@ std::vector<Polyline> simple_outline(const Polyline& polygon) {
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
   std::vector<Polyline> loops;
-  for (const auto& contour : contours) {
-    // Specks left by the opening are below a pixel: no strand part.
-    if (std::abs(cv::contourArea(contour)) < kScale * kScale) continue;
-    std::vector<cv::Point> simplified;
-    cv::approxPolyDP(contour, simplified, 0.25 * kScale, true);
-    if (simplified.size() < 3) continue;
-    Polyline loop;
-    loop.reserve(simplified.size());
-    for (const cv::Point& q : simplified)
-      loop.emplace_back((q.x - kMargin) / kScale + x0, (q.y - kMargin) / kScale + y0);
-    loops.push_back(std::move(loop));
-  }
+  for (const auto& contour : contours)
+    for (const std::vector<cv::Point>& cells : split_at_repeats(contour)) {
+      // Specks left by the opening, and the out-and-back trace of a spur,
+      // are below a pixel: no strand part.
+      if (cells.size() < 3 || std::abs(cv::contourArea(cells)) < kScale * kScale) continue;
+      Polyline loop;
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        // Only corners of the staircase: points on a straight run add nothing.
+        const cv::Point& prev = cells[(i + cells.size() - 1) % cells.size()];
+        const cv::Point& next = cells[(i + 1) % cells.size()];
+        if (cells[i] - prev == next - cells[i]) continue;
+        loop.emplace_back((cells[i].x - kMargin) / kScale + x0,
+                          (cells[i].y - kMargin) / kScale + y0);
+      }
+      if (loop.size() >= 3) loops.push_back(std::move(loop));
+    }
   return loops;
 }
 

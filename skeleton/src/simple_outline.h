@@ -10,8 +10,8 @@
 namespace hair25d::skeleton::detail {
 
 // The outer boundaries of the filled outline, traced on a half-pixel raster:
-// folds are filled, parts thinner than about a pixel dropped, and each
-// boundary simplified within a quarter pixel. A shape pinched to a point
+// folds are filled and parts thinner than about a pixel dropped; each
+// boundary is a staircase of half-pixel steps. A shape pinched to a point
 // comes back as several disjoint simple loops; none if nothing is left.
 std::vector<Polyline> simple_outline(const Polyline& polygon);
 

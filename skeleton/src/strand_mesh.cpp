@@ -18,6 +18,7 @@
 #include "hair25d/core/error.h"
 #include "polygon_sampling.h"
 #include "simple_outline.h"
+#include "simplify_outline.h"
 
 namespace hair25d::skeleton {
 namespace {
@@ -29,11 +30,20 @@ namespace {
 // the mesher fails an internal check (a crash in a release build); making the
 // crossings explicit vertices is not enough, the refinement's own points
 // between nearly touching edges fail the same way. Such an outline is first
-// replaced by the boundaries of its filled shape (simple_outline.h); if even
-// those resample to a non-simple polygon, they are meshed with exact
-// constructions, correct but 10-300 ms rather than under 10.
+// replaced by the boundaries of its filled shape (simple_outline.h). Every
+// outline is then simplified without changing its topology
+// (simplify_outline.h), so the polygon meshed is simple; should rounding
+// still make it cross itself, it is meshed with exact constructions, correct
+// but slow.
 // Vertex limit under exact constructions (see mesh_strand).
 constexpr int kExactMaxVertices = 3000;
+// Pixels a simplified outline may leave out: the completed outlines are
+// traced on the pixel grid, so half a pixel keeps the mesh on the strand's
+// pixels.
+constexpr double kSimplifyTolerance = 0.5;
+// A retraced boundary (simple_outline.h) already runs through the centres of
+// half-pixel cells, up to half a pixel inside the outline: it gets a quarter.
+constexpr double kRetracedTolerance = 0.25;
 
 struct InexactKernel {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -146,6 +156,18 @@ bool is_simple(const Polyline& samples) {
   return CGAL::is_simple_2(points.begin(), points.end(), InexactKernel::K());
 }
 
+// Points every <= `spacing` px on each edge of a closed polygon, its own
+// vertices kept: the same boundary, sampled for the mesher.
+Polyline densify(const Polyline& loop, double spacing) {
+  Polyline out;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
+    const int parts = std::max(1, static_cast<int>(std::ceil((b - a).norm() / spacing)));
+    for (int k = 0; k < parts; ++k) out.push_back(a + (b - a) * (static_cast<double>(k) / parts));
+  }
+  return out;
+}
+
 }  // namespace
 
 MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
@@ -155,17 +177,29 @@ MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
   if (std::abs(signed_area(clean)) < 1e-6) {
     throw Error("skeleton::mesh_strand: outline encloses zero area; a mesh needs a 2D shape");
   }
-  const double spacing =
-      options.outline_spacing > 0 ? options.outline_spacing : 0.5 * options.max_edge;
-  std::vector<Polyline> loops{detail::resample_closed(clean, spacing, nullptr)};
-  if (!is_simple(loops[0])) {
-    loops.clear();
-    for (const Polyline& loop : detail::simple_outline(clean))
-      loops.push_back(detail::resample_closed(loop, spacing, nullptr));
-    if (loops.empty()) {
+  std::vector<Polyline> shape;
+  bool retraced = false;
+  if (is_simple(clean)) {
+    shape.push_back(clean);
+  } else {
+    shape = detail::simple_outline(clean);
+    retraced = true;
+    if (shape.empty()) {
       throw Error("skeleton::mesh_strand: nothing of the outline is thicker than a pixel");
     }
   }
+  // Resampling the outline at even spacing would cut its corners, and where
+  // two parts of it come within a spacing of each other the cut edges can
+  // cross or bridge the gap (a slit one pixel wide, the folds of case5 x2).
+  // A topology-preserving simplification keeps every loop simple and apart;
+  // points added on its edges at the wanted spacing do not move it.
+  const std::vector<Polyline> simplified =
+      detail::simplify_loops(shape, retraced ? kRetracedTolerance : kSimplifyTolerance);
+  const double spacing =
+      options.outline_spacing > 0 ? options.outline_spacing : 0.5 * options.max_edge;
+  std::vector<Polyline> loops;
+  for (const Polyline& loop : simplified) loops.push_back(densify(loop, spacing));
+  if (!std::all_of(loops.begin(), loops.end(), is_simple)) loops = simplified;
   const bool simple = std::all_of(loops.begin(), loops.end(), is_simple);
   // Exact constructions build each refinement point from earlier ones, so
   // their numbers, and the time per point, grow as the mesh does: a large
@@ -179,6 +213,8 @@ MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
   if (result.mesh.triangle_count() == 0) {
     throw Error("skeleton::mesh_strand: the outline gave no triangles inside it");
   }
+  result.exact = !simple;
+  result.retraced = retraced;
   return result;
 }
 

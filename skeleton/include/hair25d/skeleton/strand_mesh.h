@@ -14,7 +14,7 @@ struct MeshOptions {
   double max_edge = 12.0;        // pixels: longest triangle edge wanted inside
   double min_angle_deg = 20.0;   // wanted smallest angle (≤ 20.7° guarantees termination)
   int max_vertices = 20000;      // refinement stops here whatever the quality
-  double outline_spacing = 0.0;  // pixels between outline samples; 0 = max_edge / 2
+  double outline_spacing = 0.0;  // most pixels between outline samples; 0 = max_edge / 2
 
   // False, with a message naming the option, its value and the rule, if unusable.
   bool is_valid(std::string* error) const;
@@ -25,10 +25,18 @@ enum class MeshStatus { kRefined, kVertexLimit };
 struct MeshResult {
   TriMesh2 mesh;  // counter-clockwise triangles; on_curve marks outline edges
   MeshStatus status = MeshStatus::kRefined;
+  // The outline crossed or touched itself and was replaced by the boundary
+  // of its filled shape (folds filled, parts under a pixel thick dropped).
+  bool retraced = false;
+  // Even the simplified outline was not a simple polygon (floating-point
+  // rounding): meshed with exact constructions, slow, so refinement stopped
+  // at 3000 vertices at most.
+  bool exact = false;
 };
 
 // Meshes the inside of a closed outline (either orientation, not closed by
-// repetition). Throws hair25d::Error for invalid options, fewer than 3 distinct
+// repetition), simplified first within half a pixel without changing its
+// topology. Throws hair25d::Error for invalid options, fewer than 3 distinct
 // points, non-finite coordinates or zero area.
 MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options = {});
 
