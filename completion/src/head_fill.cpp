@@ -36,7 +36,7 @@ constexpr double kSmoothSigma = 5.0;
 constexpr double kShadingReach = 16.0;
 // Skin beyond the face's mask within this many px of its skin (across a
 // line) is the face's too.
-constexpr int kLineGap = 4;
+constexpr int kLineGap = 6;
 
 // Mean |luma − its 3×3 median| over the skin pixels (0 on flat or softly
 // shaded skin).
