@@ -29,6 +29,17 @@ using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predi
 using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
 using Point = K::Point_2;
 
+// A line drawn along the image's edge is traced in the last pixel row, a
+// hair's breadth inside the border: two constraints that close make the
+// mesher split both down to their distance (150000 vertices for one such
+// line). Within half a pixel of the border a point is on it.
+double snap_to_border(double v, double size) {
+  constexpr double kSnap = 0.5;
+  if (v < kSnap) return 0.0;
+  if (v > size - kSnap) return size;
+  return v;
+}
+
 }  // namespace
 
 bool MeshOptions::is_valid(std::string* error) const {
@@ -62,7 +73,7 @@ MeshResult build_mesh(const std::vector<Curve>& curves, int width, int height,
     for (const Vec2& p : c.points) {
       if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
         throw Error("segment::build_mesh: a curve holds a non-finite point");
-      points.emplace_back(std::clamp(p.x(), 0.0, W), std::clamp(p.y(), 0.0, H));
+      points.emplace_back(snap_to_border(p.x(), W), snap_to_border(p.y(), H));
     }
     const std::size_t n = c.points.size();
     for (std::size_t i = 0; i + 1 < n; ++i) segments.emplace_back(first + i, first + i + 1);

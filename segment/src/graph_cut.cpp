@@ -13,7 +13,9 @@
 #include "colour_model.h"
 #include "hair25d/core/error.h"
 #include "hair25d/segment/mesh.h"
+#include "hair25d/segment/regions.h"
 #include "mesh_topology.h"
+#include "paper.h"
 
 namespace hair25d::segment {
 
@@ -167,17 +169,29 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
                 "x" + std::to_string(line_mask.height()) + "; must match the " + std::to_string(W) +
                 "x" + std::to_string(H) + " image");
 
-  const LabelMap painted = rasterize_strokes(strokes, W, H);
+  // A stroke over transparent paper marks nothing: paper is no hair, and its
+  // colour is no sample of any label.
+  LabelMap painted = rasterize_strokes(strokes, W, H);
   std::set<int> present;
   bool has_background_strokes = false;
-  for (std::size_t i = 0; i < painted.size(); ++i) {
-    if (painted.data()[i] > 0) present.insert(painted.data()[i]);
-    if (painted.data()[i] == 0) has_background_strokes = true;
+  for (int y = 0; y < H; ++y) {
+    for (int x = 0; x < W; ++x) {
+      int& s = painted.at(x, y);
+      if (s == kNoStroke) continue;
+      if (detail::is_paper(image.at(x, y))) {
+        s = kNoStroke;
+        continue;
+      }
+      if (s > 0) present.insert(s);
+      if (s == 0) has_background_strokes = true;
+    }
   }
   if (present.empty())
     throw Error(
-        "segment::graph_cut_labels: the strokes hold no hair stroke (label > 0) inside the " +
-        std::to_string(W) + "x" + std::to_string(H) + " image; mark at least one hair region");
+        "segment::graph_cut_labels: the strokes hold no hair stroke (label > 0) on an "
+        "opaque pixel (alpha >= " +
+        std::to_string(kOpaqueAlpha) + ") of the " + std::to_string(W) + "x" + std::to_string(H) +
+        " image; mark at least one hair region");
 
   Problem pr;
   pr.nf = mesh.triangle_count();
@@ -191,6 +205,8 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
   const LabelMap tri = rasterize_triangles(mesh, W, H);
   std::vector<Eigen::Vector3d> colour_sum(pr.nf, Eigen::Vector3d::Zero()), all_sum = colour_sum;
   std::vector<int> colour_n(pr.nf, 0), all_n(pr.nf, 0);
+  std::vector<Eigen::Vector3d> paper_sum(pr.nf, Eigen::Vector3d::Zero());
+  std::vector<int> paper_n(pr.nf, 0);
   std::vector<std::vector<Eigen::Vector3d>> samples(pr.nl), line_samples(pr.nl);
   std::vector<std::map<int, int>> votes(pr.nf), line_votes(pr.nf);
   for (int y = 0; y < H; ++y) {
@@ -198,8 +214,16 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
       const int t = tri.at(x, y);
       if (t < 0) continue;
       const Rgba& p = image.at(x, y);
-      const Eigen::Vector3d c(p.r, p.g, p.b);
+      // Transparent paper is seen as white (as the line detector sees it);
+      // it enters a triangle's colour only if nothing opaque does.
+      const Eigen::Vector3d c = detail::colour_on_white(p);
+      const bool paper = detail::is_paper(p);
       const bool on_line = use_mask && line_mask.at(x, y) != 0;
+      if (paper) {
+        paper_sum[t] += c;
+        ++paper_n[t];
+        continue;
+      }
       all_sum[t] += c;
       ++all_n[t];
       if (!on_line) colour_sum[t] += c, ++colour_n[t];
@@ -274,11 +298,12 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
         colour = colour_sum[t] / colour_n[t];
       } else if (all_n[t] > 0) {
         colour = all_sum[t] / all_n[t];
+      } else if (paper_n[t] > 0) {
+        colour = paper_sum[t] / paper_n[t];
       } else {
         const int x = std::clamp(static_cast<int>(centroid.x()), 0, W - 1);
         const int y = std::clamp(static_cast<int>(centroid.y()), 0, H - 1);
-        const Rgba& p = image.at(x, y);
-        colour = Eigen::Vector3d(p.r, p.g, p.b);
+        colour = detail::colour_on_white(image.at(x, y));
       }
       const int gx = std::clamp(static_cast<int>(centroid.x()) / f, 0, gw - 1);
       const int gy = std::clamp(static_cast<int>(centroid.y()) / f, 0, gh - 1);
@@ -297,9 +322,17 @@ GraphCutResult graph_cut_labels(const Image& image, const TriMesh2& mesh, const 
       p[0] = 1.0 - pf;
       if (has_background_strokes && !models[0].empty())
         p[0] = std::max(p[0], models[0].similarity(colour) * proximity(0));
+      // A triangle mostly on transparent paper is background: paper is no hair.
+      bool on_paper = 2 * paper_n[t] > paper_n[t] + all_n[t];
+      if (paper_n[t] + all_n[t] == 0) {
+        const int x = std::clamp(static_cast<int>(centroid.x()), 0, W - 1);
+        const int y = std::clamp(static_cast<int>(centroid.y()), 0, H - 1);
+        on_paper = detail::is_paper(image.at(x, y));
+      }
       for (int l = 0; l < pr.nl; ++l) {
         const double cost = std::min(log_min, -std::log(std::max(p[l], 1e-300)));
-        pr.unary[static_cast<std::size_t>(t) * pr.nl + l] = options.unary_weight * area * cost;
+        pr.unary[static_cast<std::size_t>(t) * pr.nl + l] =
+            l > 0 && on_paper ? kHard : options.unary_weight * area * cost;
       }
     }
   });

@@ -16,7 +16,9 @@ struct LineField {
   cv::Mat sigma;     // CV_32F: the scale that answered best
 };
 
-// Grey levels 0-255 (luminance), transparent pixels composited over white.
+// Grey levels 0-255 of ink: half luminance, half the brightest channel (a
+// black line on a dark but saturated fill stands out), transparent pixels
+// composited over white.
 cv::Mat grey_image(const Image& image);
 
 // Replaces isolated dark specks no larger than max_size × max_size pixels and
@@ -26,9 +28,11 @@ cv::Mat grey_image(const Image& image);
 void remove_dots(cv::Mat& grey, const cv::Mat& closed, int max_size, float contrast);
 
 // Strength of dark lines at the best of `scales`: the scale-normalised largest
-// Hessian eigenvalue, capped by how much darker the centre is than both sides
-// so that the edge between two flat tones (cel shading) gives no line, and
-// less blob_weight × the second eigenvalue so that dots (screentone) give none.
+// Hessian eigenvalue less blob_weight × the second eigenvalue (dots, screentone,
+// give none), gated at each scale by how much darker the centre is than both
+// sides (the edge between two flat tones, cel shading, gives no line). The
+// best scale is the best after the gate: beside light paper a coarse scale
+// sees a step where a finer one still sees the line (dark hair's outline).
 LineField compute_line_field(const cv::Mat& grey, const std::vector<double>& scales,
                              float low_threshold, float blob_weight);
 

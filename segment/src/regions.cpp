@@ -9,6 +9,7 @@
 #include "hair25d/core/error.h"
 #include "hair25d/segment/mesh.h"
 #include "mesh_topology.h"
+#include "paper.h"
 
 namespace hair25d::segment {
 namespace {
@@ -39,6 +40,28 @@ std::vector<int> automatic_regions(const TriMesh2& mesh) {
   return id;
 }
 
+LabelMap region_map(const Image& image, const TriMesh2& mesh,
+                    const std::vector<int>& triangle_regions) {
+  check_sizes(mesh, triangle_regions, "segment::region_map");
+  LabelMap out =
+      rasterize_triangle_values(mesh, triangle_regions, image.width(), image.height(), 0);
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      if (detail::is_paper(image.at(x, y))) out.at(x, y) = 0;
+  return out;
+}
+
+int clear_paper_triangles(const Image& image, const TriMesh2& mesh,
+                          std::vector<int>& triangle_regions) {
+  check_sizes(mesh, triangle_regions, "segment::clear_paper_triangles");
+  const std::vector<char> paper = detail::paper_triangles(
+      image, mesh, rasterize_triangles(mesh, image.width(), image.height()));
+  int changed = 0;
+  for (std::size_t t = 0; t < paper.size(); ++t)
+    if (paper[t] && triangle_regions[t] != 0) triangle_regions[t] = 0, ++changed;
+  return changed;
+}
+
 std::vector<RegionStats> region_stats(const Image& image, const TriMesh2& mesh,
                                       const std::vector<int>& triangle_regions,
                                       const LabelMap& line_mask) {
@@ -58,8 +81,7 @@ std::vector<RegionStats> region_stats(const Image& image, const TriMesh2& mesh,
     s.centroid = (s.centroid * s.area + area * (a + b + c) / 3.0) / std::max(1e-300, s.area + area);
     s.area += area;
   }
-  const LabelMap regions =
-      rasterize_triangle_values(mesh, triangle_regions, image.width(), image.height(), 0);
+  const LabelMap regions = region_map(image, mesh, triangle_regions);
   std::map<int, std::array<double, 3>> sum, line_sum;
   std::map<int, int> n, line_n;
   for (int y = 0; y < image.height(); ++y) {

@@ -76,6 +76,9 @@ SegmentResult segment_image(const Image& image, const Strokes* strokes,
   } else {
     report(progress, kStage, 0.7, "automatic regions");
     s.triangle_region = automatic_regions(s.mesh);
+    // Transparent paper is no region; the ids stay 1..n.
+    if (clear_paper_triangles(image, s.mesh, s.triangle_region) > 0)
+      compact_labels(s.triangle_region);
   }
   s.adjacency = label_adjacency(s.mesh, s.triangle_region);
   r.timings.labels = seconds_since(t0);

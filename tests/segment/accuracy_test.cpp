@@ -40,8 +40,8 @@ void maybe_write_overlay(const std::string& name, const Image& image, const Segm
 
 double case_mean_iou(const std::string& name, const AnnotatedCase& c, double line_width) {
   const SegmentResult r = segment_image(c.image, &*c.strokes);
-  const LabelMap predicted = rasterize_triangle_values(
-      r.segmentation.mesh, r.segmentation.triangle_region, c.image.width(), c.image.height());
+  const LabelMap predicted =
+      region_map(c.image, r.segmentation.mesh, r.segmentation.triangle_region);
   maybe_write_overlay(name, c.image, r, predicted, c.regions);
   const LabelMap excluded = testing::outline_exclusion(c.regions, line_width);
   const auto scores = testing::region_ious(c.regions, predicted, excluded);
@@ -134,6 +134,31 @@ TEST(SegmentAccuracy, GeneratedCasesReachMeanIoU095) {
   const double mean = sum / static_cast<double>(variants.size());
   std::printf("[ segment ] generated cases: mean IoU %.4f\n", mean);
   EXPECT_GE(mean, 0.95);
+}
+
+// The set `hair25d-generate --count 12 --seed 1000 --shading -1` writes (640 ×
+// 480, shading cycling flat, two-tone, gradient, screentone): dark hair on
+// light paper among them, whose black outline is a line beside a dark fill.
+// Mean 0.902 when that outline was missed, 0.930 since (docs/segment.md).
+TEST(SegmentAccuracy, GeneratedSeed1000SetReachesMeanIoU092) {
+  double sum = 0.0;
+  constexpr int kCases = 12;
+  for (int i = 0; i < kCases; ++i) {
+    generator::Options o;
+    o.seed = 1000 + i;
+    o.shading = static_cast<generator::Shading>(i % 4);
+    o.strand_masks = false;
+    const AnnotatedCase c = generator::generate_case(o);
+    ASSERT_TRUE(c.strokes.has_value());
+    char name[32];
+    std::snprintf(name, sizeof name, "seed%d", 1000 + i);
+    const double m = case_mean_iou(name, c, o.line_width);
+    EXPECT_GE(m, 0.78) << name;
+    sum += m;
+  }
+  const double mean = sum / kCases;
+  std::printf("[ segment ] seed 1000 set: mean IoU %.4f\n", mean);
+  EXPECT_GE(mean, 0.92);
 }
 #endif
 

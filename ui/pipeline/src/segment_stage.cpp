@@ -21,8 +21,7 @@ SegmentRun run_segment(const Image& image, const Strokes* strokes, Progress* pro
   SegmentRun run;
   run.segmentation = std::move(result.segmentation);
   const Segmentation& s = run.segmentation;
-  run.regions =
-      segment::rasterize_triangle_values(s.mesh, s.triangle_region, image.width(), image.height());
+  run.regions = segment::region_map(image, s.mesh, s.triangle_region);
   if (overlay) run.overlay = segment::draw_overlay(image, s, run.regions);
   return run;
 }
@@ -50,8 +49,7 @@ SegmentRun run_segment_by_colour(const Image& image, std::array<std::uint8_t, 3>
   s.adjacency = segment::label_adjacency(s.mesh, s.triangle_region);
   SegmentRun run;
   run.segmentation = std::move(s);
-  run.regions = segment::rasterize_triangle_values(
-      run.segmentation.mesh, run.segmentation.triangle_region, image.width(), image.height());
+  run.regions = segment::region_map(image, run.segmentation.mesh, run.segmentation.triangle_region);
   run.overlay = segment::draw_overlay(image, run.segmentation, run.regions);
   return run;
 }

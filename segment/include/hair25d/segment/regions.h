@@ -18,6 +18,23 @@ namespace hair25d::segment {
 // numbered from 1 in order of their first triangle. #F ids.
 std::vector<int> automatic_regions(const TriMesh2& mesh);
 
+// A pixel belongs to no region below this alpha: transparent paper is not
+// hair. An anti-aliased edge pixel more than half transparent is paper too
+// (the completion stage draws nothing there either).
+inline constexpr std::uint8_t kOpaqueAlpha = 128;
+
+// Per pixel, the id of the triangle holding its centre; 0 where the drawing
+// is transparent (alpha < kOpaqueAlpha) or no triangle holds it. This is the
+// region map of a segmentation (regions.png). Throws hair25d::Error if the
+// sizes do not match.
+LabelMap region_map(const Image& image, const TriMesh2& mesh,
+                    const std::vector<int>& triangle_regions);
+
+// Sets to 0 the triangles that lie mostly on transparent paper (more than half
+// of their pixels below kOpaqueAlpha). Returns how many changed.
+int clear_paper_triangles(const Image& image, const TriMesh2& mesh,
+                          std::vector<int>& triangle_regions);
+
 struct RegionStats {
   int id = 0;
   double area = 0.0;             // pixels²
