@@ -296,7 +296,7 @@ Image render_eval_overlay(const Image& image, const layering::Result& result,
     const double pad = std::max(2.0, font_px / 5);
     for (const Mark& m : marks) {
       const cv::Size s = painter.text_size(m.text);
-      requests.push_back({m.at, m.wrong && !m.dot ? 0.7 * m.size + 2 : 0.5 * m.size,
+      requests.push_back({m.at, m.wrong ? (m.dot ? 1.0 : 0.7) * m.size + 2 : 0.5 * m.size,
                           0.5 * s.width + pad, 0.5 * s.height + pad, m.wrong});
     }
     const std::vector<Box> label_boxes = detail::place_labels(
@@ -337,9 +337,10 @@ Image render_eval_overlay(const Image& image, const layering::Result& result,
         cv::arrowedLine(drawing, to_cv(m.at - 0.5 * m.size * dir), to_cv(m.at + 0.5 * m.size * dir),
                         m.colour, w, cv::LINE_AA, 0, 0.45);
       }
-      if (m.wrong && !m.dot)
-        cv::circle(drawing, to_cv(m.at), static_cast<int>(std::lround(0.7 * m.size + w)), kRed, w,
-                   cv::LINE_AA);
+      if (m.wrong)  // a small ring round a dot: one red dot among black ones is easy to miss
+        cv::circle(drawing, to_cv(m.at),
+                   static_cast<int>(std::lround(m.dot ? m.size : 0.7 * m.size + w)), kRed,
+                   m.dot ? std::max(1, w / 2) : w, cv::LINE_AA);
     }
     for (const Mark& m : marks) painter.plate(m.text, m.label, m.colour, m.wrong);
 
