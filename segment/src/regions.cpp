@@ -51,15 +51,26 @@ LabelMap region_map(const Image& image, const TriMesh2& mesh,
   return out;
 }
 
-int clear_paper_triangles(const Image& image, const TriMesh2& mesh,
-                          std::vector<int>& triangle_regions) {
-  check_sizes(mesh, triangle_regions, "segment::clear_paper_triangles");
-  const std::vector<char> paper = detail::paper_triangles(
-      image, mesh, rasterize_triangles(mesh, image.width(), image.height()));
-  int changed = 0;
-  for (std::size_t t = 0; t < paper.size(); ++t)
-    if (paper[t] && triangle_regions[t] != 0) triangle_regions[t] = 0, ++changed;
-  return changed;
+int clear_paper_regions(const Image& image, const TriMesh2& mesh,
+                        std::vector<int>& triangle_regions) {
+  check_sizes(mesh, triangle_regions, "segment::clear_paper_regions");
+  const LabelMap regions =
+      rasterize_triangle_values(mesh, triangle_regions, image.width(), image.height(), 0);
+  std::map<int, std::array<int, 2>> count;  // id -> {paper, all}
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const int id = regions.at(x, y);
+      if (id <= 0) continue;
+      auto& c = count[id];
+      c[0] += detail::is_paper(image.at(x, y));
+      ++c[1];
+    }
+  std::set<int> cleared;
+  for (const auto& [id, c] : count)
+    if (2 * c[0] > c[1]) cleared.insert(id);
+  for (int& id : triangle_regions)
+    if (cleared.count(id)) id = 0;
+  return static_cast<int>(cleared.size());
 }
 
 std::vector<RegionStats> region_stats(const Image& image, const TriMesh2& mesh,

@@ -77,7 +77,7 @@ SegmentResult segment_image(const Image& image, const Strokes* strokes,
     report(progress, kStage, 0.7, "automatic regions");
     s.triangle_region = automatic_regions(s.mesh);
     // Transparent paper is no region; the ids stay 1..n.
-    if (clear_paper_triangles(image, s.mesh, s.triangle_region) > 0)
+    if (clear_paper_regions(image, s.mesh, s.triangle_region) > 0)
       compact_labels(s.triangle_region);
   }
   s.adjacency = label_adjacency(s.mesh, s.triangle_region);

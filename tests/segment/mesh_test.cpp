@@ -110,6 +110,26 @@ TEST(BuildMesh, RefinementStopsAtTheCapOnNearlyTouchingCurves) {
   EXPECT_TRUE(full.refinement_complete);
 }
 
+TEST(BuildMesh, LinesAlongTheImageEdgeLieOnTheBorder) {
+  // A line drawn along the bottom and left edges is traced in the last pixel
+  // row and column, 2e-4 px inside: as constraints beside the border it made
+  // the mesher split both down to that distance (the cap, 200000 points).
+  const std::vector<Curve> curves{polyline_curve({{20, 50}, {40, 69.9998}, {110, 69.9998}}),
+                                  polyline_curve({{0.0003, 10}, {0.0003, 60}, {30, 30}})};
+  const MeshResult r = build_mesh(curves, 130, 70);
+  EXPECT_TRUE(r.refinement_complete);
+  EXPECT_LT(r.mesh.triangle_count(), 2000);
+  EXPECT_NEAR(total_area(r.mesh), 130.0 * 70.0, 1e-6);
+  for (int v = 0; v < r.mesh.vertex_count(); ++v) {
+    const double x = r.mesh.V(v, 0), y = r.mesh.V(v, 1);
+    EXPECT_TRUE(x == 0.0 || x >= 0.5) << x;
+    EXPECT_TRUE(y == 70.0 || y <= 69.5) << y;
+  }
+  // Points half a pixel or more from the border stay where they are.
+  const MeshResult kept = build_mesh({polyline_curve({{0.5, 10}, {0.5, 60}})}, 130, 70);
+  EXPECT_NEAR(covered_length(kept.mesh, {0.5, 10}, {0.5, 60}), 50.0, 1e-6);
+}
+
 TEST(BuildMesh, BadInputIsRejected) {
   EXPECT_THROW(build_mesh({}, 0, 10), Error);
   EXPECT_THROW(build_mesh({}, 10, -1), Error);

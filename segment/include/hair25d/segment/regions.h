@@ -30,10 +30,11 @@ inline constexpr std::uint8_t kOpaqueAlpha = 128;
 LabelMap region_map(const Image& image, const TriMesh2& mesh,
                     const std::vector<int>& triangle_regions);
 
-// Sets to 0 the triangles that lie mostly on transparent paper (more than half
-// of their pixels below kOpaqueAlpha). Returns how many changed.
-int clear_paper_triangles(const Image& image, const TriMesh2& mesh,
-                          std::vector<int>& triangle_regions);
+// Sets to 0 every region (id > 0) that lies mostly on transparent paper
+// (more than half of its pixels below kOpaqueAlpha): the face round a drawing
+// on a transparent sheet is no region. Returns how many regions it cleared.
+int clear_paper_regions(const Image& image, const TriMesh2& mesh,
+                        std::vector<int>& triangle_regions);
 
 struct RegionStats {
   int id = 0;
