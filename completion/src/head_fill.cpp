@@ -37,6 +37,8 @@ constexpr double kShadingReach = 16.0;
 // Skin beyond the face's mask within this many px of its skin (across a
 // line) is the face's too.
 constexpr int kLineGap = 6;
+// Fewer skin pixels than this joined to the face is no cheek.
+constexpr int kMinSkinPiece = 100;
 
 // Mean |luma − its 3×3 median| over the skin pixels (0 on flat or softly
 // shaded skin).
@@ -142,15 +144,23 @@ Head find_head(const Context& ctx, const Face& face, const InpaintOptions& optio
   cv::dilate(
       head.skin, reach,
       cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * kLineGap + 1, 2 * kLineGap + 1)));
-  const int n = cv::connectedComponents(skin_like, parts, 8, CV_32S);
-  std::vector<std::uint8_t> joined(static_cast<std::size_t>(n), 0);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (reach.at<std::uint8_t>(y, x)) joined[static_cast<std::size_t>(parts.at<int>(y, x))] = 1;
-  std::vector<cv::Point> near, hull;
   auto within = [&](int x, int y) {
     return std::hypot(x + 0.5 - ctx.head.x(), y + 0.5 - ctx.head.y()) <= kFaceReach * radius;
   };
+  // A small piece is a gap between locks showing what is behind them, no
+  // cheek.
+  const int n = cv::connectedComponents(skin_like, parts, 8, CV_32S);
+  std::vector<std::uint8_t> joined(static_cast<std::size_t>(n), 0);
+  std::vector<int> area(static_cast<std::size_t>(n), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const auto k = static_cast<std::size_t>(parts.at<int>(y, x));
+      if (reach.at<std::uint8_t>(y, x)) joined[k] = 1;
+      ++area[k];
+    }
+  for (std::size_t k = 1; k < joined.size(); ++k)
+    if (area[k] < kMinSkinPiece) joined[k] = 0;
+  std::vector<cv::Point> near, hull;
   for (const cv::Point& p : points)
     if (within(p.x, p.y)) near.push_back(p);
   for (int y = 0; y < h; ++y)
