@@ -90,6 +90,38 @@ struct MassJoin {
   double colour = 0.0;          // median RGB step across the cut (the larger way)
   std::vector<Polyline> bands;  // the hidden part: runs of consecutive landing rays
 };
+// Screentone (the generator's, and manga's): ink dots cover a share of a
+// strand's pixels that is the same all along the strand, so pieces of one
+// strand share it and the paper colour between the dots; a window's mean
+// colour moves with the dots' phase. Per region, the share of pixels 2 px
+// inside it darker than Options::dark_luma, computed once.
+class RegionTones {
+ public:
+  // Both regions with at least this dark share are textured (the
+  // generator's tones cover 0.12-0.55 of a strand; flat, cel and gradient
+  // fills of hair lighter than dark_luma 0). Hair darker than dark_luma all
+  // over counts too: its pieces share the tone 1 and the light percentile
+  // is its colour.
+  static constexpr double kMinTone = 0.05;
+  // Largest tone step between textured pieces of one strand: on generated
+  // screentone seeds 101-116 path candidates of one strand stepped 0-0.016
+  // (a few pieces with drawn lines inside 0.07-0.32), of two 0-0.27, mostly
+  // over 0.05.
+  static constexpr double kMaxToneStep = 0.02;
+  explicit RegionTones(const Context& ctx) : ctx_(&ctx) {}
+  double tone(int region);
+  // False when both are textured and their tones differ by more than
+  // kMaxToneStep; `textured` says whether both are.
+  bool same_tone(int a, int b, bool* textured);
+
+ private:
+  const Context* ctx_;
+  std::map<int, double> tones_;
+};
+// The colour at the 75th luma percentile of a region's own pixels in the
+// 11 x 11 window round `at`: the paper between screentone dots (which cover
+// under half of a tone).
+Eigen::Vector3d light_colour_near(const Context& ctx, int region, const Vec2& at);
 // Back hair with tails hanging from under it (`front` = regions above some
 // region): the pieces lying above tails only, and the tails under them.
 struct TailedHair {
@@ -106,7 +138,10 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx);
 // other under their common occluders and the colour continues across it.
 // Pieces lying above no region (or above tails only) and no tail. Smallest
 // colour step first. Empty unless Options::path_joins.
-std::vector<MassJoin> path_join_candidates(const Context& ctx);
+// Pieces lying wholly along the `face` (CV_8U mask, may be empty) are strands
+// lying on it, not back hair. Textured pieces (RegionTones) compare colours
+// at the light percentile and must share their tone.
+std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& face);
 
 // Mean colour of a region's drawn pixels (not outlines) within 5 px of the
 // point 6 px from `at` along `inward`; `spread` (if given) gets their RGB

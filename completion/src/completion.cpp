@@ -249,7 +249,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     ++result.joins;
   }
   // Back-hair pieces linked under the regions above both (mass_paths.cpp).
-  for (const detail::MassJoin& j : detail::path_join_candidates(ctx)) join_by_bands(j, false);
+  for (const detail::MassJoin& j : detail::path_join_candidates(ctx, face.mask))
+    join_by_bands(j, false);
   int done = 0;
   for (const auto& [id, list] : atoms_of_region) {
     std::vector<detail::Edge> open;

@@ -191,5 +191,50 @@ TEST(FaceJoins, TailsHangingFromUnderTheBackHairAreNotJoined) {
   EXPECT_EQ(s->regions, (std::vector<int>{1}));
 }
 
+// Path joins (mass_paths.cpp) take pieces above no region for back hair.
+// Two thin strands (1, 2) lying on the face hang from under a bang (3) whose
+// tongue reaches down between them, so a path runs from one to the other
+// under the bang, its chord under the bang or over 3 px face gaps (generated
+// 1000 x 800 seed 14: bangs 17 and 11 joined under bang 20 this way). The
+// bang lies on a strand (4) over back hair (5), so 1 and 2 are no tails.
+Drawing strands_lying_on_the_face() {
+  Drawing d = blank(360, 260);
+  paint_face(d);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 320 && y > 5 && y < 32; }, kBack, 5);
+  paint(
+      d, [](double x, double y) { return x > 60 && x < 100 && y > 20 && y < 62; }, kOther, 4);
+  paint(
+      d, [](double x, double y) { return x > 165 && x < 172 && y > 98 && y < 165; }, kBack, 1);
+  paint(
+      d, [](double x, double y) { return x > 188 && x < 195 && y > 98 && y < 165; }, kBack, 2);
+  paint(
+      d,
+      [](double x, double y) {
+        return (x > 110 && x < 250 && y > 72 && y < 110) || (x > 175 && x < 185 && y < 125);
+      },
+      kBang, 3);
+  d.relations = {below(1, 3), below(2, 3), below(4, 3), below(5, 4)};
+  return d;
+}
+
+TEST(PathJoins, StrandsLyingOnTheFaceAreNotBackHair) {
+  const Drawing d = strands_lying_on_the_face();
+  const Input in = test::input_of(d, Vec2(kCx, kCy + 10));
+  Options o;
+  o.inpaint_strands = false;
+  o.inpaint_background = false;
+  // No strand join (tangents within 0.5 degrees of the chord, widths within
+  // 1 %): only the region-level joins could join them.
+  o.max_join_angle_deg = 0.5;
+  o.min_width_ratio = 0.99;
+  EXPECT_EQ(test::regions_with(complete_strands(in, o), 1), (std::vector<int>{1}));
+  EXPECT_EQ(test::regions_with(complete_strands(in, o), 2), (std::vector<int>{2}));
+  // Without the face (face joins off: no face is looked for) the path join
+  // takes them for back hair and joins them.
+  o.face_joins = false;
+  EXPECT_EQ(test::regions_with(complete_strands(in, o), 1), (std::vector<int>{1, 2}));
+}
+
 }  // namespace
 }  // namespace hair25d::completion

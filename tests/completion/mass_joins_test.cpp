@@ -292,6 +292,27 @@ TEST(PathJoins, SliverOfAnotherShadeIsNotJoined) {
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
 }
 
+TEST(PathJoins, SliverInOneScreentoneIsJoined) {
+  // One tone (2 px dots every 4 px: the sliver shows 4 columns inside its
+  // outline, two periods), its dots 2 px off between the pieces: the
+  // windows' means at the paths' ends differ with the dots' phase (beyond
+  // the 0.8 RGB limit; with the means this test fails), the paper between
+  // the dots and the pieces' dark shares do not.
+  Drawing d = back_hair_and_sliver(kBack);
+  tone(d, 1, 4, 2, 0);
+  tone(d, 2, 4, 2, 2);
+  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1, 2}));
+}
+
+TEST(PathJoins, SliverInAnotherScreentoneIsNotJoined) {
+  // The same paper and ink, a denser tone on the sliver (dark share 9/16
+  // against 9/36): the light percentile alone would join them.
+  Drawing d = back_hair_and_sliver(kBack);
+  tone(d, 1, 6, 3, 0);
+  tone(d, 2, 4, 3, 0);
+  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1}));
+}
+
 TEST(PathJoins, PiecesWithNoOccluderInCommonAreNotJoined) {
   // Strand 3 lies over the back hair only and 4 over the sliver only: no
   // region lies above both, so no path runs under their common occluders.
