@@ -102,6 +102,22 @@ TEST(EvalOverlay, TinyDrawingAndSizeMismatch) {
   const Image out = render_eval_overlay(Image(3, 2), tiny, {});
   EXPECT_GE(out.width(), 200);
   EXPECT_GT(out.height(), 8);
+  // Two regions in 4 x 3 pixels, their pair related and scored wrong: the
+  // label has no free spot in the drawing and is clipped, not a crash.
+  layering::Result two;
+  two.labels = LabelMap(4, 3, 1);
+  for (int y = 0; y < 3; ++y) two.labels.at(2, y) = two.labels.at(3, y) = 2;
+  RegionRelation r;
+  r.a = 1, r.b = 2, r.relation = Relation::kAbove;
+  two.relations = {r};
+  two.anchors = {layering::RelationAnchor{Vec2(2, 1.5), Vec2(1, 0)}};
+  layering::CaseScore wrong;
+  wrong.name = "tiny";
+  wrong.pairs = 1;
+  wrong.outcomes = {layering::PairOutcome{1, 2, Relation::kBelow, Relation::kAbove, false}};
+  const Image marked = render_eval_overlay(Image(4, 3, Rgba{200, 180, 160, 255}), two, wrong);
+  EXPECT_GE(marked.width(), 200);  // 4 px drawn 16 px wide, the caption wider
+  EXPECT_GT(count_red(marked, 12, marked.height()), 30);  // the caption's wrong pair
 }
 
 }  // namespace
