@@ -5,10 +5,11 @@
 #include <Eigen/Core>
 
 #include "hair25d/core/image.h"
+#include "hair25d/segment/regions.h"
 
 namespace hair25d::segment::detail {
 
-bool is_paper(const Rgba& p);
+inline bool is_paper(const Rgba& p) { return p.a < kOpaqueAlpha; }
 
 // The pixel's colour as seen on white paper (what the line detector sees).
 Eigen::Vector3d colour_on_white(const Rgba& p);
