@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -41,6 +42,9 @@ constexpr int kExactMaxVertices = 3000;
 // traced on the pixel grid, so half a pixel keeps the mesh on the strand's
 // pixels.
 constexpr double kSimplifyTolerance = 0.5;
+// The resampled outline may cut it by up to a pixel (its dropped vertices
+// are pixel steps); beyond that it is simplified instead.
+constexpr double kResampleTolerance = 1.0;
 // A retraced boundary (simple_outline.h) already runs through the centres of
 // half-pixel cells, up to half a pixel inside the outline: it gets a quarter.
 constexpr double kRetracedTolerance = 0.25;
@@ -156,6 +160,28 @@ bool is_simple(const Polyline& samples) {
   return CGAL::is_simple_2(points.begin(), points.end(), InexactKernel::K());
 }
 
+// The farthest a vertex of `polygon` lies from the resampled outline
+// `samples` (resample_closed's output, `source`: the input vertex nearest
+// each sample, non-decreasing), measured against the chords next to it.
+double deviation(const Polyline& polygon, const Polyline& samples, const std::vector<int>& source) {
+  const int n = static_cast<int>(polygon.size()), m = static_cast<int>(samples.size());
+  auto chord_distance = [&](const Vec2& p, int k) {
+    const Vec2 a = samples[((k % m) + m) % m], b = samples[(((k + 1) % m) + m) % m];
+    const double len2 = (b - a).squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - a).dot(b - a) / len2, 0.0, 1.0) : 0.0;
+    return (a + t * (b - a) - p).norm();
+  };
+  double worst = 0.0;
+  int k = 0;
+  for (int i = 0; i < n; ++i) {
+    while (k < m && source[k] < i) ++k;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int j = k - 2; j <= k + 1; ++j) nearest = std::min(nearest, chord_distance(polygon[i], j));
+    worst = std::max(worst, nearest);
+  }
+  return worst;
+}
+
 // Points every <= `spacing` px on each edge of a closed polygon, its own
 // vertices kept: the same boundary, sampled for the mesher.
 Polyline densify(const Polyline& loop, double spacing) {
@@ -177,29 +203,35 @@ MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
   if (std::abs(signed_area(clean)) < 1e-6) {
     throw Error("skeleton::mesh_strand: outline encloses zero area; a mesh needs a 2D shape");
   }
-  std::vector<Polyline> shape;
-  bool retraced = false;
-  if (is_simple(clean)) {
-    shape.push_back(clean);
-  } else {
-    shape = detail::simple_outline(clean);
-    retraced = true;
-    if (shape.empty()) {
-      throw Error("skeleton::mesh_strand: nothing of the outline is thicker than a pixel");
-    }
-  }
-  // Resampling the outline at even spacing would cut its corners, and where
-  // two parts of it come within a spacing of each other the cut edges can
-  // cross or bridge the gap (a slit one pixel wide, the folds of case5 x2).
-  // A topology-preserving simplification keeps every loop simple and apart;
-  // points added on its edges at the wanted spacing do not move it.
-  const std::vector<Polyline> simplified =
-      detail::simplify_loops(shape, retraced ? kRetracedTolerance : kSimplifyTolerance);
   const double spacing =
       options.outline_spacing > 0 ? options.outline_spacing : 0.5 * options.max_edge;
-  std::vector<Polyline> loops;
-  for (const Polyline& loop : simplified) loops.push_back(densify(loop, spacing));
-  if (!std::all_of(loops.begin(), loops.end(), is_simple)) loops = simplified;
+  // Usually the outline resampled every `spacing` px is a simple polygon
+  // within half a pixel of it. Where it is not (parts that come within a
+  // spacing of each other: a slit a pixel wide, the folds of case5 x2) the
+  // cut corners can cross or bridge the gap; a topology-preserving
+  // simplification keeps every loop simple and apart, and points added on its
+  // edges at the spacing do not move it.
+  std::vector<int> source;
+  std::vector<Polyline> loops{detail::resample_closed(clean, spacing, &source)};
+  bool retraced = false, simplified_path = false;
+  if (deviation(clean, loops[0], source) > kResampleTolerance || !is_simple(loops[0])) {
+    simplified_path = true;
+    std::vector<Polyline> shape;
+    if (is_simple(clean)) {
+      shape.push_back(clean);
+    } else {
+      shape = detail::simple_outline(clean);
+      retraced = true;
+      if (shape.empty()) {
+        throw Error("skeleton::mesh_strand: nothing of the outline is thicker than a pixel");
+      }
+    }
+    const std::vector<Polyline> simplified =
+        detail::simplify_loops(shape, retraced ? kRetracedTolerance : kSimplifyTolerance);
+    loops.clear();
+    for (const Polyline& loop : simplified) loops.push_back(densify(loop, spacing));
+    if (!std::all_of(loops.begin(), loops.end(), is_simple)) loops = simplified;
+  }
   const bool simple = std::all_of(loops.begin(), loops.end(), is_simple);
   // Exact constructions build each refinement point from earlier ones, so
   // their numbers, and the time per point, grow as the mesh does: a large
@@ -215,6 +247,7 @@ MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options) {
   }
   result.exact = !simple;
   result.retraced = retraced;
+  result.simplified = simplified_path;
   return result;
 }
 

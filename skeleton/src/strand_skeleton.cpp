@@ -5,6 +5,7 @@
 #include <limits>
 #include <queue>
 
+#include "axis_ends.h"
 #include "hair25d/core/error.h"
 #include "inside_test.h"
 #include "medial_graph.h"
@@ -182,14 +183,23 @@ Result build_skeleton(const Input& input, const Options& options) {
     tip_points.push_back(samples[c]);
   }
 
-  // Root: the medial-axis end nearest to the hint; without one, the end
-  // farthest along the axis from the sharpest tip (or a diameter end).
+  // Root: the axis end nearest to the hint; without one, the end farthest
+  // along the axis from the sharpest tip. Ends of spurs (a notch or bump of
+  // the outline) are not candidates: wikipe-tan's right tail lock took its
+  // root at a notch half-way down and its whole completed upper part was
+  // left without skeleton.
+  const detail::PrunedAxis axis = detail::prune_spurs(g, tip_nodes);
+  std::vector<bool> candidates(n, false);
+  for (int e : axis.ends) candidates[e] = true;
+  for (int t : tip_nodes) candidates[t] = false;
+  if (std::find(candidates.begin(), candidates.end(), true) == candidates.end()) {
+    candidates = leaf;
+    for (int t : tip_nodes) candidates[t] = false;
+  }
   std::vector<double> dist;
   std::vector<int> parent;
   int root = -1;
   if (input.root_hint) {
-    std::vector<bool> candidates = leaf;
-    for (int t : tip_nodes) candidates[t] = false;
     root = nearest_node(g, *input.root_hint, &candidates);
     if (root < 0) root = nearest_node(g, *input.root_hint, nullptr);
   } else {
@@ -197,7 +207,7 @@ Result build_skeleton(const Input& input, const Options& options) {
     shortest_paths(g, from, &dist, &parent);
     double best = -1.0;
     for (int i = 0; i < n; ++i) {
-      if (std::isfinite(dist[i]) && dist[i] > best && leaf[i]) {
+      if (std::isfinite(dist[i]) && dist[i] > best && candidates[i]) {
         best = dist[i];
         root = i;
       }
@@ -218,11 +228,46 @@ Result build_skeleton(const Input& input, const Options& options) {
     tips.push_back(t);
     result.tip_corners.push_back(tip_points[k]);
   }
+
+  // Rounded tips: a visible axis end that tapers but has no sharp corner
+  // (a completed tip drawn blunt, a brush stroke's round end). §6 asks for
+  // sharp corners; a rounded end would otherwise get no skeleton at all.
+  std::vector<bool> visible_end(n, false);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const int node = g.apex_of_sample[i];
+    if (node >= 0) visible_end[node] = covered.empty() || !covered[i];
+  }
+  visible_end[root] = false;
+  const std::vector<int> rounded =
+      options.find_rounded_tips
+          ? detail::rounded_tips(g, axis, dist, parent, visible_end, separation, options.corner_arm)
+          : std::vector<int>{};
+  for (int end : rounded) {
+    if (static_cast<int>(tips.size()) >= options.max_tips) break;
+    bool near_tip = false;
+    for (int t : tips) near_tip = near_tip || (g.nodes[t] - g.nodes[end]).norm() < separation;
+    if (near_tip) continue;
+    // The pruning kept one ear of the rounded end, maybe at its side: the
+    // tip is the visible axis end next to it that reaches farthest.
+    int front = end;
+    for (int v = 0; v < n; ++v)
+      if (leaf[v] && visible_end[v] && std::isfinite(dist[v]) && dist[v] > dist[front] &&
+          (g.nodes[v] - g.nodes[end]).norm() <= options.corner_arm)
+        front = v;
+    tips.push_back(front);
+    result.tip_corners.push_back(g.nodes[front]);
+    ++result.rounded_tips;
+  }
   result.status = SkeletonStatus::kTips;
   if (tips.empty()) {
-    int far = root;
+    int far = -1;
     for (int i = 0; i < n; ++i)
-      if (std::isfinite(dist[i]) && dist[i] > dist[far]) far = i;
+      if (candidates[i] && std::isfinite(dist[i]) && (far < 0 || dist[i] > dist[far])) far = i;
+    if (far < 0) {
+      far = root;
+      for (int i = 0; i < n; ++i)
+        if (std::isfinite(dist[i]) && dist[i] > dist[far]) far = i;
+    }
     tips.push_back(far);
     result.status = SkeletonStatus::kFarthestTip;
   }

@@ -23,6 +23,7 @@ TEST(StrandMesh, QualityMeshOfATaperedStrand) {
   options.max_edge = 10;
   const MeshResult r = mesh_strand(outline, options);
   EXPECT_EQ(r.status, MeshStatus::kRefined);
+  EXPECT_FALSE(r.simplified) << "a smooth outline is resampled";
   const TriMesh2& m = r.mesh;
   EXPECT_NO_THROW(m.validate("strand mesh"));
   double area = 0;
@@ -210,6 +211,7 @@ TEST(StrandMesh, LargeFoldedOutlineIsSimplifiedAndFullyRefined) {
   const MeshResult r = mesh_strand(outline);
   EXPECT_NO_THROW(r.mesh.validate("large folded strand mesh"));
   EXPECT_TRUE(r.retraced);
+  EXPECT_TRUE(r.simplified);
   EXPECT_FALSE(r.exact);
   EXPECT_EQ(r.status, MeshStatus::kRefined);
   EXPECT_GT(r.mesh.vertex_count(), 3000) << "more than exact constructions would be allowed";
@@ -235,6 +237,7 @@ TEST(StrandMesh, WavySlitStaysOpen) {
   const MeshResult r = mesh_strand(outline);
   EXPECT_NO_THROW(r.mesh.validate("slit mesh"));
   EXPECT_FALSE(r.retraced);
+  EXPECT_TRUE(r.simplified);
   EXPECT_FALSE(r.exact);
   EXPECT_EQ(r.status, MeshStatus::kRefined);
   EXPECT_NEAR(mesh_area(r.mesh), std::abs(signed_area(outline)),

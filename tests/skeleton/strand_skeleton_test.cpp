@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -114,6 +115,93 @@ TEST(StrandSkeleton, CoveredCornerIsNotATip) {
   const Result r = build_skeleton(in);
   ASSERT_EQ(r.skeleton.tips.size(), 1u);
   EXPECT_LT((r.skeleton.nodes[r.skeleton.tips[0]] - Vec2(160, 60)).norm(), 1.0);
+}
+
+// A fork whose lower arm ends in a rounded tip (radius 8, no corner sharper
+// than 80° over 9 px): §6's sharp-corner rule finds only the upper arm's tip
+// and the lower arm had no skeleton; as a visible tapering end it is a tip.
+TEST(StrandSkeleton, RoundedTipOfAForkIsATip) {
+  const Polyline sharp = forked_strand({30, 80});
+  const Polyline outline = test::round_corner(sharp, 4, 8.0);
+  const Vec2 apex = test::rounded_apex(sharp, 4, 8.0);
+  ASSERT_EQ(find_tip_corners(outline, {}).size(), 1u) << "only the upper arm is sharp";
+  Input in;
+  in.outline = outline;
+  in.root_hint = Vec2(-20, 80);
+  const Result r = build_skeleton(in);
+  expect_well_formed(r.skeleton, outline, Options{}.node_spacing);
+  EXPECT_EQ(r.status, SkeletonStatus::kTips);
+  EXPECT_EQ(r.rounded_tips, 1);
+  ASSERT_EQ(r.skeleton.tips.size(), 2u);
+  std::vector<Vec2> tips;
+  for (int t : r.skeleton.tips) tips.push_back(r.skeleton.nodes[t]);
+  std::sort(tips.begin(), tips.end(), [](const Vec2& a, const Vec2& b) { return a.y() < b.y(); });
+  EXPECT_LT((tips[0] - Vec2(190, 20)).norm(), 1.0);
+  EXPECT_LT((tips[1] - apex).norm(), 3.0) << "the skeleton reaches the rounded end";
+  int forks = 0;
+  for (std::size_t i = 0; i < r.skeleton.nodes.size(); ++i)
+    forks += child_count(r.skeleton, static_cast<int>(i)) == 2;
+  EXPECT_EQ(forks, 1);
+
+  // The paper's rule alone: one tip, the rounded arm left out.
+  Options sharp_only;
+  sharp_only.find_rounded_tips = false;
+  const Result s = build_skeleton(in, sharp_only);
+  EXPECT_EQ(s.rounded_tips, 0);
+  ASSERT_EQ(s.skeleton.tips.size(), 1u);
+  EXPECT_LT((s.skeleton.nodes[s.skeleton.tips[0]] - Vec2(190, 20)).norm(), 1.0);
+
+  // Hidden under another strand, the rounded end is no tip (§6 "locally above").
+  in.covered.assign(outline.size(), false);
+  for (std::size_t i = 4; i <= 16; ++i) in.covered[i] = true;  // the arc
+  const Result hidden = build_skeleton(in);
+  EXPECT_EQ(hidden.rounded_tips, 0);
+  EXPECT_EQ(hidden.skeleton.tips.size(), 1u);
+}
+
+// A strand tapering from 24 to 7 px half-width that ends in a half circle:
+// a single path from the root that reaches the rounded end, found as a
+// rounded tip.
+TEST(StrandSkeleton, RoundedTaperedStrandReachesItsEnd) {
+  const Polyline outline = test::rounded_strand({30, 40}, 260, 24, 7, 30);
+  // The centre of the end's half circle (the end with no cap).
+  const Vec2 cap_centre = test::rounded_strand_end({30, 40}, 260, 0, 30);
+  ASSERT_TRUE(find_tip_corners(outline, {}).empty()) << "no sharp corner";
+  Input in;
+  in.outline = outline;
+  in.root_hint = Vec2(0, 40);
+  const Result r = build_skeleton(in);
+  expect_well_formed(r.skeleton, outline, Options{}.node_spacing);
+  EXPECT_EQ(r.status, SkeletonStatus::kTips);
+  EXPECT_EQ(r.rounded_tips, 1);
+  ASSERT_EQ(r.skeleton.tips.size(), 1u);
+  for (std::size_t i = 0; i < r.skeleton.nodes.size(); ++i)
+    EXPECT_LE(child_count(r.skeleton, static_cast<int>(i)), 1);
+  // The tip is on the cap's outline (one of its samples), not short of it.
+  const double from_centre = (r.skeleton.nodes[r.skeleton.tips[0]] - cap_centre).norm();
+  EXPECT_GT(from_centre, 6.0);
+  EXPECT_LT(from_centre, 7.5);
+  EXPECT_GT(r.skeleton.nodes[r.skeleton.tips[0]].x(), cap_centre.x());
+  EXPECT_LT(r.skeleton.nodes[0].x(), 50.0);
+}
+
+// A bump on the side of a strand next to the root hint: the chordal axis
+// has an end there (a short spur), which used to become the root, leaving
+// the strand's far end without skeleton (wikipe-tan's right tail lock, where
+// a notch in the completed outline did that).
+TEST(StrandSkeleton, RootIsAnEndOfTheStrandNotABump) {
+  // A 280 x 40 bar, root at x = 0, sharp tip at (340, 20); a bump 6 px high
+  // and 10 px wide on its upper side at x = 150, the hint just above it.
+  const Polyline outline = {{0, 0},   {145, 0},  {148, -6}, {152, -6}, {155, 0},
+                            {280, 0}, {340, 20}, {280, 40}, {0, 40}};
+  Input in;
+  in.outline = outline;
+  in.root_hint = Vec2(150, -40);
+  const Result r = build_skeleton(in);
+  expect_well_formed(r.skeleton, outline, Options{}.node_spacing);
+  ASSERT_EQ(r.skeleton.tips.size(), 1u);
+  EXPECT_LT((r.skeleton.nodes[r.skeleton.tips[0]] - Vec2(340, 20)).norm(), 1.0);
+  EXPECT_LT(r.skeleton.nodes[0].x(), 10.0) << "root at the far end, not at the bump";
 }
 
 TEST(StrandSkeleton, AllTipStrandFallsBackToFarthestEnd) {

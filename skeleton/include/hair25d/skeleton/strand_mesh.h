@@ -25,6 +25,9 @@ enum class MeshStatus { kRefined, kVertexLimit };
 struct MeshResult {
   TriMesh2 mesh;  // counter-clockwise triangles; on_curve marks outline edges
   MeshStatus status = MeshStatus::kRefined;
+  // Resampled every outline_spacing px the outline was not a simple polygon
+  // within half a pixel of it, so it was simplified instead (topology kept).
+  bool simplified = false;
   // The outline crossed or touched itself and was replaced by the boundary
   // of its filled shape (folds filled, parts under a pixel thick dropped).
   bool retraced = false;
@@ -35,9 +38,10 @@ struct MeshResult {
 };
 
 // Meshes the inside of a closed outline (either orientation, not closed by
-// repetition), simplified first within half a pixel without changing its
-// topology. Throws hair25d::Error for invalid options, fewer than 3 distinct
-// points, non-finite coordinates or zero area.
+// repetition): resampled every outline_spacing px, or, where that would cut
+// it by more than half a pixel or make it cross itself, simplified within
+// half a pixel without changing its topology. Throws hair25d::Error for invalid options, fewer than
+// 3 distinct points, non-finite coordinates or zero area.
 MeshResult mesh_strand(const Polyline& outline, const MeshOptions& options = {});
 
 }  // namespace hair25d::skeleton

@@ -20,6 +20,7 @@ struct Options {
   int smoothing_passes = 20;        // Laplacian passes on each branch before resampling
   int max_tips = 8;                 // keep at most this many tips (the sharpest)
   double min_tip_separation = 0.0;  // pixels between tips; 0 = 2 × corner_arm
+  bool find_rounded_tips = true;    // also visible tapering axis ends without a sharp corner
 
   // False, with a message naming the option, its value and the rule, if unusable.
   bool is_valid(std::string* error) const;
@@ -39,8 +40,8 @@ struct Input {
 
 // Why the skeleton looks the way it does.
 enum class SkeletonStatus {
-  kTips,         // tips found at sharp visible corners
-  kFarthestTip,  // no sharp visible corner: the medial-axis end farthest from the root
+  kTips,         // tips found at sharp visible corners or visible rounded tapering ends
+  kFarthestTip,  // neither: the medial-axis end farthest from the root
   kDegenerate,   // the outline encloses (almost) no area: a single node at its centre
 };
 
@@ -48,7 +49,8 @@ const char* to_string(SkeletonStatus status);
 
 struct Result {
   Skeleton skeleton;              // node 0 is the root, parent[i] < i, tips are leaves
-  std::vector<Vec2> tip_corners;  // the outline corners that became tips
+  std::vector<Vec2> tip_corners;  // the outline corners (or rounded ends) that became tips
+  int rounded_tips = 0;           // how many tips are rounded ends, not sharp corners
   Vec2 root{0.0, 0.0};
   SkeletonStatus status = SkeletonStatus::kTips;
 };
