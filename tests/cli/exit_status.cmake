@@ -28,6 +28,11 @@ if(TARGET hair25d-generate)
     --shading 9 -o shading_nine)
   generate_status_test(width_out_of_range 1 "^hair25d-generate: --width 10: must be in \\[64, 8192\\]$"
     --width 10 -o width_out_of_range)
+  generate_status_test(width_beyond_int 1
+    "^hair25d-generate: --width: must be a whole number \\(of at most 9 digits\\), not 99999999999$"
+    --width 99999999999 -o width_beyond_int)
+  generate_status_test(noise_not_a_number 1 "^hair25d-generate: --noise: must be a number, not x$"
+    --noise x -o noise_not_a_number)
   generate_status_test(strands_negative 1 "^hair25d-generate: --strands -3: must be in \\[1, 400\\]$"
     --strands -3 -o strands_negative)
   generate_status_test(negative_seed 1 "--seed: must be a whole number .*not -1$"

@@ -50,6 +50,27 @@ CLI::Validator whole_number(int lo, int hi) {
       std::to_string(lo) + "-" + std::to_string(hi));
 }
 
+// Before conversion: "Could not convert: --width = 1e11" named no rule. The
+// ranges themselves are generator::Options::is_valid's, checked after.
+CLI::Validator a_number(bool whole) {
+  return CLI::Validator(
+      [whole](std::string& text) -> std::string {
+        try {
+          std::size_t used = 0;
+          if (whole) {
+            (void)std::stoi(text, &used);
+          } else {
+            (void)std::stod(text, &used);
+          }
+          if (used == text.size()) return {};
+        } catch (const std::exception&) {
+        }
+        return whole ? "must be a whole number (of at most 9 digits), not " + text
+                     : "must be a number, not " + text;
+      },
+      "");
+}
+
 // The generator's own check names its fields (generator::Options::width):
 // say the option the user typed instead.
 std::string with_option_names(std::string why) {
@@ -99,10 +120,10 @@ int main(int argc, char** argv) {
                           : "must be a whole number from 0 to 10^19 - 1, not " + text;
           },
           "0-9999999999999999999"));
-  app.add_option("--width", opt.width, "Image width, pixels");
-  app.add_option("--height", opt.height, "Image height, pixels");
-  app.add_option("--strands", opt.strand_count, "Hair strands a case");
-  app.add_option("--line-width", opt.line_width, "Outline width, pixels");
+  app.add_option("--width", opt.width, "Image width, pixels")->check(a_number(true));
+  app.add_option("--height", opt.height, "Image height, pixels")->check(a_number(true));
+  app.add_option("--strands", opt.strand_count, "Hair strands a case")->check(a_number(true));
+  app.add_option("--line-width", opt.line_width, "Outline width, pixels")->check(a_number(false));
   app.add_option("--shading", shading, "flat, two-tone, gradient, screentone, or mixed (cycles)")
       ->transform(CLI::Validator(
           [](std::string& text) -> std::string {
@@ -116,8 +137,10 @@ int main(int argc, char** argv) {
             return {};
           },
           "flat|two-tone|gradient|screentone|mixed"));
-  app.add_option("--noise", opt.noise_sigma, "Gaussian noise sigma, 0..255 scale");
-  app.add_option("--jpeg", opt.jpeg_quality, "JPEG round trip at this quality (0 = none)");
+  app.add_option("--noise", opt.noise_sigma, "Gaussian noise sigma, 0..255 scale")
+      ->check(a_number(false));
+  app.add_option("--jpeg", opt.jpeg_quality, "JPEG round trip at this quality (0 = none)")
+      ->check(a_number(true));
   app.add_flag("--coloured-lines", coloured, "Outlines in a dark hair colour, not black");
   bool fading = false;
   app.add_flag("--fading-forks", fading,
