@@ -42,6 +42,27 @@ void shortest_paths(const MedialGraph& g, int source, std::vector<double>* dist,
   }
 }
 
+// Connected piece of every node (the axis is a forest when the outline
+// touches itself).
+std::vector<int> components(const MedialGraph& g) {
+  const int n = static_cast<int>(g.nodes.size());
+  std::vector<int> piece(n, -1);
+  int count = 0;
+  for (int start = 0; start < n; ++start) {
+    if (piece[start] >= 0) continue;
+    std::vector<int> stack{start};
+    piece[start] = count;
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for (int u : g.adjacent[v])
+        if (piece[u] < 0) piece[u] = count, stack.push_back(u);
+    }
+    ++count;
+  }
+  return piece;
+}
+
 int nearest_node(const MedialGraph& g, const Vec2& p, const std::vector<bool>* allowed) {
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();
@@ -189,8 +210,15 @@ Result build_skeleton(const Input& input, const Options& options) {
   // root at a notch half-way down and its whole completed upper part was
   // left without skeleton.
   const detail::PrunedAxis axis = detail::prune_spurs(g, tip_nodes);
+  // Where the outline touches itself the axis falls apart; the root is on
+  // the largest piece (a lone triangle's node near the hint took it once).
+  const std::vector<int> piece = components(g);
+  std::vector<int> piece_size(n, 0);
+  for (int v = 0; v < n; ++v) ++piece_size[piece[v]];
+  const int main_piece =
+      static_cast<int>(std::max_element(piece_size.begin(), piece_size.end()) - piece_size.begin());
   std::vector<bool> candidates(n, false);
-  for (int e : axis.ends) candidates[e] = true;
+  for (int e : axis.ends) candidates[e] = piece[e] == main_piece;
   for (int t : tip_nodes) candidates[t] = false;
   if (std::find(candidates.begin(), candidates.end(), true) == candidates.end()) {
     candidates = leaf;
