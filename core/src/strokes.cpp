@@ -180,13 +180,13 @@ void paint_segment(LabelMap& labels, Vec2 a, Vec2 b, double r, int value) {
   }
 }
 
-// The brush radius of a stroke: a brush of width 1 still marks the pixel it
-// passes through. A radius beyond the image's diagonal is clamped to it: from
+// The brush radius of a stroke: at least kMinBrushRadius, so that any brush
+// marks the pixels it passes through. A radius beyond the image's diagonal is clamped to it: from
 // any point in the image such a brush already covers the whole image, and the
 // clamp keeps absurd widths (1e300) from overflowing the pixel arithmetic.
 double brush_radius(const Stroke& s, int width, int height) {
   const double diagonal = std::hypot(double(width), double(height));
-  return std::min(std::max(0.5, s.width / 2.0), diagonal);
+  return std::min(std::max(kMinBrushRadius, s.width / 2.0), diagonal);
 }
 
 // The segments of a stroke (a dot is one of zero length), a-b in order.

@@ -35,7 +35,7 @@ SegmentResult segment_image(const Image& image, const Strokes* strokes,
           for (const Vec2& p : st.points)
             x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y()), x1 = std::max(x1, p.x()),
             y1 = std::max(y1, p.y());
-          const double r = std::max(0.5, st.width / 2.0);
+          const double r = std::max(kMinBrushRadius, st.width / 2.0);
           return x1 + r >= 0 && y1 + r >= 0 && x0 - r <= image.width() - 1 &&
                  y0 - r <= image.height() - 1;
         });

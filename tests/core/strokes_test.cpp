@@ -92,6 +92,26 @@ TEST(Strokes, RasterizeClipsOutsidePointsAndPaintsLaterOverEarlier) {
     for (int x = 0; x < 9; ++x) EXPECT_NE(m.at(x, y), 2);
 }
 
+// A thin stroke along pixel corners lies half a pixel from every centre:
+// with a radius of 0.5 it marked nothing (a width-1 dot at (5.5, 4.5) gave
+// no pixel, and segmentation then said there was no hair stroke).
+TEST(Strokes, ThinBrushesMarkThePixelsTheyPassThrough) {
+  Strokes s;
+  s.strokes.push_back({1, 1.0, {{5.5, 4.5}, {5.6, 4.6}}});
+  s.strokes.push_back({2, 1.0, {{0.5, 8.5}, {6.5, 8.5}}});  // along a row of corners
+  const LabelMap m = rasterize_strokes(s, 11, 10);
+  EXPECT_EQ(m.at(5, 4), 1);
+  EXPECT_EQ(m.at(6, 5), 1);
+  for (int x = 1; x <= 6; ++x) {
+    EXPECT_EQ(m.at(x, 8), 2) << x;
+    EXPECT_EQ(m.at(x, 9), 2) << x;
+  }
+  // Still thin: no pixel a whole pixel away is marked.
+  EXPECT_EQ(m.at(4, 4), kNoStroke);
+  EXPECT_EQ(m.at(3, 7), kNoStroke);
+  EXPECT_EQ(m.at(8, 8), kNoStroke);
+}
+
 // The brush by its definition, pixel by pixel: every pixel within r of the
 // whole (unclipped) segment.
 LabelMap reference_stroke(const Vec2& a, const Vec2& b, double r, int w, int h) {
@@ -142,7 +162,7 @@ TEST(Strokes, ClippingPaintsExactlyTheBrushesDefinition) {
     Strokes s;
     s.strokes.push_back({1, wd, {a, b}});
     const LabelMap got = rasterize_strokes(s, w, h);
-    ASSERT_EQ(got, reference_stroke(a, b, std::max(0.5, wd / 2), w, h))
+    ASSERT_EQ(got, reference_stroke(a, b, std::max(kMinBrushRadius, wd / 2), w, h))
         << "trial " << trial << ": " << a.transpose() << " -> " << b.transpose() << " width " << wd;
     for (int i = 0; i < w * h; ++i) painted += got.data()[i] == 1;
   }

@@ -51,6 +51,10 @@ void write_strokes(const std::filesystem::path& path, const Strokes& strokes);
 // the image) hold more than kMaxBrushWork pixels together: the painting's cost.
 inline constexpr int kNoStroke = -1;
 inline constexpr double kMaxBrushWork = 1e9;
+// Pixel centres sit on whole coordinates, so a point can lie up to sqrt(1/2)
+// from the nearest one (a pixel corner): a brush narrower than that could
+// pass through a pixel and mark none. Thin brushes are widened to it.
+inline constexpr double kMinBrushRadius = 0.70711;
 LabelMap rasterize_strokes(const Strokes& strokes, int width, int height);
 
 }  // namespace hair25d
