@@ -1,6 +1,6 @@
-// The skeleton of one completed hair strand (paper §6, first part): tips are
-// sharp corners of the outline that are not covered by other strands, and the
-// skeleton is the medial axis from each tip to the root, joined into one tree.
+// The skeleton of one completed hair strand (paper §6, first part): the medial
+// axis from the root to each tip (a visible sharp corner, or a visible rounded
+// tapering end), joined into one tree.
 #pragma once
 
 #include <optional>
