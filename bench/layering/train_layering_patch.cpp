@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <string>
@@ -42,9 +43,11 @@ struct Record {
   std::vector<detail::Patch> ends;
 };
 
-std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor) {
+// Drawings first .. cases − 1 (a dump can be collected in parts by several
+// processes and the parts read together with --from).
+std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor, int first) {
   std::vector<Record> out;
-  for (int i = 0; i < cases; ++i) {
+  for (int i = first; i < cases; ++i) {
     hair25d::AnnotatedCase c;
     layering::Result r;
     try {
@@ -75,8 +78,9 @@ std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor)
       rec.equal = static_cast<float>(rep.equal);
       const hair25d::Polyline back(b.points.rbegin(), b.points.rend());
       rec.ends = detail::boundary_patches(
-          r.labels, r.graph, b, layering::leaving_direction(b.points, reach),
-          layering::leaving_direction(back, reach), radius_factor * detail::patch_radius(reach));
+          r.labels, detail::PatchImage{&c.image, detail::patch_contrast(r.line_threshold)}, r.graph,
+          b, layering::leaving_direction(b.points, reach), layering::leaving_direction(back, reach),
+          radius_factor * detail::patch_radius(reach));
       out.push_back(std::move(rec));
     }
     if (i % 50 == 49) std::fprintf(stderr, "%d drawings, %zu boundaries\n", i + 1, out.size());
@@ -177,7 +181,7 @@ void copy_weights(const cv::ml::ANN_MLP& mlp, detail::PatchNet& net) {
     net.b1[h] = static_cast<float>(l1.at<double>(inputs, h));
     net.w2[h] = static_cast<float>(l2.at<double>(h, 0));
   }
-  net.b2 = static_cast<float>(l2.at<double>(detail::kPatchHidden, 0));
+  net.b2[0] = static_cast<float>(l2.at<double>(detail::kPatchHidden, 0));
 }
 
 void write_net(std::FILE* f, const detail::PatchNet& net) {
@@ -194,8 +198,11 @@ void write_net(std::FILE* f, const detail::PatchNet& net) {
   std::fprintf(f, "},\n      {");
   for (int h = 0; h < detail::kPatchHidden; ++h)
     std::fprintf(f, "%s%#.7gf", h ? ", " : "", net.w2[h]);
-  std::fprintf(f, "},\n      %#.7gf,\n      %.17g,\n      %.17g,\n      %.17g,\n      %.17g}",
-               net.b2, net.alpha, net.beta, net.order_weight, net.patch_weight);
+  std::fprintf(f, "},\n      {");
+  for (int m = 0; m < detail::kPatchMembers; ++m)
+    std::fprintf(f, "%s%#.7gf", m ? ", " : "", net.b2[m]);
+  std::fprintf(f, "},\n      %.17g,\n      %.17g,\n      %.17g,\n      %.17g}", net.alpha, net.beta,
+               net.order_weight, net.patch_weight);
 }
 
 // Same depth or ordered, from the same patches: a network whose score
@@ -207,7 +214,7 @@ void write_net(std::FILE* f, const detail::PatchNet& net) {
 detail::SameDepthNet train_same_depth(const std::vector<Record>& records, int net_cases,
                                       int iterations, std::uint64_t seed,
                                       const hair25d::layering_training::MlpOptions* adam,
-                                      std::string* report) {
+                                      int inputs, std::string* report) {
   int n = 0, positives = 0, total = 0;
   for (const Record& r : records)
     if (r.drawing < net_cases) n += static_cast<int>(r.ends.size()), ++total, positives += r.y == 0;
@@ -240,14 +247,14 @@ detail::SameDepthNet train_same_depth(const std::vector<Record>& records, int ne
     }
     hair25d::layering_training::MlpOptions o = *adam;
     o.symmetric = true;
-    o.inputs = detail::kPatchInputs;
+    o.inputs = inputs;
     o.wide_dropout = 0.0;
     o.seed = seed + 1;
     const detail::PatchNet net = hair25d::layering_training::train_patch_mlp(px, ps, py, pw, o);
     out.net = net;
   } else {
     const cv::Ptr<cv::ml::ANN_MLP> mlp =
-        train_network(x, t, w, detail::kPatchHidden, iterations, seed);
+        train_network(x.colRange(0, inputs).clone(), t, w, detail::kPatchHidden, iterations, seed);
     copy_weights(*mlp, out.net);
     {
       // Our forward pass against OpenCV's on the first ends.
@@ -311,7 +318,8 @@ int main(int argc, char** argv) {
   CLI::App app{"Train the layering junction patch model on generated drawings"};
   int cases = 400, net_cases = 300, iterations = 200;
   std::uint64_t seed = 20000;
-  std::string dump, from, write;
+  std::string dump, write;
+  std::vector<std::string> from;
   app.add_option("--cases", cases, "generated drawings")->check(CLI::PositiveNumber);
   app.add_option("--seed", seed, "seed of the first drawing");
   app.add_option("--net-cases", net_cases,
@@ -341,13 +349,42 @@ int main(int argc, char** argv) {
                  "Adam: share of order-network rows trained without the wide scale")
       ->check(CLI::Range(0.0, 1.0));
   app.add_flag("--anneal", adam.anneal, "Adam: the step falls linearly to 0");
+  bool grey = false;
+  double grey_dropout = 0.0;
+  app.add_option("--grey-dropout", grey_dropout,
+                 "with --grey: share of order-network rows trained with the grey channel zeroed "
+                 "(instead of --wide-dropout)")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_flag("--grey", grey,
+               "both networks also read the patches' grey channel (with --adam and "
+               "--order-scales 2)");
+  int first = 0;
+  app.add_option("--first", first, "with --dump: collect drawings from this one on")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--dump", dump, "write the patches here and stop");
-  app.add_option("--from", from, "read the patches from here instead of drawing");
+  app.add_option("--from", from,
+                 "read the patches from here instead of drawing (several files: parts of one "
+                 "run, in order)");
   app.add_option("--write", write, "write layering/src/patch_weights.cpp here");
   CLI11_PARSE(app, argc, argv);
 
-  const std::vector<Record> records =
-      from.empty() ? collect(cases, seed, radius_factor) : load(from);
+  if (!use_adam && detail::kPatchMembers != 1) {
+    std::fprintf(stderr,
+                 "the layering's network is an ensemble of %d members: only --adam trains it\n",
+                 detail::kPatchMembers);
+    return 1;
+  }
+  std::vector<Record> records;
+  if (from.empty()) {
+    records = collect(cases, seed, radius_factor, first);
+  } else {
+    // Parts read one after the other, as one run's drawings in order.
+    for (const std::string& path : from) {
+      std::vector<Record> part = load(path);
+      records.insert(records.end(), std::make_move_iterator(part.begin()),
+                     std::make_move_iterator(part.end()));
+    }
+  }
   if (!dump.empty()) {
     save(dump, records);
     std::printf("%zu boundaries written to %s\n", records.size(), dump.c_str());
@@ -391,13 +428,18 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
   // The order network may read the fine scale only: the wide one carries the
   // generator's strand shapes, which real drawings need not share.
-  const int used = parts == 1 ? order_scales * detail::kPatchScaleInputs : d;
+  if (grey && (!use_adam || order_scales != detail::kPatchScales || parts != 1))
+    throw hair25d::Error(
+        "train_layering_patch: --grey needs --adam, --order-scales 2 and one file");
+  const int label_inputs = order_scales * detail::kPatchScaleInputs;
+  const int used = parts == 1 ? (grey ? detail::kPatchInputs : label_inputs) : d;
   auto net = std::make_unique<detail::PatchNet>();
   std::vector<double> score(records.size(), 0.0);
   cv::Ptr<cv::ml::ANN_MLP> mlp;
   if (use_adam) {
     if (parts != 1 || hidden != detail::kPatchHidden)
-      throw hair25d::Error("train_layering_patch: --adam trains one patch file, 16 hidden units");
+      throw hair25d::Error("train_layering_patch: --adam trains one patch file, " +
+                           std::to_string(detail::kPatchHidden) + " hidden units");
     hair25d::layering_training::RowMatrix px(n, d), ps(n, d);
     std::vector<float> py(n), pw(n, 1.0f);
     for (int k = 0; k < n; ++k) {
@@ -406,6 +448,14 @@ int main(int argc, char** argv) {
       py[k] = t.at<float>(2 * k);
     }
     adam.inputs = used;
+    if (grey && grey_dropout > 0) {
+      if (adam.wide_dropout > 0)
+        throw hair25d::Error(
+            "train_layering_patch: --grey-dropout and --wide-dropout exclude "
+            "each other");
+      adam.fine_inputs = detail::kPatchLabelInputs;
+      adam.wide_dropout = grey_dropout;
+    }
     adam.seed = seed;
     *net = hair25d::layering_training::train_patch_mlp(px, ps, py, pw, adam);
   } else {
@@ -517,14 +567,20 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::string same_report;
-  const detail::SameDepthNet same = train_same_depth(records, net_cases, same_iterations, seed,
-                                                     use_adam ? &adam : nullptr, &same_report);
+  const detail::SameDepthNet same =
+      train_same_depth(records, net_cases, same_iterations, seed, use_adam ? &adam : nullptr,
+                       grey ? detail::kPatchInputs : detail::kPatchLabelInputs, &same_report);
   char method_buffer[200];
   if (use_adam)
     std::snprintf(method_buffer, sizeof method_buffer,
-                  "--adam --epochs %d --rate %g --batch %d --decay %g --wide-dropout %g%s",
-                  adam.epochs, adam.rate, adam.batch, adam.decay, adam.wide_dropout,
-                  adam.anneal ? " --anneal" : "");
+                  "--adam --epochs %d --rate %g --batch %d --decay %g --wide-dropout %g%s%s",
+                  adam.epochs, adam.rate, adam.batch, adam.decay,
+                  grey && grey_dropout > 0 ? 0.0 : adam.wide_dropout,
+                  adam.anneal ? " --anneal" : "", grey ? " --grey" : "");
+  if (grey && grey_dropout > 0)
+    std::snprintf(method_buffer + std::strlen(method_buffer),
+                  sizeof method_buffer - std::strlen(method_buffer), " --grey-dropout %g",
+                  grey_dropout);
   else
     std::snprintf(method_buffer, sizeof method_buffer, "--iterations %d --same-iterations %d",
                   iterations, same_iterations);

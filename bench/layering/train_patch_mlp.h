@@ -41,18 +41,17 @@ struct MlpOptions {
 
 using RowMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-// `x` holds one end's patch per row, `xs` the same patch exchanged, `y` ±1
-// (antisymmetric: +1 when A is above; symmetric: +1 when same depth), `w`
-// each row's weight. Returns the network in the layering's layout.
-inline hair25d::layering::detail::PatchNet train_patch_mlp(const RowMatrix& x, const RowMatrix& xs,
-                                                           const std::vector<float>& y,
-                                                           const std::vector<float>& w,
-                                                           const MlpOptions& o) {
+// One member of the ensemble (patch_model.h), trained on its own score from
+// initial weights and a shuffle drawn from `seed`, written into hidden units
+// [member · kPatchMemberHidden, ...) and b2[member] of `net`.
+inline void train_patch_member(const RowMatrix& x, const RowMatrix& xs, const std::vector<float>& y,
+                               const std::vector<float>& w, const MlpOptions& o, std::uint64_t seed,
+                               int member, hair25d::layering::detail::PatchNet& net) {
   namespace detail = hair25d::layering::detail;
-  constexpr int H = detail::kPatchHidden;
+  constexpr int H = detail::kPatchMemberHidden;
   const int d = o.inputs;
   const int n = static_cast<int>(x.rows());
-  std::mt19937_64 rng(o.seed);
+  std::mt19937_64 rng(seed);
   auto uniform = [&rng] { return static_cast<float>((rng() >> 11) * 0x1.0p-53 * 2.0 - 1.0); };
   Eigen::MatrixXf w1(d, H);
   for (int k = 0; k < d; ++k)
@@ -149,11 +148,28 @@ inline hair25d::layering::detail::PatchNet train_patch_mlp(const RowMatrix& x, c
     std::printf("  epoch %d: loss %.4f\n", epoch + 1, loss_sum / std::max(weight_sum, 1e-12));
     std::fflush(stdout);
   }
-  auto net = std::make_unique<detail::PatchNet>();
+  const int first = member * H;
   for (int k = 0; k < detail::kPatchInputs; ++k)
-    for (int h = 0; h < H; ++h) net->w1[k][h] = k < d ? w1(k, h) : 0.0f;
-  for (int h = 0; h < H; ++h) net->b1[h] = b1(h), net->w2[h] = w2(h);
-  net->b2 = b2;
+    for (int h = 0; h < H; ++h) net.w1[k][first + h] = k < d ? w1(k, h) : 0.0f;
+  for (int h = 0; h < H; ++h) net.b1[first + h] = b1(h), net.w2[first + h] = w2(h);
+  net.b2[member] = b2;
+}
+
+// `x` holds one end's patch per row, `xs` the same patch exchanged, `y` ±1
+// (antisymmetric: +1 when A is above; symmetric: +1 when same depth), `w`
+// each row's weight. Returns the network in the layering's layout: its
+// kPatchMembers members trained one after the other, member m from seed
+// o.seed + m (so a one-member network is the member of o.seed).
+inline hair25d::layering::detail::PatchNet train_patch_mlp(const RowMatrix& x, const RowMatrix& xs,
+                                                           const std::vector<float>& y,
+                                                           const std::vector<float>& w,
+                                                           const MlpOptions& o) {
+  namespace detail = hair25d::layering::detail;
+  auto net = std::make_unique<detail::PatchNet>();
+  for (int m = 0; m < detail::kPatchMembers; ++m) {
+    if (detail::kPatchMembers > 1) std::printf("  member %d of %d\n", m + 1, detail::kPatchMembers);
+    train_patch_member(x, xs, y, w, o, o.seed + static_cast<std::uint64_t>(m), m, *net);
+  }
   return *net;
 }
 

@@ -269,10 +269,17 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   const detail::SameDepthNet& same_net = detail::patch_same_weights();
   const double patch_size = detail::patch_radius(reach);
   const int order_inputs = use_patches ? detail::patch_inputs_used(order_net) : 0;
+  // The drawing's grey levels only for networks that weigh them.
+  const bool read_grey =
+      use_patches &&
+      std::max(order_inputs, detail::patch_inputs_used(same_net.net)) > detail::kPatchLabelInputs;
+  const detail::PatchImage patch_image{read_grey ? &image : nullptr,
+                                       detail::patch_contrast(out.line_threshold)};
   detail::ParallelLoop patch_loop(&pool, use_patches ? nb : 0, [&](int i) {
     if (!patched(i)) return;
-    for (const detail::Patch& p : detail::boundary_patches(
-             out.labels, graph, bs[i], leave_start[i].near, leave_end[i].near, patch_size)) {
+    for (const detail::Patch& p :
+         detail::boundary_patches(out.labels, patch_image, graph, bs[i], leave_start[i].near,
+                                  leave_end[i].near, patch_size)) {
       const detail::PatchScores scores =
           detail::patch_scores(order_net, order_inputs, same_net.net, p);
       patch_sums[i].order += scores.order;

@@ -3,14 +3,25 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "hair25d/core/error.h"
 
 namespace hair25d::layering::detail {
 
-Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& direction, int a,
-                     int b, bool a_on_left, double radius) {
+namespace {
+
+// The grey level of a pixel as the line measurements read it (Rec. 601).
+float grey_at(const Image& image, int x, int y) {
+  const Rgba& c = image.at(x, y);
+  return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b;
+}
+
+}  // namespace
+
+Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Vec2& centre,
+                     const Vec2& direction, int a, int b, bool a_on_left, double radius) {
   if (!(std::isfinite(radius) && radius > 0))
     throw Error("layering::junction_patch: radius = " + std::to_string(radius) +
                 "; must be finite and > 0");
@@ -22,11 +33,23 @@ Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& dir
     throw Error("layering::junction_patch: centre (" + std::to_string(centre.x()) + ", " +
                 std::to_string(centre.y()) + ") and radius " + std::to_string(radius) +
                 " must lie within 1e8 and 1e6 pixels");
+  const Image* image = drawing.image;
+  if (image != nullptr && (image->width() != labels.width() || image->height() != labels.height()))
+    throw Error("layering::junction_patch: image " + std::to_string(image->width()) + " x " +
+                std::to_string(image->height()) + " must be the label map's size " +
+                std::to_string(labels.width()) + " x " + std::to_string(labels.height()));
+  if (image != nullptr && !(std::isfinite(drawing.contrast) && drawing.contrast > 0))
+    throw Error("layering::junction_patch: contrast = " + std::to_string(drawing.contrast) +
+                "; must be finite and > 0");
   const Vec2 u = direction / norm;
   // On the screen (y down) the left of travel u is (u.y, −u.x).
   const Vec2 left(u.y(), -u.x());
   const Vec2 v = a_on_left ? left : Vec2(-left);
   Patch p{};
+  // Grey sums of the first scale's cells and their sample counts (samples
+  // outside the image are left out).
+  std::array<float, kPatchGreyInputs> grey{};
+  std::array<std::uint8_t, kPatchGreyInputs> counted{};
   // Sample offsets along u and v, products taken once: each sample point is
   // then (centre + cu·u) + cv·v, the same sums as written out per sample.
   constexpr int kSamples = 2 * kPatchCells;
@@ -58,13 +81,17 @@ Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& dir
     // bounds checks, and truncation is the floor of a positive value.
     const bool inside = *ax0 + *bx0 >= 1 && *ay0 + *by0 >= 1 && *ax1 + *bx1 < labels.width() - 1 &&
                         *ay1 + *by1 < labels.height() - 1;
+    const bool with_grey = scale == 0 && image != nullptr;
     for (int sj = 0; sj < kSamples; ++sj) {
       float* row = out + (sj / 2) * kPatchCells * kPatchChannels;
+      float* grey_row = grey.data() + (sj / 2) * kPatchCells;
+      std::uint8_t* count_row = counted.data() + (sj / 2) * kPatchCells;
       if (inside) {
         for (int si = 0; si < kSamples; ++si) {
           const int x = static_cast<int>(ax[si] + bx[sj]);
           const int y = static_cast<int>(ay[si] + by[sj]);
           add(row + (si / 2) * kPatchChannels, labels.at(x, y));
+          if (with_grey) grey_row[si / 2] += grey_at(*image, x, y), ++count_row[si / 2];
         }
         continue;
       }
@@ -75,10 +102,31 @@ Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& dir
         int x = static_cast<int>(qx), y = static_cast<int>(qy);
         x -= qx < x;
         y -= qy < y;
-        if (labels.contains(x, y)) add(row + (si / 2) * kPatchChannels, labels.at(x, y));
+        if (!labels.contains(x, y)) continue;
+        add(row + (si / 2) * kPatchChannels, labels.at(x, y));
+        if (with_grey) grey_row[si / 2] += grey_at(*image, x, y), ++count_row[si / 2];
       }
     }
   }
+  if (image == nullptr) return p;
+  // Darkness below the brightest of the 3 × 3 cells about each cell, as a
+  // bar detector reads a line against the paint on both sides (a flat tone
+  // reads 0 however dark; cells wholly outside the image are left out).
+  std::array<float, kPatchGreyInputs> mean{};
+  for (int c = 0; c < kPatchGreyInputs; ++c)
+    mean[c] = counted[c] > 0 ? grey[c] / counted[c] : -1.0f;
+  const float scale = static_cast<float>(1.0 / drawing.contrast);
+  float* dark = p.data() + kPatchLabelInputs;
+  for (int j = 0; j < kPatchCells; ++j)
+    for (int i = 0; i < kPatchCells; ++i) {
+      const int c = j * kPatchCells + i;
+      if (counted[c] == 0) continue;
+      float bright = mean[c];
+      for (int dj = std::max(j - 1, 0); dj <= std::min(j + 1, kPatchCells - 1); ++dj)
+        for (int di = std::max(i - 1, 0); di <= std::min(i + 1, kPatchCells - 1); ++di)
+          bright = std::max(bright, mean[dj * kPatchCells + di]);
+      dark[c] = std::min((bright - mean[c]) * scale, 2.0f);
+    }
   return p;
 }
 
@@ -93,10 +141,16 @@ Patch swapped(const Patch& patch) {
         s[to] = -patch[from];
         s[to + 1] = patch[from + 1];
       }
+  for (int j = 0; j < kPatchCells; ++j)
+    for (int i = 0; i < kPatchCells; ++i)
+      s[kPatchLabelInputs + (kPatchCells - 1 - j) * kPatchCells + i] =
+          patch[kPatchLabelInputs + j * kPatchCells + i];
   return s;
 }
 
 double patch_radius(double reach) { return reach; }
+
+double patch_contrast(double line_threshold) { return 2.5 * line_threshold; }
 
 // Two clones, chosen when the library loads: AVX2 adds the 16 hidden sums
 // eight at a time. Neither has fused multiply-adds, so each lane does the
@@ -114,9 +168,14 @@ __attribute__((target_clones("avx2", "default"))) double patch_net(const PatchNe
   }
   // β (1 − e^{−αx}) / (1 + e^{−αx}), written so that it cannot overflow.
   auto activation = [&](double x) { return net.beta * std::tanh(0.5 * net.alpha * x); };
-  double out = net.b2;
-  for (int h = 0; h < kPatchHidden; ++h) out += net.w2[h] * activation(sum[h]);
-  return activation(out);
+  double total = 0.0;
+  for (int m = 0; m < kPatchMembers; ++m) {
+    double out = net.b2[m];
+    for (int h = m * kPatchMemberHidden; h < (m + 1) * kPatchMemberHidden; ++h)
+      out += net.w2[h] * activation(sum[h]);
+    total += activation(out);
+  }
+  return total;
 }
 
 double patch_score(const PatchNet& net, const Patch& patch) {
@@ -142,19 +201,20 @@ PatchScores patch_scores(const PatchNet& order, int order_inputs, const PatchNet
           patch_net(same, patch) + patch_net(same, other)};
 }
 
-std::vector<Patch> boundary_patches(const LabelMap& labels, const BoundaryGraph& graph,
-                                    const Boundary& b, const Vec2& start_direction,
-                                    const Vec2& end_direction, double radius) {
+std::vector<Patch> boundary_patches(const LabelMap& labels, const PatchImage& drawing,
+                                    const BoundaryGraph& graph, const Boundary& b,
+                                    const Vec2& start_direction, const Vec2& end_direction,
+                                    double radius) {
   std::vector<Patch> out;
   if (b.closed() || b.points.empty()) return out;
   // Walking away from the start, b.left is on the left; away from the end,
   // on the right.
   if (start_direction.squaredNorm() > 0)
-    out.push_back(junction_patch(labels, graph.junctions[b.start].position, start_direction, b.left,
-                                 b.right, true, radius));
+    out.push_back(junction_patch(labels, drawing, graph.junctions[b.start].position,
+                                 start_direction, b.left, b.right, true, radius));
   if (end_direction.squaredNorm() > 0)
-    out.push_back(junction_patch(labels, graph.junctions[b.end].position, end_direction, b.left,
-                                 b.right, false, radius));
+    out.push_back(junction_patch(labels, drawing, graph.junctions[b.end].position, end_direction,
+                                 b.left, b.right, false, radius));
   return out;
 }
 

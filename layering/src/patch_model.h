@@ -19,41 +19,68 @@ namespace hair25d::layering::detail {
 // (+u), v toward region A's side (+v), two channels per cell (scale-major,
 // then cell-major): the share of region A minus that of region B, and the
 // share of other hair regions (background and the outside of the image are 0
-// in both). Each cell is the mean of 2 × 2 point samples.
+// in both). Each cell is the mean of 2 × 2 point samples. After both scales
+// come kPatchGreyInputs inputs read off the drawing itself at the first scale,
+// one per cell (cell-major): how much darker the cell's mean grey level is
+// than the brightest of the 3 × 3 cells about it, in units of `contrast` (a
+// typical drawn line's contrast), at most 2 — where the lines run, which the label
+// map does not show (a line fading out inside a strand, the paper between
+// two outlines, an outline that runs on past a T).
 inline constexpr int kPatchCells = 16;
 inline constexpr int kPatchChannels = 2;
 inline constexpr int kPatchScales = 2;
 inline constexpr double kPatchWide = 3.0;
 inline constexpr int kPatchScaleInputs = kPatchCells * kPatchCells * kPatchChannels;
-inline constexpr int kPatchInputs = kPatchScales * kPatchScaleInputs;
+inline constexpr int kPatchLabelInputs = kPatchScales * kPatchScaleInputs;
+inline constexpr int kPatchGreyInputs = kPatchCells * kPatchCells;
+inline constexpr int kPatchInputs = kPatchLabelInputs + kPatchGreyInputs;
 using Patch = std::array<float, kPatchInputs>;
+
+// The drawing a patch's grey channel is read from, and the grey-level
+// contrast of a typical drawn line (> 0) that scales it.
+struct PatchImage {
+  const Image* image = nullptr;
+  double contrast = 1.0;
+};
 
 // The cells of the first scale cover [−radius, radius]² about `centre`
 // (pixel-corner coordinates, as junction positions). `direction` is the unit
 // direction in which the boundary leaves the junction; `a_on_left` says
 // whether region a lies on the left of that walk as seen on the screen (x
-// right, y down). Throws hair25d::Error for a radius that is not finite and
-// > 0 or a direction that is not a finite non-zero vector.
-Patch junction_patch(const LabelMap& labels, const Vec2& centre, const Vec2& direction, int a,
-                     int b, bool a_on_left, double radius);
+// right, y down). Without an image (`drawing.image` null) the grey channel is
+// 0. Throws hair25d::Error for a radius that is not finite and > 0, a
+// direction that is not a finite non-zero vector, an image of another size
+// than the map or a contrast that is not finite and > 0.
+Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Vec2& centre,
+                     const Vec2& direction, int a, int b, bool a_on_left, double radius);
 
 // The same configuration with regions A and B exchanged: mirrored across the
-// u axis, the A − B channel negated.
+// u axis, the A − B channel negated (the grey channel is only mirrored).
 Patch swapped(const Patch& patch);
 
 // The patch radius for a drawing's junction fit length (layering's `reach`,
 // where the sectors are measured).
 double patch_radius(double reach);
 
+// The grey channel's unit for a drawing's occluding-line threshold (which is
+// 0.4 × a typical line's contrast by default): 2.5 × the threshold.
+double patch_contrast(double line_threshold);
+
 // A one-hidden-layer perceptron in OpenCV's ANN_MLP form: every unit,
-// the output included, applies β (1 − e^{−αx}) / (1 + e^{−αx}).
-inline constexpr int kPatchHidden = 16;
+// the output included, applies β (1 − e^{−αx}) / (1 + e^{−αx}). It is the sum
+// of kPatchMembers such networks of kPatchMemberHidden hidden units each
+// (an ensemble trained from different initial weights): member m owns hidden
+// units [m · kPatchMemberHidden, (m + 1) · kPatchMemberHidden) and output
+// bias b2[m], and the output is the sum of the members' outputs.
+inline constexpr int kPatchMembers = 1;
+inline constexpr int kPatchMemberHidden = 32;
+inline constexpr int kPatchHidden = kPatchMembers * kPatchMemberHidden;
 struct PatchNet {
   // Input-major: w1[k][h] weighs input k into hidden unit h.
   std::array<std::array<float, kPatchHidden>, kPatchInputs> w1{};
   std::array<float, kPatchHidden> b1{};
   std::array<float, kPatchHidden> w2{};
-  float b2 = 0;
+  std::array<float, kPatchMembers> b2{};
   double alpha = 2.0 / 3.0, beta = 1.7159;
   // Second stage: log-odds "A above" = order · (6b log-odds) + patch · score.
   double order_weight = 1.0;
@@ -95,9 +122,10 @@ PatchScores patch_scores(const PatchNet& order, int order_inputs, const PatchNet
 // The patches of both ends of boundary `b` of `graph` (none for a closed
 // loop; an end is left out when its direction is zero), region A = b.left.
 // `start_direction` / `end_direction` are the directions leaving each end.
-std::vector<Patch> boundary_patches(const LabelMap& labels, const BoundaryGraph& graph,
-                                    const Boundary& b, const Vec2& start_direction,
-                                    const Vec2& end_direction, double radius);
+std::vector<Patch> boundary_patches(const LabelMap& labels, const PatchImage& drawing,
+                                    const BoundaryGraph& graph, const Boundary& b,
+                                    const Vec2& start_direction, const Vec2& end_direction,
+                                    double radius);
 
 // The weights in use (layering/src/patch_weights.cpp says how they were made).
 const PatchNet& patch_weights();

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 
@@ -34,7 +36,8 @@ TEST(JunctionPatch, RasterisesTheTJunctionInTheBoundarysFrame) {
   // The boundary between 1 and 2 leaves the junction toward −x; walking
   // that way on the screen (y down), region 2 is on the left. One pixel per
   // cell (radius 8), so every cell lies in one region.
-  const Patch p = junction_patch(t_junction(), Vec2(20, 15), Vec2(-1, 0), 2, 1, true, 8.0);
+  const Patch p =
+      junction_patch(t_junction(), PatchImage{}, Vec2(20, 15), Vec2(-1, 0), 2, 1, true, 8.0);
   for (int j = 0; j < kPatchCells; ++j)
     for (int i = 0; i < kPatchCells; ++i) {
       // u = along the boundary (x = 20 − u), v = toward A (y = 15 + v).
@@ -46,18 +49,22 @@ TEST(JunctionPatch, RasterisesTheTJunctionInTheBoundarysFrame) {
       EXPECT_EQ(cell(p, i, j, 1), other) << i << "," << j;
     }
   // Beyond the image: neither channel.
-  const Patch edge = junction_patch(t_junction(), Vec2(0, 0), Vec2(1, 0), 1, 2, true, 8.0);
+  const Patch edge =
+      junction_patch(t_junction(), PatchImage{}, Vec2(0, 0), Vec2(1, 0), 1, 2, true, 8.0);
   EXPECT_EQ(cell(edge, 0, 0, 0), 0.0f);
   EXPECT_EQ(cell(edge, 0, 0, 1), 0.0f);
 }
 
 // The patch as its header defines it, sample by sample.
 Patch reference_patch(const LabelMap& labels, const Vec2& centre, const Vec2& direction, int a,
-                      int b, bool a_on_left, double radius) {
+                      int b, bool a_on_left, double radius, const Image* image = nullptr,
+                      double contrast = 1.0) {
   const Vec2 u = direction.normalized();
   const Vec2 left(u.y(), -u.x());
   const Vec2 v = a_on_left ? left : Vec2(-left);
   Patch p{};
+  std::array<float, kPatchGreyInputs> grey{};
+  std::array<int, kPatchGreyInputs> count{};
   for (int scale = 0; scale < kPatchScales; ++scale) {
     const double r = scale == 0 ? radius : kPatchWide * radius;
     const double cell = 2 * r / kPatchCells;
@@ -71,6 +78,11 @@ Patch reference_patch(const LabelMap& labels, const Vec2& centre, const Vec2& di
             const int x = static_cast<int>(std::floor(q.x()));
             const int y = static_cast<int>(std::floor(q.y()));
             if (!labels.contains(x, y)) continue;
+            if (image != nullptr && scale == 0) {
+              const Rgba& px = image->at(x, y);
+              grey[j * kPatchCells + i] += 0.299f * px.r + 0.587f * px.g + 0.114f * px.b;
+              ++count[j * kPatchCells + i];
+            }
             const int l = labels.at(x, y);
             const int k = scale * kPatchScaleInputs + (j * kPatchCells + i) * kPatchChannels;
             if (l == a)
@@ -81,6 +93,21 @@ Patch reference_patch(const LabelMap& labels, const Vec2& centre, const Vec2& di
               p[k + 1] += 0.25f;
           }
   }
+  if (image == nullptr) return p;
+  auto mean = [&](int i, int j) { return grey[j * kPatchCells + i] / count[j * kPatchCells + i]; };
+  for (int j = 0; j < kPatchCells; ++j)
+    for (int i = 0; i < kPatchCells; ++i) {
+      if (count[j * kPatchCells + i] == 0) continue;
+      float bright = mean(i, j);
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          const int ii = i + di, jj = j + dj;
+          if (ii < 0 || jj < 0 || ii >= kPatchCells || jj >= kPatchCells) continue;
+          if (count[jj * kPatchCells + ii] > 0) bright = std::max(bright, mean(ii, jj));
+        }
+      p[kPatchLabelInputs + j * kPatchCells + i] =
+          std::min((bright - mean(i, j)) * static_cast<float>(1.0 / contrast), 2.0f);
+    }
   return p;
 }
 
@@ -98,23 +125,81 @@ TEST(JunctionPatch, EqualsTheSampleBySampleDefinition) {
     const Vec2 d(std::cos(t), std::sin(t));
     const double r = radius(rng);
     const bool left = k % 2 == 0;
-    EXPECT_EQ(junction_patch(m, c, d, 1, 2, left, r), reference_patch(m, c, d, 1, 2, left, r));
+    EXPECT_EQ(junction_patch(m, PatchImage{}, c, d, 1, 2, left, r),
+              reference_patch(m, c, d, 1, 2, left, r));
+  }
+  // With the drawing's grey levels (random, so every cell differs).
+  Image image(53, 37);
+  std::uniform_int_distribution<int> level(0, 255);
+  for (int y = 0; y < 37; ++y)
+    for (int x = 0; x < 53; ++x)
+      image.at(x, y) =
+          Rgba{static_cast<std::uint8_t>(level(rng)), static_cast<std::uint8_t>(level(rng)),
+               static_cast<std::uint8_t>(level(rng)), 255};
+  for (int k = 0; k < 30; ++k) {
+    const Vec2 c(px(rng), py(rng));
+    const double t = angle(rng);
+    const Vec2 d(std::cos(t), std::sin(t));
+    const double r = radius(rng);
+    const double contrast = 10.0 + k;
+    EXPECT_EQ(junction_patch(m, PatchImage{&image, contrast}, c, d, 2, 3, k % 3 == 0, r),
+              reference_patch(m, c, d, 2, 3, k % 3 == 0, r, &image, contrast));
   }
   // Integer centres and axis directions put samples on pixel edges.
-  EXPECT_EQ(junction_patch(m, Vec2(20, 15), Vec2(0, 3), 3, 4, true, 8.0),
+  EXPECT_EQ(junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(0, 3), 3, 4, true, 8.0),
             reference_patch(m, Vec2(20, 15), Vec2(0, 3), 3, 4, true, 8.0));
 }
 
 TEST(JunctionPatch, MixedCellsHoldShares) {
   // Radius 16: two pixels per cell, 2 × 2 samples, so the cell across x = 20
   // still falls on one side; a diagonal direction gives shares in quarters.
-  const Patch p =
-      junction_patch(t_junction(), Vec2(20, 15), Vec2(-1, 1).normalized(), 2, 1, true, 16.0);
+  const Patch p = junction_patch(t_junction(), PatchImage{}, Vec2(20, 15), Vec2(-1, 1).normalized(),
+                                 2, 1, true, 16.0);
   for (float v : p) {
     EXPECT_GE(v, -1.0f);
     EXPECT_LE(v, 1.0f);
     EXPECT_EQ(std::fmod(v * 4.0f, 1.0f), 0.0f);
   }
+}
+
+TEST(JunctionPatch, TheGreyChannelShowsLinesNotTones) {
+  // The T of t_junction() drawn: region 1 light, region 2 dark paint, region
+  // 3 mid, and a 1-px line of grey 20 along y = 15 (the bar's outline) that
+  // stops where the stem's line (x = 20) would begin: the stem has none.
+  const LabelMap m = t_junction();
+  Image image(40, 30);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) {
+      const std::uint8_t paint = m.at(x, y) == 1 ? 220 : m.at(x, y) == 2 ? 60 : 140;
+      const std::uint8_t v = y == 15 ? 20 : paint;
+      image.at(x, y) = Rgba{v, v, v, 255};
+    }
+  // One pixel per cell (radius 8): u = x − 20, v = y − 15 + 8 rows.
+  const double contrast = 100.0;
+  const Patch p =
+      junction_patch(m, PatchImage{&image, contrast}, Vec2(20, 15), Vec2(1, 0), 1, 3, false, 8.0);
+  auto dark = [&](int i, int j) { return p[kPatchLabelInputs + j * kPatchCells + i]; };
+  // Region 1 (light) lies toward −v here (a on the right of +x on screen).
+  for (int i = 1; i < kPatchCells - 1; ++i) {
+    // The line's row (y = 15 is v = 0, row 8): its contrast with the
+    // brightest neighbour, region 1's paint (220 − 20), clamped at 2.
+    EXPECT_FLOAT_EQ(dark(i, 8), 2.0f) << i;
+    // Flat paint two rows away reads 0, dark or light (but for region 2's
+    // cells beside region 3, below).
+    EXPECT_FLOAT_EQ(dark(i, 5), 0.0f) << i;
+    if (i != 7) EXPECT_FLOAT_EQ(dark(i, 11), 0.0f) << i;
+  }
+  // A paint row next to a lighter row reads their difference: row 9 (the
+  // first row of 2 and 3) borders the line only, so its brightest neighbour
+  // is itself or row 10: 0.
+  EXPECT_FLOAT_EQ(dark(3, 9), 0.0f);
+  // Region 2 (x < 20, grey 60) beside region 3 (grey 140) at the stem
+  // (i = 7 is x = 19, i = 8 is x = 20): the darker side reads 0.8.
+  EXPECT_FLOAT_EQ(dark(7, 12), 0.8f);
+  EXPECT_FLOAT_EQ(dark(8, 12), 0.0f);
+  // Without an image, no grey channel; the label channels are the same.
+  const Patch q = junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(1, 0), 1, 3, false, 8.0);
+  for (int k = 0; k < kPatchInputs; ++k) EXPECT_EQ(q[k], k < kPatchLabelInputs ? p[k] : 0.0f) << k;
 }
 
 TEST(JunctionPatch, SwappedTwiceIsTheSamePatch) {
@@ -126,6 +211,10 @@ TEST(JunctionPatch, SwappedTwiceIsTheSamePatch) {
   const Patch s = swapped(p);
   EXPECT_EQ(s[1], p[((kPatchCells - 1) * kPatchCells) * kPatchChannels + 1]);
   EXPECT_EQ(s[0], -p[((kPatchCells - 1) * kPatchCells) * kPatchChannels]);
+  // The grey channel is mirrored, not negated.
+  EXPECT_EQ(s[kPatchLabelInputs + 3], p[kPatchLabelInputs + (kPatchCells - 1) * kPatchCells + 3]);
+  EXPECT_EQ(s[kPatchLabelInputs + 2 * kPatchCells + 5],
+            p[kPatchLabelInputs + (kPatchCells - 3) * kPatchCells + 5]);
 }
 
 TEST(PatchScore, ExchangingTheRegionsFlipsTheSignExactly) {
@@ -187,8 +276,8 @@ TEST(PatchScore, WalkingTheBoundaryBackwardsFlipsTheSignExactly) {
     std::swap(r.left, r.right);
     std::swap(r.start, r.end);
     r.points = back;
-    const std::vector<Patch> forward = boundary_patches(m, g, b, start, end, 12.0);
-    const std::vector<Patch> backward = boundary_patches(m, g, r, end, start, 12.0);
+    const std::vector<Patch> forward = boundary_patches(m, PatchImage{}, g, b, start, end, 12.0);
+    const std::vector<Patch> backward = boundary_patches(m, PatchImage{}, g, r, end, start, 12.0);
     ASSERT_EQ(forward.size(), 2u);
     ASSERT_EQ(backward.size(), 2u);
     // The reversed walk's start is the forward walk's end, regions exchanged.
@@ -209,8 +298,10 @@ TEST(PatchScore, TheBarOfTheTIsAbove) {
   // and 3 end on it. The trained network should read that from one end.
   const LabelMap m = t_junction();
   const PatchNet& net = patch_weights();
-  const Patch bar_over_2 = junction_patch(m, Vec2(20, 15), Vec2(-1, 0), 1, 2, false, 12.0);
-  const Patch bar_over_3 = junction_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 3, true, 12.0);
+  const Patch bar_over_2 =
+      junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(-1, 0), 1, 2, false, 12.0);
+  const Patch bar_over_3 =
+      junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(1, 0), 1, 3, true, 12.0);
   EXPECT_GT(patch_score(net, bar_over_2), 0.0);
   EXPECT_GT(patch_score(net, bar_over_3), 0.0);
 }
@@ -218,13 +309,23 @@ TEST(PatchScore, TheBarOfTheTIsAbove) {
 TEST(JunctionPatch, BadInputThrows) {
   const LabelMap m = t_junction();
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 2, true, 0.0), Error);
-  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 2, true, -3.0), Error);
-  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 2, true, nan), Error);
-  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(0, 0), 1, 2, true, 8.0), Error);
-  EXPECT_THROW(junction_patch(m, Vec2(20, 15), Vec2(nan, 1), 1, 2, true, 8.0), Error);
-  EXPECT_THROW(junction_patch(m, Vec2(nan, 15), Vec2(1, 0), 1, 2, true, 8.0), Error);
-  EXPECT_THROW(junction_patch(m, Vec2(1e12, 15), Vec2(1, 0), 1, 2, true, 8.0), Error);
+  EXPECT_THROW(junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(1, 0), 1, 2, true, 0.0), Error);
+  EXPECT_THROW(junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(1, 0), 1, 2, true, -3.0), Error);
+  EXPECT_THROW(junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(1, 0), 1, 2, true, nan), Error);
+  EXPECT_THROW(junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(0, 0), 1, 2, true, 8.0), Error);
+  EXPECT_THROW(junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(nan, 1), 1, 2, true, 8.0), Error);
+  EXPECT_THROW(junction_patch(m, PatchImage{}, Vec2(nan, 15), Vec2(1, 0), 1, 2, true, 8.0), Error);
+  EXPECT_THROW(junction_patch(m, PatchImage{}, Vec2(1e12, 15), Vec2(1, 0), 1, 2, true, 8.0), Error);
+  const Image image(40, 30), other(30, 40);
+  EXPECT_THROW(
+      junction_patch(m, PatchImage{&other, 10.0}, Vec2(20, 15), Vec2(1, 0), 1, 2, true, 8.0),
+      Error);
+  EXPECT_THROW(
+      junction_patch(m, PatchImage{&image, 0.0}, Vec2(20, 15), Vec2(1, 0), 1, 2, true, 8.0), Error);
+  EXPECT_THROW(
+      junction_patch(m, PatchImage{&image, nan}, Vec2(20, 15), Vec2(1, 0), 1, 2, true, 8.0), Error);
+  EXPECT_NO_THROW(
+      junction_patch(m, PatchImage{&image, 10.0}, Vec2(20, 15), Vec2(1, 0), 1, 2, true, 8.0));
 }
 
 TEST(Layering, PatchesJoinTheLearnedLogOddsOnlyWhenAsked) {
