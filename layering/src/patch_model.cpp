@@ -86,12 +86,27 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
       float* row = out + (sj / 2) * kPatchCells * kPatchChannels;
       float* grey_row = grey.data() + (sj / 2) * kPatchCells;
       std::uint8_t* count_row = counted.data() + (sj / 2) * kPatchCells;
+      if (inside && with_grey) {
+        // Rows of the map and the image read straight from their data.
+        const int* label_data = labels.data();
+        const Rgba* pixels = image->data();
+        const std::ptrdiff_t w = labels.width();
+        for (int si = 0; si < kSamples; ++si) {
+          const int x = static_cast<int>(ax[si] + bx[sj]);
+          const int y = static_cast<int>(ay[si] + by[sj]);
+          const std::ptrdiff_t at = y * w + x;
+          add(row + (si / 2) * kPatchChannels, label_data[at]);
+          const Rgba& c = pixels[at];
+          grey_row[si / 2] += 0.299f * c.r + 0.587f * c.g + 0.114f * c.b;
+        }
+        for (int i = 0; i < kPatchCells; ++i) count_row[i] += 2;
+        continue;
+      }
       if (inside) {
         for (int si = 0; si < kSamples; ++si) {
           const int x = static_cast<int>(ax[si] + bx[sj]);
           const int y = static_cast<int>(ay[si] + by[sj]);
           add(row + (si / 2) * kPatchChannels, labels.at(x, y));
-          if (with_grey) grey_row[si / 2] += grey_at(*image, x, y), ++count_row[si / 2];
         }
         continue;
       }
@@ -112,19 +127,30 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
   // Darkness below the brightest of the 3 × 3 cells about each cell, as a
   // bar detector reads a line against the paint on both sides (a flat tone
   // reads 0 however dark; cells wholly outside the image are left out).
-  std::array<float, kPatchGreyInputs> mean{};
+  std::array<float, kPatchGreyInputs> mean{}, across{};
   for (int c = 0; c < kPatchGreyInputs; ++c)
     mean[c] = counted[c] > 0 ? grey[c] / counted[c] : -1.0f;
+  // The 3 × 3 maximum as a maximum along rows, then down columns (exact, so
+  // the same as over the nine cells at once; uncounted cells never win).
+  for (int j = 0; j < kPatchCells; ++j) {
+    const float* m = mean.data() + j * kPatchCells;
+    float* a = across.data() + j * kPatchCells;
+    for (int i = 0; i < kPatchCells; ++i) {
+      float v = m[i];
+      if (i > 0) v = std::max(v, m[i - 1]);
+      if (i + 1 < kPatchCells) v = std::max(v, m[i + 1]);
+      a[i] = v;
+    }
+  }
   const float scale = static_cast<float>(1.0 / drawing.contrast);
   float* dark = p.data() + kPatchLabelInputs;
   for (int j = 0; j < kPatchCells; ++j)
     for (int i = 0; i < kPatchCells; ++i) {
       const int c = j * kPatchCells + i;
       if (counted[c] == 0) continue;
-      float bright = mean[c];
-      for (int dj = std::max(j - 1, 0); dj <= std::min(j + 1, kPatchCells - 1); ++dj)
-        for (int di = std::max(i - 1, 0); di <= std::min(i + 1, kPatchCells - 1); ++di)
-          bright = std::max(bright, mean[dj * kPatchCells + di]);
+      float bright = across[c];
+      if (j > 0) bright = std::max(bright, across[c - kPatchCells]);
+      if (j + 1 < kPatchCells) bright = std::max(bright, across[c + kPatchCells]);
       dark[c] = std::min((bright - mean[c]) * scale, 2.0f);
     }
   return p;
