@@ -48,6 +48,18 @@ Toy toy(int n, unsigned seed, int inputs) {
   return t;
 }
 
+// How many of the toy's patches the net scores with the right sign; every
+// score must flip exactly when A and B are exchanged.
+int right_and_antisymmetric(const PatchNet& net, const Toy& test) {
+  int right = 0;
+  for (std::size_t k = 0; k < test.patches.size(); ++k) {
+    const double s = patch_score(net, test.patches[k]);
+    right += s * test.y[k] > 0;
+    EXPECT_EQ(patch_score(net, swapped(test.patches[k])), -s);
+  }
+  return right;
+}
+
 TEST(PatchTraining, LearnsARuleAndKeepsTheSignFlip) {
   const int inputs = 512;
   const Toy train = toy(2000, 3, inputs), test = toy(300, 4, inputs);
@@ -56,12 +68,7 @@ TEST(PatchTraining, LearnsARuleAndKeepsTheSignFlip) {
   o.inputs = inputs;
   o.seed = 7;
   const PatchNet net = train_patch_mlp(train.x, train.xs, train.y, train.w, o);
-  int right = 0;
-  for (std::size_t k = 0; k < test.patches.size(); ++k) {
-    const double s = patch_score(net, test.patches[k]);
-    right += s * test.y[k] > 0;
-    EXPECT_EQ(patch_score(net, swapped(test.patches[k])), -s);
-  }
+  const int right = right_and_antisymmetric(net, test);
   EXPECT_GT(right, 270) << "of 300";  // chance is 150
   // Inputs past `inputs` are weighed 0, so the layering reads only those.
   for (int k = inputs; k < kPatchInputs; ++k)
@@ -105,20 +112,12 @@ TEST(PatchTraining, LearnsARuleOfTheGreyChannel) {
   o.inputs = kPatchInputs;
   o.seed = 9;
   const PatchNet net = train_patch_mlp(train.x, train.xs, train.y, train.w, o);
-  int right = 0;
-  for (std::size_t k = 0; k < test.patches.size(); ++k) {
-    const double s = patch_score(net, test.patches[k]);
-    right += s * test.y[k] > 0;
-    EXPECT_EQ(patch_score(net, swapped(test.patches[k])), -s);
-  }
+  const int right = right_and_antisymmetric(net, test);
   EXPECT_GT(right, 270) << "of 300";
   // Trained on the label channels only, the same rule is chance.
   o.inputs = hair25d::layering::detail::kPatchLabelInputs;
   const PatchNet blind = train_patch_mlp(train.x, train.xs, train.y, train.w, o);
-  int blind_right = 0;
-  for (std::size_t k = 0; k < test.patches.size(); ++k)
-    blind_right += patch_score(blind, test.patches[k]) * test.y[k] > 0;
-  EXPECT_LT(blind_right, 200) << "of 300";
+  EXPECT_LT(right_and_antisymmetric(blind, test), 200) << "of 300";
 }
 
 TEST(PatchTraining, TheSameSeedGivesTheSameWeights) {
