@@ -347,7 +347,12 @@ void write_folder_atomically(const fs::path& target_in,
     fs::remove_all(old, ec);
   } catch (const fs::filesystem_error& e) {
     fs::remove_all(tmp, ec);
-    throw Error(target.string() + ": cannot write the folder: " + e.code().message());
+    // Name the path the system refused: for /proc/out the kernel answers
+    // "No such file or directory" to making the temporary beside it, which
+    // without the path reads as if the target were missing.
+    const std::string where =
+        e.path1().empty() ? std::string() : " (at " + e.path1().string() + ")";
+    throw Error(target.string() + ": cannot write the folder" + where + ": " + e.code().message());
   } catch (...) {
     fs::remove_all(tmp, ec);
     throw;

@@ -56,3 +56,10 @@ if(TARGET hair25d-generate)
       test ! -e gen_rerun/case001 && test ! -e gen_rerun/case002 && test -z \"$(ls -A | grep '^\\.gen_rerun')\""
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endif()
+
+# A folder the system will not let us make beside: the message names the path
+# it refused (for /proc the kernel says "No such file or directory", which
+# alone reads as if the target were missing).
+hair25d_cli_test(segment_output_in_proc 1
+  STDERR "^hair25d: /proc/hair25d_out: cannot write the folder \\(at /proc/[^)]+\\): "
+  ARGS -q segment ${case5}/image.png --strokes ${case5}/strokes.json -o /proc/hair25d_out)
