@@ -10,24 +10,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "../../tests/skeleton/outline_file.h"
 #include "hair25d/skeleton/strand_mesh.h"
 
 namespace {
 
 using namespace hair25d;
 
-Polyline read_outline(const std::string& name) {
-  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) + "/skeleton/" + name);
-  Polyline outline;
-  double x = 0, y = 0;
-  while (in >> x >> y) outline.emplace_back(x, y);
-  return outline;
-}
+using hair25d::testing::read_outline;
 
 double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 d = b - a;

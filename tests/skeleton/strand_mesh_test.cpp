@@ -3,11 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <string>
 
 #include "hair25d/core/error.h"
 #include "hair25d/core/tri_mesh.h"
+#include "outline_file.h"
 #include "shapes.h"
 
 namespace hair25d::skeleton {
@@ -138,15 +138,7 @@ TEST(StrandMesh, BothLobesOfACrossedOutline) {
   EXPECT_GT(right, 10);
 }
 
-// An outline from tests/data/skeleton: "x y" per line, pixels (empty when
-// the file is missing, which the tests' size checks then report).
-Polyline read_outline(const std::string& name) {
-  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) + "/skeleton/" + name);
-  Polyline outline;
-  double x = 0, y = 0;
-  while (in >> x >> y) outline.emplace_back(x, y);
-  return outline;
-}
+using hair25d::testing::read_outline;
 
 // A completed strand that folds over itself (tests/data/README.md): CGAL's
 // mesher crashed on it. The mesh covers the inside: the outline is resampled
