@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "hair25d/core/error.h"
@@ -16,6 +17,39 @@ namespace {
 float grey_at(const Image& image, int x, int y) {
   const Rgba& c = image.at(x, y);
   return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b;
+}
+
+constexpr int kSamples = 2 * kPatchCells;
+
+// One row of samples wholly inside the map: for each sample (at
+// (ax[i] + bx, ay[i] + by), truncated), adds to `a_minus_b` +1 where the label
+// is a, −1 where it is b, and to `other` 1 where it is another region;
+// with `pixels`, writes each sample's grey level to `grey` (grey_at's
+// value). Written for the vectoriser: the two clones do the same integer
+// and float operations lane by lane.
+__attribute__((target_clones("avx2", "default"))) void sample_row(
+    const int* labels, const Rgba* pixels, int w, const double* ax, const double* ay, double bx,
+    double by, int a, int b, int* a_minus_b, int* other, float* grey) {
+  std::array<int, kSamples> at, l;
+  for (int i = 0; i < kSamples; ++i)
+    at[i] = static_cast<int>(ay[i] + by) * w + static_cast<int>(ax[i] + bx);
+  for (int i = 0; i < kSamples; ++i) l[i] = labels[at[i]];
+  for (int i = 0; i < kSamples; ++i) {
+    const int is_a = l[i] == a;
+    const int is_b = (l[i] == b) & (is_a ^ 1);
+    a_minus_b[i] += is_a - is_b;
+    other[i] += (l[i] > 0) & ((is_a | is_b) ^ 1);
+  }
+  if (pixels == nullptr) return;
+  std::array<std::uint32_t, kSamples> px;
+  for (int i = 0; i < kSamples; ++i) std::memcpy(&px[i], pixels + at[i], sizeof(std::uint32_t));
+  for (int i = 0; i < kSamples; ++i) {
+    // Rgba's bytes r, g, b, a in memory order.
+    const float r = static_cast<float>(static_cast<int>(px[i] & 0xff));
+    const float g = static_cast<float>(static_cast<int>((px[i] >> 8) & 0xff));
+    const float bl = static_cast<float>(static_cast<int>((px[i] >> 16) & 0xff));
+    grey[i] = 0.299f * r + 0.587f * g + 0.114f * bl;
+  }
 }
 
 }  // namespace
@@ -52,7 +86,6 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
   std::array<std::uint8_t, kPatchGreyInputs> counted{};
   // Sample offsets along u and v, products taken once: each sample point is
   // then (centre + cu·u) + cv·v, the same sums as written out per sample.
-  constexpr int kSamples = 2 * kPatchCells;
   std::array<double, kSamples> ax{}, ay{}, bx{}, by{};
   for (int scale = 0; scale < kPatchScales; ++scale) {
     const double r = scale == 0 ? radius : kPatchWide * radius;
@@ -82,34 +115,41 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
     const bool inside = *ax0 + *bx0 >= 1 && *ay0 + *by0 >= 1 && *ax1 + *bx1 < labels.width() - 1 &&
                         *ay1 + *by1 < labels.height() - 1;
     const bool with_grey = scale == 0 && image != nullptr;
+    // Inside the map (most junctions), a row of samples at a time: the
+    // indices first (vectorisable), then the labels counted per cell (each
+    // cell's channels are sums of ±0.25, exact in any order, so counts give
+    // them to the bit) and the grey levels added in the samples' order.
+    if (inside && static_cast<double>(labels.width()) * labels.height() < 2e9) {
+      const int* label_data = labels.data();
+      const Rgba* pixels = with_grey ? image->data() : nullptr;
+      const int w = labels.width();
+      for (int sj = 0; sj < kSamples; sj += 2) {
+        std::array<int, kSamples> diff{}, other{};
+        std::array<float, kSamples> g;
+        float* grey_row = grey.data() + (sj / 2) * kPatchCells;
+        for (int half = 0; half < 2; ++half) {
+          sample_row(label_data, pixels, w, ax.data(), ay.data(), bx[sj + half], by[sj + half], a,
+                     b, diff.data(), other.data(), g.data());
+          if (pixels == nullptr) continue;
+          for (int i = 0; i < kPatchCells; ++i)
+            grey_row[i] = (grey_row[i] + g[2 * i]) + g[2 * i + 1];
+        }
+        float* row = out + (sj / 2) * kPatchCells * kPatchChannels;
+        for (int i = 0; i < kPatchCells; ++i) {
+          row[2 * i] = 0.25f * static_cast<float>(diff[2 * i] + diff[2 * i + 1]);
+          row[2 * i + 1] = 0.25f * static_cast<float>(other[2 * i] + other[2 * i + 1]);
+        }
+        if (pixels != nullptr) {
+          std::uint8_t* count_row = counted.data() + (sj / 2) * kPatchCells;
+          for (int i = 0; i < kPatchCells; ++i) count_row[i] = 4;
+        }
+      }
+      continue;
+    }
     for (int sj = 0; sj < kSamples; ++sj) {
       float* row = out + (sj / 2) * kPatchCells * kPatchChannels;
       float* grey_row = grey.data() + (sj / 2) * kPatchCells;
       std::uint8_t* count_row = counted.data() + (sj / 2) * kPatchCells;
-      if (inside && with_grey) {
-        // Rows of the map and the image read straight from their data.
-        const int* label_data = labels.data();
-        const Rgba* pixels = image->data();
-        const std::ptrdiff_t w = labels.width();
-        for (int si = 0; si < kSamples; ++si) {
-          const int x = static_cast<int>(ax[si] + bx[sj]);
-          const int y = static_cast<int>(ay[si] + by[sj]);
-          const std::ptrdiff_t at = y * w + x;
-          add(row + (si / 2) * kPatchChannels, label_data[at]);
-          const Rgba& c = pixels[at];
-          grey_row[si / 2] += 0.299f * c.r + 0.587f * c.g + 0.114f * c.b;
-        }
-        for (int i = 0; i < kPatchCells; ++i) count_row[i] += 2;
-        continue;
-      }
-      if (inside) {
-        for (int si = 0; si < kSamples; ++si) {
-          const int x = static_cast<int>(ax[si] + bx[sj]);
-          const int y = static_cast<int>(ay[si] + by[sj]);
-          add(row + (si / 2) * kPatchChannels, labels.at(x, y));
-        }
-        continue;
-      }
       for (int si = 0; si < kSamples; ++si) {
         const double qx = ax[si] + bx[sj];
         const double qy = ay[si] + by[sj];
@@ -178,6 +218,88 @@ double patch_radius(double reach) { return reach; }
 
 double patch_contrast(double line_threshold) { return 2.5 * line_threshold; }
 
+namespace {
+
+// The output layer on the hidden sums: β (1 − e^{−αx}) / (1 + e^{−αx}),
+// written so that it cannot overflow.
+double net_output(const PatchNet& net, const std::array<float, kPatchHidden>& sum) {
+  auto activation = [&](double x) { return net.beta * std::tanh(0.5 * net.alpha * x); };
+  double total = 0.0;
+  for (int m = 0; m < kPatchMembers; ++m) {
+    double out = net.b2[m];
+    for (int h = m * kPatchMemberHidden; h < (m + 1) * kPatchMemberHidden; ++h)
+      out += net.w2[h] * activation(sum[h]);
+    total += activation(out);
+  }
+  return total;
+}
+
+// A patch's non-zero inputs in increasing index order (the order in which
+// patch_net adds them), and where each row of cells begins among them: the
+// rows of the label scales (kPatchCells × kPatchChannels inputs each), then
+// those of the grey channel (kPatchCells each).
+constexpr int kPatchRows = kPatchScales * kPatchCells + kPatchCells;
+struct NonZeroInputs {
+  int n = 0;
+  std::array<std::uint16_t, kPatchInputs> k;
+  std::array<float, kPatchInputs> x;
+  std::array<int, kPatchRows + 1> row_start;
+};
+
+int row_begin(int r) {
+  return r <= kPatchScales * kPatchCells
+             ? r * kPatchCells * kPatchChannels
+             : kPatchLabelInputs + (r - kPatchScales * kPatchCells) * kPatchCells;
+}
+
+void non_zero_inputs(const Patch& patch, NonZeroInputs& out) {
+  out.n = 0;
+  for (int r = 0; r < kPatchRows; ++r) {
+    out.row_start[r] = out.n;
+    for (int k = row_begin(r); k < row_begin(r + 1); ++k) {
+      if (patch[k] == 0) continue;
+      out.k[out.n] = static_cast<std::uint16_t>(k);
+      out.x[out.n++] = patch[k];
+    }
+  }
+  out.row_start[kPatchRows] = out.n;
+}
+
+// The non-zero inputs of swapped(patch) from those of the patch: rows in
+// reverse order within each block, the A − B channel negated.
+void swapped_inputs(const NonZeroInputs& in, NonZeroInputs& out) {
+  out.n = 0;
+  for (int r = 0; r < kPatchRows; ++r) {
+    out.row_start[r] = out.n;
+    const int block = r / kPatchCells, j = r % kPatchCells;
+    const int from = block * kPatchCells + (kPatchCells - 1 - j);
+    const int shift = row_begin(r) - row_begin(from);
+    const bool labels = block < kPatchScales;
+    for (int e = in.row_start[from]; e < in.row_start[from + 1]; ++e) {
+      const int k = in.k[e];
+      out.k[out.n] = static_cast<std::uint16_t>(k + shift);
+      out.x[out.n++] = labels && k % kPatchChannels == 0 ? -in.x[e] : in.x[e];
+    }
+  }
+  out.row_start[kPatchRows] = out.n;
+}
+
+// patch_net on the non-zero inputs below `inputs`: the same sums in the
+// same order, without scanning the zeros.
+__attribute__((target_clones("avx2", "default"))) double sparse_net(const PatchNet& net,
+                                                                    const NonZeroInputs& in,
+                                                                    int inputs) {
+  std::array<float, kPatchHidden> sum = net.b1;
+  for (int e = 0; e < in.n && in.k[e] < inputs; ++e) {
+    const float x = in.x[e];
+    const std::array<float, kPatchHidden>& w = net.w1[in.k[e]];
+    for (int h = 0; h < kPatchHidden; ++h) sum[h] += w[h] * x;
+  }
+  return net_output(net, sum);
+}
+
+}  // namespace
+
 // Two clones, chosen when the library loads: AVX2 adds the 16 hidden sums
 // eight at a time. Neither has fused multiply-adds, so each lane does the
 // same product and sum as the other clone and the scores are the same.
@@ -192,16 +314,7 @@ __attribute__((target_clones("avx2", "default"))) double patch_net(const PatchNe
     const std::array<float, kPatchHidden>& w = net.w1[k];
     for (int h = 0; h < kPatchHidden; ++h) sum[h] += w[h] * x;
   }
-  // β (1 − e^{−αx}) / (1 + e^{−αx}), written so that it cannot overflow.
-  auto activation = [&](double x) { return net.beta * std::tanh(0.5 * net.alpha * x); };
-  double total = 0.0;
-  for (int m = 0; m < kPatchMembers; ++m) {
-    double out = net.b2[m];
-    for (int h = m * kPatchMemberHidden; h < (m + 1) * kPatchMemberHidden; ++h)
-      out += net.w2[h] * activation(sum[h]);
-    total += activation(out);
-  }
-  return total;
+  return net_output(net, sum);
 }
 
 double patch_score(const PatchNet& net, const Patch& patch) {
@@ -222,9 +335,13 @@ int patch_inputs_used(const PatchNet& net) {
 
 PatchScores patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
                          const Patch& patch) {
-  const Patch other = swapped(patch);
-  return {patch_net(order, patch, order_inputs) - patch_net(order, other, order_inputs),
-          patch_net(same, patch) + patch_net(same, other)};
+  // The zeros are found once and the swapped patch's inputs taken from the
+  // patch's: four passes over the few non-zero inputs.
+  NonZeroInputs in, other;
+  non_zero_inputs(patch, in);
+  swapped_inputs(in, other);
+  return {sparse_net(order, in, order_inputs) - sparse_net(order, other, order_inputs),
+          sparse_net(same, in, kPatchInputs) + sparse_net(same, other, kPatchInputs)};
 }
 
 std::vector<Patch> boundary_patches(const LabelMap& labels, const PatchImage& drawing,
