@@ -137,7 +137,9 @@ ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const
   // then on, while the others keep growing: in Algorithm 1 one point touching
   // an occluder's edge stops the whole curve, which on drawings stopped most
   // curves in their first step (C₀ lies on the occluding boundary).
-  std::vector<char> held(curve.size(), 0);
+  // A held point stays put until the next resample: whether it has grown is
+  // found once (the test runs over all of C₀) and counted from then on.
+  std::vector<char> held(curve.size(), 0), held_grown(curve.size(), 0);
   result.stop = ContourStop::kIterationCap;
   for (int it = 1; it <= options.max_iterations; ++it) {
     double longest = 0.0;
@@ -147,6 +149,7 @@ ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const
       curve = resample(curve, options.spacing);
       pin_ends(curve);
       held.assign(curve.size(), 0);  // held points find their edge again in one step
+      held_grown.assign(curve.size(), 0);
     }
     const int n = static_cast<int>(curve.size());
     if (n != factored_size) {
@@ -186,13 +189,14 @@ ContourResult grow_contour(const Polyline& initial, const Vec2& tangent_p, const
     int free_points = 0, met_edge = 0;
     for (int i = 2; i <= n - 3; ++i) {
       if (held[i]) {
-        met_edge += grown(curve[i]);
+        met_edge += held_grown[i];
         continue;
       }
       const Vec2 x = solved.row(i - 2).transpose();
       if (!allowed(x) || beyond_reach(x)) {
         held[i] = 1;
-        met_edge += grown(curve[i]);
+        held_grown[i] = grown(curve[i]) ? 1 : 0;
+        met_edge += held_grown[i];
         continue;
       }
       ++free_points;

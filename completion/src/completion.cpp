@@ -1,6 +1,7 @@
 #include "hair25d/completion/completion.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <future>
 #include <numeric>
@@ -67,6 +68,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   ctx.image = &image;
   ctx.original = input.regions;
   ctx.options = &options;
+  if (options.join_scorer.record) ctx.join_log = &result.join_candidates;
   ctx.labels =
       assign_outline_pixels(image, *input.regions, options.outline_reach, options.dark_luma);
   report(progress, "completion", 0.05, "regions");
@@ -251,21 +253,42 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // Back-hair pieces linked under the regions above both (mass_paths.cpp).
   for (const detail::MassJoin& j : detail::path_join_candidates(ctx, face.mask))
     join_by_bands(j, false);
-  int done = 0;
+  // Cases 2 and 3: every open edge grows on its own (grow_edge reads the
+  // context only), most of completion's serial time: two workers take the
+  // next edge, the results are then used in the edges' order.
+  std::vector<detail::Edge> open_edges;
   for (const auto& [id, list] : atoms_of_region) {
     std::vector<detail::Edge> open;
     for (int a : list)
       if (!joined_atoms.count(a)) open.push_back(atoms[a]);
-    for (const detail::Edge& e : detail::merge_edges(ctx, ctx.regions.at(id), open)) {
-      const detail::Growth g = detail::grow_edge(ctx, e);
-      const int r = new_report(e, EdgeCase::kNotCompleted);
-      if (g.area.size() < 3) continue;
-      reports[r].completion = g.tip ? EdgeCase::kTip : EdgeCase::kRoot;
-      reports[r].stop = g.stop;
-      pieces.areas.push_back({e.region, g.area, !g.tip, r});
-      (g.tip ? result.tips : result.roots) += 1;
-    }
-    report(progress, "completion", 0.2 + 0.4 * (++done) / atoms_of_region.size(), "growing");
+    for (detail::Edge& e : detail::merge_edges(ctx, ctx.regions.at(id), open))
+      open_edges.push_back(std::move(e));
+  }
+  std::vector<detail::Growth> growths(open_edges.size());
+  {
+    std::atomic<std::size_t> next_edge{0}, grown{0};
+    const auto grow = [&](bool reports) {
+      for (std::size_t k = next_edge++; k < open_edges.size(); k = next_edge++) {
+        growths[k] = detail::grow_edge(ctx, open_edges[k]);
+        const std::size_t n = ++grown;
+        if (reports) report(progress, "completion", 0.2 + 0.4 * n / open_edges.size(), "growing");
+      }
+    };
+    std::future<void> other;
+    if (options.threads > 1 && open_edges.size() > 1)
+      other = std::async(std::launch::async, grow, false);
+    grow(true);
+    if (other.valid()) other.get();
+  }
+  for (std::size_t k = 0; k < open_edges.size(); ++k) {
+    const detail::Edge& e = open_edges[k];
+    const detail::Growth& g = growths[k];
+    const int r = new_report(e, EdgeCase::kNotCompleted);
+    if (g.area.size() < 3) continue;
+    reports[r].completion = g.tip ? EdgeCase::kTip : EdgeCase::kRoot;
+    reports[r].stop = g.stop;
+    pieces.areas.push_back({e.region, g.area, !g.tip, r});
+    (g.tip ? result.tips : result.roots) += 1;
   }
 
   std::map<int, std::vector<int>> groups;
