@@ -131,4 +131,31 @@ std::vector<int> rounded_tips(const MedialGraph& g, const PrunedAxis& axis,
   return tips;
 }
 
+int choose_root(const MedialGraph& g, const std::vector<bool>& candidates,
+                const std::vector<bool>& leaves, const std::vector<int>& free_corners,
+                const Vec2& hint) {
+  const auto without_free = [&](std::vector<bool> allowed) {
+    for (int c : free_corners)
+      if (c >= 0 && c < static_cast<int>(allowed.size())) allowed[c] = false;
+    return allowed;
+  };
+  const auto none = [](const std::vector<bool>& a) {
+    return std::find(a.begin(), a.end(), true) == a.end();
+  };
+  // A pruned axis that runs from one free corner to another (a lock pointed
+  // at both ends) roots at a leaf of the whole axis next to the head end.
+  std::vector<bool> allowed = without_free(candidates);
+  if (none(allowed)) allowed = without_free(leaves);
+  if (none(allowed)) allowed = candidates;
+  int best = -1;
+  double best_d = 0.0;
+  for (std::size_t v = 0; v < g.nodes.size(); ++v) {
+    if (!allowed[v]) continue;
+    // stableNorm: a hint far away (1e200) must not square to infinity.
+    const double d = (g.nodes[v] - hint).stableNorm();
+    if (best < 0 || d < best_d) best = static_cast<int>(v), best_d = d;
+  }
+  return best;
+}
+
 }  // namespace hair25d::skeleton::detail

@@ -30,4 +30,18 @@ std::vector<int> rounded_tips(const MedialGraph& g, const PrunedAxis& axis,
                               const std::vector<bool>& visible_end, double min_distance,
                               double arm);
 
+// The root end (paper §6: the end by the head, or under the occluder) among
+// `candidates` (#nodes), the axis ends: the one nearest to `hint` that is
+// not a free tip. `free_corners` are the sharp corners lying above their
+// whole neighbourhood (no covered outline within reach): those are the tips
+// §6 asks for. A sharp corner next to an occluder (a bang's top where it
+// goes under the crown) is where the strand comes from, so it may be the
+// root; before, every sharp corner was a tip and such a bang took its root
+// at its bottom. If every end is a free corner, the nearest of the other
+// `leaves` (#nodes, leaves of the unpruned axis), else of the ends. -1 if
+// there is no candidate.
+int choose_root(const MedialGraph& g, const std::vector<bool>& candidates,
+                const std::vector<bool>& leaves, const std::vector<int>& free_corners,
+                const Vec2& hint);
+
 }  // namespace hair25d::skeleton::detail

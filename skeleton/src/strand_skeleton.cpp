@@ -203,12 +203,25 @@ Result build_skeleton(const Input& input, const Options& options) {
     tip_nodes.push_back(node);
     tip_points.push_back(samples[c]);
   }
+  const double separation =
+      options.min_tip_separation > 0 ? options.min_tip_separation : 2.0 * options.corner_arm;
+  // Free corners: no covered outline within a tip separation along the
+  // outline (the corners' arms and as much again).
+  std::vector<int> free_corner_nodes;
+  for (std::size_t k = 0; k < corners.size(); ++k)
+    if (!detail::near_covered(samples, covered, corners[k], separation))
+      free_corner_nodes.push_back(tip_nodes[k]);
 
-  // Root: the axis end nearest to the hint; without one, the end farthest
-  // along the axis from the sharpest tip. Ends of spurs (a notch or bump of
-  // the outline) are not candidates: wikipe-tan's right tail lock took its
-  // root at a notch half-way down and its whole completed upper part was
-  // left without skeleton.
+  // Root first, then tips (paper §6: tips are the sharp corners "locally
+  // above" their neighbours; the root is the end by the head or under the
+  // occluder). The root is the axis end nearest to the hint, sharp corners
+  // included: a strand's head end is often a sharp visible corner too (a
+  // bang's top where its lines meet), and when corners could not be roots
+  // such a bang took its root at its bottom tip (session 8, wikipe-tan).
+  // Without a hint, the end farthest along the axis from the sharpest tip.
+  // Ends of spurs (a notch or bump of the outline) are not candidates:
+  // wikipe-tan's right tail lock took its root at a notch half-way down and
+  // its whole completed upper part was left without skeleton.
   const detail::PrunedAxis axis = detail::prune_spurs(g, tip_nodes);
   // Where the outline touches itself the axis falls apart; the root is on
   // the largest piece (a lone triangle's node near the hint took it once).
@@ -219,18 +232,21 @@ Result build_skeleton(const Input& input, const Options& options) {
       static_cast<int>(std::max_element(piece_size.begin(), piece_size.end()) - piece_size.begin());
   std::vector<bool> candidates(n, false);
   for (int e : axis.ends) candidates[e] = piece[e] == main_piece;
-  for (int t : tip_nodes) candidates[t] = false;
-  if (std::find(candidates.begin(), candidates.end(), true) == candidates.end()) {
-    candidates = leaf;
-    for (int t : tip_nodes) candidates[t] = false;
-  }
+  if (std::find(candidates.begin(), candidates.end(), true) == candidates.end()) candidates = leaf;
   std::vector<double> dist;
   std::vector<int> parent;
   int root = -1;
   if (input.root_hint) {
-    root = nearest_node(g, *input.root_hint, &candidates);
+    root = detail::choose_root(g, candidates, leaf, free_corner_nodes, *input.root_hint);
     if (root < 0) root = nearest_node(g, *input.root_hint, nullptr);
   } else {
+    std::vector<bool> not_tip = candidates;
+    for (int t : free_corner_nodes) not_tip[t] = false;
+    if (std::find(not_tip.begin(), not_tip.end(), true) == not_tip.end()) {
+      not_tip = leaf;
+      for (int t : free_corner_nodes) not_tip[t] = false;
+    }
+    if (std::find(not_tip.begin(), not_tip.end(), true) != not_tip.end()) candidates = not_tip;
     const int from = tip_nodes.empty() ? 0 : tip_nodes.front();
     shortest_paths(g, from, &dist, &parent);
     double best = -1.0;
@@ -245,9 +261,7 @@ Result build_skeleton(const Input& input, const Options& options) {
   result.root = g.nodes[root];
   shortest_paths(g, root, &dist, &parent);
 
-  // A tip must be reachable and not the root end itself.
-  const double separation =
-      options.min_tip_separation > 0 ? options.min_tip_separation : 2.0 * options.corner_arm;
+  // Tips among the remaining ends: reachable, and not at the root end.
   std::vector<int> tips;
   for (std::size_t k = 0; k < tip_nodes.size(); ++k) {
     const int t = tip_nodes[k];
@@ -256,6 +270,7 @@ Result build_skeleton(const Input& input, const Options& options) {
     tips.push_back(t);
     result.tip_corners.push_back(tip_points[k]);
   }
+  for (int t : tips) candidates[t] = false;
 
   // Rounded tips: a visible axis end that tapers but has no sharp corner
   // (a completed tip drawn blunt, a brush stroke's round end). §6 asks for

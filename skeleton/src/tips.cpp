@@ -75,6 +75,21 @@ std::vector<int> sharp_corners(const Polyline& samples, const std::vector<bool>&
   return chosen;
 }
 
+bool near_covered(const Polyline& samples, const std::vector<bool>& covered, int i, double reach) {
+  const int n = static_cast<int>(samples.size());
+  if (covered.empty() || n == 0) return false;
+  for (int step : {-1, +1}) {
+    double walked = 0.0;
+    for (int k = 0, j = i; k < n && walked <= reach; ++k) {
+      if (covered[j]) return true;
+      const int next = ((j + step) % n + n) % n;
+      walked += (samples[next] - samples[j]).norm();
+      j = next;
+    }
+  }
+  return false;
+}
+
 }  // namespace hair25d::skeleton::detail
 
 namespace hair25d::skeleton {

@@ -15,4 +15,8 @@ namespace hair25d::skeleton::detail {
 std::vector<int> sharp_corners(const Polyline& samples, const std::vector<bool>& covered,
                                const Options& options);
 
+// Whether a covered sample lies within `reach` pixels of sample i along the
+// closed outline (either way): the corner at i then touches an occluder.
+bool near_covered(const Polyline& samples, const std::vector<bool>& covered, int i, double reach);
+
 }  // namespace hair25d::skeleton::detail
