@@ -13,6 +13,7 @@
 #include "hair25d/layering/depth_order.h"
 #include "hair25d/layering/metrics.h"
 #include "hair25d/layering/optimizer.h"
+#include "colour_line.h"
 #include "line_response.h"
 #include "neighbours.h"
 #include "outline_fill.h"
@@ -233,6 +234,25 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     }
     const double floor = std::max(6.0, 4.0 * lines.noise_sigma());
     out.line_threshold = std::max(floor, options.line_threshold_fraction * typical);
+  }
+  // A line the grey levels miss (a black outline on paint as dark as it) is
+  // looked for in colour (colour_line.h) on the boundaries under the
+  // threshold, those of at least 4 line widths (on shorter ones the
+  // cross-sections reach the lines of the junctions).
+  for (int i = 0; i < nb; ++i) {
+    const Boundary& b = bs[i];
+    BoundaryReport& rep = out.boundaries[i];
+    if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+    if (rep.line_contrast >= out.line_threshold || rep.length < 4.0 * out.line_width) continue;
+    Polyline curve = b.points;
+    if (b.closed()) curve.push_back(curve.front());
+    const detail::BoundaryLine seen = detail::colour_line(image, out.line_width, curve,
+                                                          1.5 * out.line_width, out.labels,
+                                                          b.left, b.right);
+    if (seen.contrast >= out.line_threshold) {
+      rep.line_contrast = seen.contrast;
+      rep.line_contrast_low = seen.contrast_low;
+    }
   }
   for (int i = 0; i < nb; ++i) {
     const Boundary& b = bs[i];

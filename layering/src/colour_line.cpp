@@ -1,0 +1,129 @@
+#include "colour_line.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace hair25d::layering::detail {
+namespace {
+
+using Rgb = std::array<double, 3>;
+
+// Bilinear colour of `image` at (x, y) in pixel-corner coordinates (pixel
+// (i, j) covers [i, i + 1) × [j, j + 1), its centre at i + 0.5), clamped to
+// the image; translucent pixels blended over white paper.
+Rgb colour_at(const Image& image, double x, double y) {
+  const double fx = x - 0.5, fy = y - 0.5;
+  const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+  const double tx = fx - x0, ty = fy - y0;
+  Rgb out{0.0, 0.0, 0.0};
+  for (int dy = 0; dy < 2; ++dy)
+    for (int dx = 0; dx < 2; ++dx) {
+      const double w = (dx ? tx : 1.0 - tx) * (dy ? ty : 1.0 - ty);
+      if (w == 0.0) continue;
+      const int xi = std::clamp(x0 + dx, 0, image.width() - 1);
+      const int yi = std::clamp(y0 + dy, 0, image.height() - 1);
+      const Rgba& p = image.at(xi, yi);
+      const double a = p.a / 255.0;
+      out[0] += w * (a * p.r + (1.0 - a) * 255.0);
+      out[1] += w * (a * p.g + (1.0 - a) * 255.0);
+      out[2] += w * (a * p.b + (1.0 - a) * 255.0);
+    }
+  return out;
+}
+
+// The colour of the pixel holding (x, y) (inside the image), over white.
+Rgb pixel_at(const Image& image, double x, double y) {
+  const Rgba& p = image.at(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
+  const double a = p.a / 255.0;
+  return {a * p.r + (1.0 - a) * 255.0, a * p.g + (1.0 - a) * 255.0, a * p.b + (1.0 - a) * 255.0};
+}
+
+double grey_of(const Rgb& c) { return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]; }
+
+// Distance from c to the segment [a, b] in RGB.
+double to_segment(const Rgb& c, const Rgb& a, const Rgb& b) {
+  double ab2 = 0.0, t = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    ab2 += (b[k] - a[k]) * (b[k] - a[k]);
+    t += (c[k] - a[k]) * (b[k] - a[k]);
+  }
+  t = ab2 > 0.0 ? std::clamp(t / ab2, 0.0, 1.0) : 0.0;
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double e = c[k] - (a[k] + t * (b[k] - a[k]));
+    d2 += e * e;
+  }
+  return std::sqrt(d2);
+}
+
+int label_at(const LabelMap& labels, double x, double y) {
+  const int xi = static_cast<int>(std::floor(x)), yi = static_cast<int>(std::floor(y));
+  if (xi < 0 || yi < 0 || xi >= labels.width() || yi >= labels.height()) return -1;
+  return labels.at(xi, yi);
+}
+
+}  // namespace
+
+BoundaryLine colour_line(const Image& image, double line_width, const Polyline& curve, double skip,
+                         const LabelMap& labels, int left, int right) {
+  BoundaryLine out;
+  if (curve.size() < 2) return out;
+  const Polyline pts = resample_polyline(curve, 1.0);
+  const int n = static_cast<int>(pts.size());
+  const double total = polyline_length(curve);
+  skip = std::min(skip, total / 3.0);
+  // The reaches of LineResponse::measure: the centre within half a line
+  // width + 1 px, paper within 3 line widths + 2 px.
+  const double half = 0.5 * line_width + 1.0;
+  const double reach = 3.0 * line_width + 2.0;
+  const int span = std::max(2, static_cast<int>(std::lround(line_width)));
+  const int stride = n > 40 ? 2 : 1;
+  std::vector<double> values;
+  double along = 0.0;
+  for (int i = 0; i < n; ++i) {
+    if (i > 0) along += (pts[i] - pts[i - 1]).norm();
+    if (i % stride != 0 || along < skip || along > total - skip) continue;
+    const Vec2 t = pts[std::min(n - 1, i + span)] - pts[std::max(0, i - span)];
+    if (t.squaredNorm() == 0.0) continue;
+    const Vec2 to_left = Vec2(t.y(), -t.x()).normalized();
+    const Vec2 p = pts[i];
+    // Paper on each side as the grey measurement takes it: the brightest
+    // point within reach along the normal that lies in that side's region
+    // (not a fixed distance: on a thin strand that lands on its next line),
+    // the pixel itself, as its label is read (a bilinear read there mixes in
+    // the rim of the other side's paint).
+    Rgb paint_left{}, paint_right{};
+    double grey_left = -1.0, grey_right = -1.0;
+    for (double s = 1.0; s <= reach + 1e-9; s += 1.0) {
+      const Vec2 l = p + s * to_left, r = p - s * to_left;
+      if (label_at(labels, l.x(), l.y()) == left) {
+        const Rgb c = pixel_at(image, l.x(), l.y());
+        if (grey_of(c) > grey_left) grey_left = grey_of(c), paint_left = c;
+      }
+      if (label_at(labels, r.x(), r.y()) == right) {
+        const Rgb c = pixel_at(image, r.x(), r.y());
+        if (grey_of(c) > grey_right) grey_right = grey_of(c), paint_right = c;
+      }
+    }
+    const bool found_left = grey_left >= 0.0, found_right = grey_right >= 0.0;
+    if (!found_left || !found_right) continue;
+    double farthest = 0.0;
+    for (double s = -half; s <= half + 1e-9; s += 0.5) {
+      const Vec2 q = p + s * to_left;
+      farthest =
+          std::max(farthest, to_segment(colour_at(image, q.x(), q.y()), paint_left, paint_right));
+    }
+    values.push_back(farthest / std::sqrt(3.0));
+  }
+  if (values.empty()) return out;
+  std::vector<double> sorted = values;
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t m = sorted.size();
+  out.contrast = m % 2 ? sorted[m / 2] : 0.5 * (sorted[m / 2 - 1] + sorted[m / 2]);
+  out.contrast_low = sorted[m / 4];
+  return out;
+}
+
+}  // namespace hair25d::layering::detail

@@ -1,0 +1,123 @@
+// A drawn line seen in colour where its grey level equals the paint's
+// (layering/src/colour_line.h, paper §4.1): a black outline between a purple
+// strand and a darker purple one is a line, a tone step or a blend of the two
+// paints is not, and the layering calls such a boundary occluding.
+#include "colour_line.h"
+
+#include <gtest/gtest.h>
+
+#include "hair25d/layering/boundary_graph.h"
+#include "hair25d/layering/layering.h"
+#include "line_response.h"
+
+namespace hair25d::layering {
+namespace {
+
+constexpr Rgba kPurple{60, 24, 95, 255};  // grey level 44
+constexpr Rgba kDark{33, 13, 53, 255};    // grey level 23.5
+constexpr Rgba kInk{23, 23, 23, 255};     // grey level 23: the dark paint's
+
+// 61 × 43: region 1 (purple) left of x = 30, region 2 (dark purple) right of
+// it; with `line`, pixels 29 and 30 are ink, else the paints meet (with
+// `blend`, pixel 30 is half of each, as anti-aliasing or a JPEG's chroma
+// makes a step).
+struct TwoPaints {
+  Image image{61, 43};
+  LabelMap labels{61, 43};
+  TwoPaints(bool line, bool blend) {
+    for (int y = 0; y < 43; ++y)
+      for (int x = 0; x < 61; ++x) {
+        image.at(x, y) = x < 30 ? kPurple : kDark;
+        labels.at(x, y) = x < 30 ? 1 : 2;
+        if (line && (x == 29 || x == 30)) image.at(x, y) = kInk;
+        if (!line && blend && x == 30)
+          image.at(x, y) = Rgba{(60 + 33) / 2, (24 + 13) / 2, (95 + 53) / 2, 255};
+      }
+  }
+  const Polyline boundary() const {
+    for (const Boundary& b : build_boundary_graph(labels).boundaries)
+      if ((b.left == 1 && b.right == 2) || (b.left == 2 && b.right == 1)) return b.points;
+    return {};
+  }
+  detail::BoundaryLine colour(int left, int right) const {
+    return detail::colour_line(image, 2.0, boundary(), 3.0, labels, left, right);
+  }
+};
+
+int left_of(const TwoPaints& d) {
+  for (const Boundary& b : build_boundary_graph(d.labels).boundaries)
+    if ((b.left == 1 && b.right == 2) || (b.left == 2 && b.right == 1)) return b.left;
+  return 0;
+}
+
+TEST(ColourLine, InkOnPaintAsDarkAsItIsALine) {
+  const TwoPaints d(true, false);
+  const int l = left_of(d);
+  ASSERT_NE(l, 0);
+  // The grey levels see almost nothing: 44 − 23 on one side, 0.5 on the other.
+  const detail::LineResponse grey(d.image, 2.0, 0, 0, 61, 43);
+  EXPECT_LT(grey.measure(d.boundary(), 3.0, d.labels, l, 3 - l).contrast, 1.0);
+  // In colour the ink lies off the segment between the paints: its distance
+  // to the dark paint (10, −10, 30)/√3 ≈ 19.1.
+  const detail::BoundaryLine c = d.colour(l, 3 - l);
+  EXPECT_NEAR(c.contrast, std::sqrt(1100.0 / 3.0), 0.5);
+  EXPECT_NEAR(c.contrast_low, c.contrast, 0.5);
+  EXPECT_EQ(c.colour_difference, 0.0);
+  // Walked the other way (sides exchanged): the same.
+  const Polyline back(d.boundary().rbegin(), d.boundary().rend());
+  EXPECT_NEAR(detail::colour_line(d.image, 2.0, back, 3.0, d.labels, 3 - l, l).contrast, c.contrast,
+              1e-9);
+}
+
+TEST(ColourLine, ToneStepAndBlendAreNoLine) {
+  for (const bool blend : {false, true}) {
+    const TwoPaints d(false, blend);
+    const int l = left_of(d);
+    ASSERT_NE(l, 0);
+    EXPECT_LT(d.colour(l, 3 - l).contrast, 0.5) << "blend " << blend;
+  }
+}
+
+TEST(ColourLine, NoPaperOnASideGivesZero) {
+  const TwoPaints d(true, false);
+  const int l = left_of(d);
+  // Region 3 is nowhere: no sample has paper on that side.
+  EXPECT_EQ(detail::colour_line(d.image, 2.0, d.boundary(), 3.0, d.labels, l, 3).contrast, 0.0);
+  EXPECT_EQ(detail::colour_line(d.image, 2.0, Polyline{}, 3.0, d.labels, l, 3 - l).contrast, 0.0);
+}
+
+// The whole layering: three strands of dark paints under ink of their own
+// grey level, on a backdrop as dark, so the grey levels find no line
+// anywhere (the threshold is its floor). Before colour_line, every boundary
+// was non-occluding and every pair "equal".
+TEST(ColourLine, LayeringCallsTheInkedBoundaryOccluding) {
+  const int w = 90, h = 61;
+  Image image(w, h, kDark);
+  LabelMap labels(w, h, 0);
+  auto strand = [&](int x0, int x1, int y0, int y1, int id, Rgba paint) {
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const bool edge = x < x0 + 2 || x >= x1 - 2 || y < y0 + 2 || y >= y1 - 2;
+        image.at(x, y) = edge ? kInk : paint;
+        labels.at(x, y) = edge ? 0 : id;
+      }
+  };
+  strand(8, 50, 6, 55, 1, kPurple);
+  strand(48, 82, 6, 55, 2, kDark);
+  strand(30, 70, 20, 40, 3, Rgba{52, 20, 80, 255});
+  const Result r = layer_regions(image, labels);
+  int inked = 0;
+  for (const BoundaryReport& b : r.boundaries) {
+    if (b.left <= 0 || b.right <= 0) continue;
+    ++inked;
+    EXPECT_TRUE(b.occluding) << b.left << "|" << b.right << " contrast " << b.line_contrast
+                             << " threshold " << r.line_threshold;
+    EXPECT_GE(b.line_contrast, r.line_threshold);
+  }
+  EXPECT_GE(inked, 3);
+  for (const RegionRelation& rel : r.relations)
+    EXPECT_NE(rel.relation, Relation::kEqual) << rel.a << "|" << rel.b;
+}
+
+}  // namespace
+}  // namespace hair25d::layering
