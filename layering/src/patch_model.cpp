@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -252,12 +253,23 @@ int row_begin(int r) {
              : kPatchLabelInputs + (r - kPatchScales * kPatchCells) * kPatchCells;
 }
 
+// The bits of the non-zero values among the n ≤ 32 floats at `x` (NaN
+// counts as non-zero, −0 as zero, as `x == 0` reads them).
+__attribute__((target_clones("avx2", "default"))) std::uint32_t non_zero_bits(const float* x,
+                                                                              int n) {
+  std::uint32_t bits = 0;
+  for (int i = 0; i < n; ++i) bits |= static_cast<std::uint32_t>(!(x[i] == 0)) << i;
+  return bits;
+}
+
 void non_zero_inputs(const Patch& patch, NonZeroInputs& out) {
   out.n = 0;
   for (int r = 0; r < kPatchRows; ++r) {
     out.row_start[r] = out.n;
-    for (int k = row_begin(r); k < row_begin(r + 1); ++k) {
-      if (patch[k] == 0) continue;
+    const int k0 = row_begin(r);
+    for (std::uint32_t bits = non_zero_bits(patch.data() + k0, row_begin(r + 1) - k0); bits != 0;
+         bits &= bits - 1) {
+      const int k = k0 + std::countr_zero(bits);
       out.k[out.n] = static_cast<std::uint16_t>(k);
       out.x[out.n++] = patch[k];
     }
@@ -284,18 +296,28 @@ void swapped_inputs(const NonZeroInputs& in, NonZeroInputs& out) {
   out.row_start[kPatchRows] = out.n;
 }
 
-// patch_net on the non-zero inputs below `inputs`: the same sums in the
-// same order, without scanning the zeros.
-__attribute__((target_clones("avx2", "default"))) double sparse_net(const PatchNet& net,
-                                                                    const NonZeroInputs& in,
-                                                                    int inputs) {
-  std::array<float, kPatchHidden> sum = net.b1;
-  for (int e = 0; e < in.n && in.k[e] < inputs; ++e) {
+// The hidden sums of two networks on the same non-zero inputs, the first
+// reading those below `first_inputs`: each the same sums in the same order
+// as patch_net's, without scanning the zeros.
+__attribute__((target_clones("avx2", "default"))) void sparse_sums(
+    const PatchNet& first, int first_inputs, const PatchNet& second, const NonZeroInputs& in,
+    std::array<float, kPatchHidden>& first_sum, std::array<float, kPatchHidden>& second_sum) {
+  std::array<float, kPatchHidden> s1 = first.b1, s2 = second.b1;
+  int e = 0;
+  for (; e < in.n && in.k[e] < first_inputs; ++e) {
     const float x = in.x[e];
-    const std::array<float, kPatchHidden>& w = net.w1[in.k[e]];
-    for (int h = 0; h < kPatchHidden; ++h) sum[h] += w[h] * x;
+    const std::array<float, kPatchHidden>& w1 = first.w1[in.k[e]];
+    const std::array<float, kPatchHidden>& w2 = second.w1[in.k[e]];
+    for (int h = 0; h < kPatchHidden; ++h) s1[h] += w1[h] * x;
+    for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
   }
-  return net_output(net, sum);
+  for (; e < in.n; ++e) {
+    const float x = in.x[e];
+    const std::array<float, kPatchHidden>& w2 = second.w1[in.k[e]];
+    for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
+  }
+  first_sum = s1;
+  second_sum = s2;
 }
 
 }  // namespace
@@ -336,12 +358,15 @@ int patch_inputs_used(const PatchNet& net) {
 PatchScores patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
                          const Patch& patch) {
   // The zeros are found once and the swapped patch's inputs taken from the
-  // patch's: four passes over the few non-zero inputs.
+  // patch's: two passes over the non-zero inputs, each for both networks.
   NonZeroInputs in, other;
   non_zero_inputs(patch, in);
   swapped_inputs(in, other);
-  return {sparse_net(order, in, order_inputs) - sparse_net(order, other, order_inputs),
-          sparse_net(same, in, kPatchInputs) + sparse_net(same, other, kPatchInputs)};
+  std::array<float, kPatchHidden> order_in, same_in, order_other, same_other;
+  sparse_sums(order, order_inputs, same, in, order_in, same_in);
+  sparse_sums(order, order_inputs, same, other, order_other, same_other);
+  return {net_output(order, order_in) - net_output(order, order_other),
+          net_output(same, same_in) + net_output(same, same_other)};
 }
 
 std::vector<Patch> boundary_patches(const LabelMap& labels, const PatchImage& drawing,
