@@ -28,9 +28,9 @@ constexpr int kSamples = 2 * kPatchCells;
 // with `pixels`, writes each sample's grey level to `grey` (grey_at's
 // value). Written for the vectoriser: the two clones do the same integer
 // and float operations lane by lane.
-__attribute__((target_clones("avx2", "default"))) void sample_row(
-    const int* labels, const Rgba* pixels, int w, const double* ax, const double* ay, double bx,
-    double by, int a, int b, int* a_minus_b, int* other, float* grey) {
+__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
+sample_row(const int* labels, const Rgba* pixels, int w, const double* ax, const double* ay,
+           double bx, double by, int a, int b, int* a_minus_b, int* other, float* grey) {
   std::array<int, kSamples> at, l;
   for (int i = 0; i < kSamples; ++i)
     at[i] = static_cast<int>(ay[i] + by) * w + static_cast<int>(ax[i] + bx);
@@ -299,9 +299,10 @@ void swapped_inputs(const NonZeroInputs& in, NonZeroInputs& out) {
 // The hidden sums of two networks on the same non-zero inputs, the first
 // reading those below `first_inputs`: each the same sums in the same order
 // as patch_net's, without scanning the zeros.
-__attribute__((target_clones("avx2", "default"))) void sparse_sums(
-    const PatchNet& first, int first_inputs, const PatchNet& second, const NonZeroInputs& in,
-    std::array<float, kPatchHidden>& first_sum, std::array<float, kPatchHidden>& second_sum) {
+__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
+sparse_sums(const PatchNet& first, int first_inputs, const PatchNet& second,
+            const NonZeroInputs& in, std::array<float, kPatchHidden>& first_sum,
+            std::array<float, kPatchHidden>& second_sum) {
   std::array<float, kPatchHidden> s1 = first.b1, s2 = second.b1;
   int e = 0;
   for (; e < in.n && in.k[e] < first_inputs; ++e) {
