@@ -41,8 +41,14 @@ std::vector<Polyline> simplify_loops(const std::vector<Polyline>& loops, double 
     // The cost of dropping a vertex is the largest squared distance of the
     // original vertices it stood for to the new edge; the simplifier refuses
     // a removal whose new edge would cross another constraint.
-    PS::simplify(ct, PS::Squared_distance_cost(),
-                 PS::Stop_above_cost_threshold(tolerance * tolerance));
+    // One loop at a time, in the caller's order: simplifying all constraints
+    // at once walks them in the order of their addresses in memory, and equal
+    // costs (common on pixel outlines) are then taken in that order, so the
+    // same outline gave a different mesh from run to run.
+    for (const Ct::Constraint_id& id : ids) {
+      PS::simplify(ct, id, PS::Squared_distance_cost(),
+                   PS::Stop_above_cost_threshold(tolerance * tolerance));
+    }
     for (const Ct::Constraint_id& id : ids) {
       Polyline loop;
       for (auto v = ct.vertices_in_constraint_begin(id); v != ct.vertices_in_constraint_end(id);
