@@ -518,12 +518,64 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
         if (thick_feature || !reach.at<std::uint8_t>(y, x))
           beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
       }
+  // A lock's point lying on the face beside an eye: its wedge touches the
+  // iris, so the dark piece holds a pixel of another colour and stayed whole
+  // (generated seed 50's third wedge, left of its left eye). The wedge
+  // itself — the piece's pixels of the outline's or the hair's colour,
+  // joined through such pixels, all within the wedge reach, no thick
+  // feature — goes; the iris stays with the rest of the piece.
+  // Smaller bits are blends along a face line drawn in the outline's
+  // colour (sylvie's chin), not a point's two converging lines.
+  constexpr int kMinWedge = 20;
+  cv::Mat wedge_parts;
+  std::vector<std::uint8_t> wedge_goes;
+  if (!head.mask.empty()) {
+    const cv::Mat own_colour = dark & (outline_coloured | hair_coloured) & (head.mask != 0);
+    const int parts = cv::connectedComponents(own_colour, wedge_parts, 8, CV_32S);
+    wedge_goes.assign(static_cast<std::size_t>(parts), 1);
+    wedge_goes[0] = 0;
+    std::vector<std::uint8_t> fill(static_cast<std::size_t>(parts), 0);
+    std::vector<int> size(static_cast<std::size_t>(parts), 0), line(size);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const int k = wedge_parts.at<int>(y, x);
+        if (k == 0) continue;
+        ++size[static_cast<std::size_t>(k)];
+        line[static_cast<std::size_t>(k)] += outline_coloured.at<std::uint8_t>(y, x) != 0;
+        if (hair_coloured.at<std::uint8_t>(y, x)) fill[static_cast<std::size_t>(k)] = 1;
+        if (!mixed[static_cast<std::size_t>(pieces.at<int>(y, x))] ||
+            !near_wedge.at<std::uint8_t>(y, x) || features.at<std::uint8_t>(y, x))
+          wedge_goes[static_cast<std::size_t>(k)] = 0;
+      }
+    // Between a point's converging outlines lies the lock's own fill: a
+    // piece of the outline's colour with none of it is a face line of that
+    // colour (wikipe-tan's black upper lashes under her bangs), not a wedge.
+    // And a wedge is mostly the outline's colour: a dark body mostly of the
+    // hair's (sylvie's hair beside her chin) keeps the old rules.
+    for (std::size_t k = 0; k < fill.size(); ++k)
+      wedge_goes[k] &= fill[k] && 2 * line[k] >= size[k] && size[k] >= kMinWedge;
+  }
   cv::Mat holes(h, w, CV_8U, cv::Scalar(0));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       holes.at<std::uint8_t>(y, x) =
           hair.at<std::uint8_t>(y, x) ||
-          (dark.at<std::uint8_t>(y, x) && !beyond[static_cast<std::size_t>(pieces.at<int>(y, x))]);
+          (dark.at<std::uint8_t>(y, x) &&
+           (!beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] ||
+            (!wedge_parts.empty() &&
+             wedge_goes[static_cast<std::size_t>(wedge_parts.at<int>(y, x))])));
+  if (!wedge_parts.empty()) {
+    // ... with its rim two pixels wide: its anti-aliased blends with the
+    // skin, some dark but of neither colour (grey ticks of it stayed on the
+    // face). A thick feature (the iris) keeps its pixels.
+    cv::Mat gone(h, w, CV_8U, cv::Scalar(0));
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (wedge_goes[static_cast<std::size_t>(wedge_parts.at<int>(y, x))])
+          gone.at<std::uint8_t>(y, x) = 255;
+    cv::dilate(gone, gone, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
+    holes |= gone & ~features;
+  }
   if (!features.empty()) holes &= ~features;
   take_islands(holes);
   // The head: under the hair it is skin, filled from the face first; the
