@@ -146,6 +146,15 @@ int main(int argc, char** argv) {
                "no joins of back-hair pieces through the regions above both");
   app.add_option("--min-join-coverage", options.min_join_coverage,
                  "completion::Options::min_join_coverage");
+  app.add_flag("--join-scorer", options.join_scorer.enabled,
+               "decide strand joins in the cost band by the learned scorer (join_scorer.h)");
+  app.add_option("--scorer-band-low", options.join_scorer.band_low, "JoinScorerOptions::band_low");
+  app.add_option("--scorer-band-high", options.join_scorer.band_high,
+                 "JoinScorerOptions::band_high");
+  app.add_option("--scorer-threshold", options.join_scorer.threshold,
+                 "JoinScorerOptions::threshold");
+  app.add_flag("--scorer-may-refuse", options.join_scorer.may_refuse,
+               "JoinScorerOptions::may_refuse");
   bool bound = false;
   app.add_flag("--upper-bound", bound,
                "Also count the true pairs linked through regions lying above them (what any "

@@ -68,6 +68,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   ctx.image = &image;
   ctx.original = input.regions;
   ctx.options = &options;
+  if (options.join_scorer.record) ctx.join_log = &result.join_candidates;
   ctx.labels =
       assign_outline_pixels(image, *input.regions, options.outline_reach, options.dark_luma);
   report(progress, "completion", 0.05, "regions");

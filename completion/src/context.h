@@ -48,6 +48,8 @@ struct Context {
   std::map<int, RegionInfo> regions;
   Vec2 head{0, 0};
   const Options* options = nullptr;
+  // Strand-join candidates are recorded here when Options::join_scorer.record.
+  std::vector<JoinCandidate>* join_log = nullptr;
 
   int label(int x, int y) const { return labels.contains(x, y) ? labels.at(x, y) : 0; }
   int label(const Vec2& p) const {
@@ -83,6 +85,7 @@ struct Join {
   // lying over it): bands under the occluder instead of one patch.
   std::vector<Polyline> bands;
   bool behind_face = false;  // the patch also counts over the face (both pieces back hair)
+  int record = -1;           // index into Context::join_log, or −1
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
 // records) or refuses joining the strands of regions a and b. `face` (CV_8U,

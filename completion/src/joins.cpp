@@ -1,12 +1,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <set>
 
 #include "bank_crossings.h"
 #include "context.h"
 #include "hair25d/completion/bezier.h"
+#include "join_features.h"
 #include "raster.h"
 
 namespace hair25d::completion::detail {
@@ -99,6 +102,50 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
   return total > 0 ? static_cast<double>(under) / total : 1.0;
 }
 
+// The learned scorer decides the strand joins whose hand cost lies in its
+// band (join_scorer.h); every strand candidate is recorded when asked.
+void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
+                      const std::set<int>& front, const std::map<int, int>& edge_count,
+                      const std::vector<std::optional<JoinTerms>>& terms_of,
+                      std::vector<Join>* candidates) {
+  const Options& o = *ctx.options;
+  const JoinScorerOptions& s = o.join_scorer;
+  std::vector<int> which;
+  std::vector<double> costs;
+  std::vector<std::pair<int, int>> ends;
+  std::vector<JoinFeatures> features;
+  for (std::size_t i = 0; i < candidates->size(); ++i) {
+    if (!terms_of[i]) continue;
+    const Join& j = (*candidates)[i];
+    which.push_back(static_cast<int>(i));
+    costs.push_back(j.cost);
+    ends.emplace_back(j.edge_a, j.edge_b);
+    features.push_back(
+        join_features(ctx, edges[j.edge_a], edges[j.edge_b], *terms_of[i], front, edge_count));
+  }
+  add_rival_features(costs, ends, s.band_high, &features);
+  const JoinScorerNet& net = default_join_scorer();
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    Join& j = (*candidates)[which[k]];
+    double p = -1.0;
+    if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
+      p = join_probability(net, features[k]);
+      const double learned = o.max_join_cost + (s.threshold - p) * (s.band_high - s.band_low);
+      j.cost = s.may_refuse ? learned : std::min(j.cost, learned);
+    }
+    if (ctx.join_log == nullptr) continue;
+    JoinCandidate c;
+    c.region_a = edges[j.edge_a].region;
+    c.region_b = edges[j.edge_b].region;
+    c.hand_cost = costs[k];
+    c.cost = j.cost;
+    c.probability = p;
+    c.features = features[k];
+    j.record = static_cast<int>(ctx.join_log->size());
+    ctx.join_log->push_back(c);
+  }
+}
+
 }  // namespace
 
 std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
@@ -111,10 +158,18 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   for (const auto& [id, ups] : ctx.above) front.insert(ups.begin(), ups.end());
   const cv::Mat no_face;
   const double max_angle = o.max_join_angle_deg * M_PI / 180.0;
+  RegionTones tones(ctx);
   std::vector<BankCrossings> crossings(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i)
     if (edges[i].atoms.size() == 1) crossings[i] = cross_occluders(ctx, edges[i]);
+  // The learned scorer (join_scorer.h) sees candidates up to its band's top.
+  const JoinScorerOptions& scorer = o.join_scorer;
+  const bool scoring = scorer.enabled || ctx.join_log != nullptr;
+  const double limit = scoring ? std::max(o.max_join_cost, scorer.band_high) : o.max_join_cost;
+  std::map<int, int> edge_count;
+  for (const Edge& e : edges) edge_count[e.region] += e.atoms.size() == 1;
   std::vector<Join> candidates;
+  std::vector<std::optional<JoinTerms>> terms_of;
   for (std::size_t i = 0; i < edges.size(); ++i)
     for (std::size_t j = i + 1; j < edges.size(); ++j) {
       const Edge& a = edges[i];
@@ -143,6 +198,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       join.edge_a = static_cast<int>(i);
       join.edge_b = static_cast<int>(j);
       double cost = std::numeric_limits<double>::infinity();
+      std::optional<JoinTerms> terms;
       if (strand_like) {
         // The hidden part keeps a strand's width: half-way along the joins its
         // width lies near the widths at the two cuts (criterion 3 of §5.1 seen
@@ -169,7 +225,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         // or tone under the windows explains a step up to its own spread.
         cost +=
             kColourStepWeight * std::max(0.0, colour - (a.colour_spread + b.colour_spread)) / 30.0;
-        if (cost <= o.max_join_cost) {  // before the costly coverage raster
+        // Screentone: the colour says nothing there, the dots' tone does.
+        cost += tone_join_cost(tones, a.region, b.region);
+        if (cost <= limit) {  // before the costly coverage raster
           join.patch = join_patch(a, b);
           int hidden = 0;
           join.behind_face = !face.empty() && !front.count(a.region) && !front.count(b.region);
@@ -177,6 +235,19 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                                         join.behind_face ? face : no_face, &hidden);
           cost = cover < o.min_join_coverage ? std::numeric_limits<double>::infinity()
                                              : cost + 3.0 * (1.0 - cover);
+          if (scoring && std::isfinite(cost))
+            terms = JoinTerms{mean_angle / max_angle,
+                              worst / max_angle,
+                              colour / o.max_colour_distance,
+                              std::max(0.0, colour - (a.colour_spread + b.colour_spread)) / 30.0,
+                              1.0 - narrow / wide,
+                              std::min(gap / wide, 3.0),
+                              bulge,
+                              common,
+                              cover,
+                              cost,
+                              gap,
+                              wide};
         }
       }
       // Across the banks of one occluder the rays themselves are the hidden
@@ -188,12 +259,16 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         join.patch.clear();
         join.behind_face = false;
         join.bands = std::move(bank.bands);
+        terms.reset();
       }
-      if (cost > o.max_join_cost) continue;
+      if (cost > limit) continue;
       join.cost = cost;
       candidates.push_back(std::move(join));
+      terms_of.push_back(terms);
     }
+  if (scoring) score_candidates(ctx, edges, front, edge_count, terms_of, &candidates);
   // Greedy one-to-one: cheapest first, every edge joined at most once.
+  std::erase_if(candidates, [&](const Join& x) { return x.cost > o.max_join_cost; });
   std::sort(candidates.begin(), candidates.end(),
             [](const Join& x, const Join& y) { return x.cost < y.cost; });
   // Edges may overlap (an atom and a merged edge holding it): an atom joins once.
@@ -205,6 +280,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       for (int atom : edges[e].atoms) free = free && !used.count(atom);
     if (!free || !try_join(edges[j.edge_a].region, edges[j.edge_b].region)) continue;
     for (int e : {j.edge_a, j.edge_b}) used.insert(edges[e].atoms.begin(), edges[e].atoms.end());
+    if (j.record >= 0) (*ctx.join_log)[j.record].chosen = true;
     chosen.push_back(std::move(j));
   }
   return chosen;

@@ -39,6 +39,7 @@ bool Options::is_valid(std::string* error) const {
   if (!contour.is_valid(&inner)) return fail("contour: " + inner);
   if (!inpaint.is_valid(&inner)) return fail("inpaint: " + inner);
   if (!background.is_valid(&inner)) return fail("background: " + inner);
+  if (!join_scorer.is_valid(&inner)) return fail("join_scorer: " + inner);
   return true;
 }
 

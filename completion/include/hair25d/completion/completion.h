@@ -11,6 +11,7 @@
 #include "hair25d/completion/active_contour.h"
 #include "hair25d/completion/background.h"
 #include "hair25d/completion/inpaint.h"
+#include "hair25d/completion/join_scorer.h"
 #include "hair25d/core/geometry.h"
 #include "hair25d/core/hair_model.h"
 #include "hair25d/core/image.h"
@@ -36,6 +37,7 @@ struct Options {
   double min_join_coverage = 0.85;    // share of the join patch under occluders
   double min_width_ratio = 0.2;       // narrower / wider occluding edge
   double max_join_cost = 2.4;
+  JoinScorerOptions join_scorer;  // a learned scorer for ambiguous strand joins
   // Back-hair pieces on opposite sides of the face joined across it (the
   // face hides them as a strand would; it is no region).
   bool face_joins = true;
@@ -105,6 +107,7 @@ struct Result {
   // counts one); with the joins, regions - strands = equal_merges + joins.
   int equal_merges = 0;
   InpaintResult strand_inpaint, background_inpaint;
+  std::vector<JoinCandidate> join_candidates;  // with Options::join_scorer.record
   std::string summary;
 };
 

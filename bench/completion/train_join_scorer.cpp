@@ -1,0 +1,254 @@
+// Trains the learned join scorer (completion/include/hair25d/completion/
+// join_scorer.h, paper §5.1) and measures it against the hand cost.
+//   collect: runs completion on generated drawings (or annotated cases) with
+//            the candidates recorded, labels each by the ground truth
+//            (one strand or two) and appends them to a CSV;
+//   train:   reads such CSVs, trains on the rows of the training files in
+//            the cost window, prints how the scorer and the hand cost
+//            separate right from wrong in the band on every file, and writes
+//            the weights as join_scorer_weights.cpp.
+// Training seeds must be disjoint from the evaluation seeds (101–116,
+// 201–216) and the annotated cases; docs/completion.md gives the commands.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../../tests/completion/annotated_eval.h"
+#include "hair25d/completion/completion.h"
+#include "hair25d/completion/join_scorer.h"
+#include "hair25d/core/annotation.h"
+#include "hair25d/generator/generator.h"
+
+namespace {
+
+using namespace hair25d;
+using completion::JoinFeatures;
+using completion::kJoinFeatures;
+
+struct Row {
+  std::string set;
+  int label = 0;
+  double hand_cost = 0;
+  JoinFeatures f{};
+};
+
+void collect_case(const AnnotatedCase& c, const std::string& set, std::FILE* out, int* rows) {
+  completion::Options o;
+  o.inpaint_strands = false;
+  o.inpaint_background = false;
+  o.join_scorer.record = true;
+  const completion::Result r =
+      completion::complete_strands(completion::test::input_from_case(c), o);
+  std::map<int, int> truth;
+  for (const AnnotatedRegion& reg : c.region_list) truth[reg.id] = reg.strand;
+  for (const completion::JoinCandidate& j : r.join_candidates) {
+    if (!truth.count(j.region_a) || !truth.count(j.region_b)) continue;
+    std::fprintf(out, "%s,%s,%d,%d,%d,%.6f,%d", set.c_str(), c.name.c_str(), j.region_a, j.region_b,
+                 truth[j.region_a] == truth[j.region_b] ? 1 : 0, j.hand_cost, j.chosen ? 1 : 0);
+    for (float v : j.features) std::fprintf(out, ",%.9g", static_cast<double>(v));
+    std::fprintf(out, "\n");
+    ++*rows;
+  }
+}
+
+std::vector<Row> read_rows(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::vector<Row> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    if (cells.size() != 7 + kJoinFeatures) throw std::runtime_error("bad row in " + path);
+    Row r;
+    r.set = cells[0];
+    r.label = std::stoi(cells[4]);
+    r.hand_cost = std::stod(cells[5]);
+    for (int k = 0; k < kJoinFeatures; ++k) r.f[k] = std::stof(cells[7 + k]);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+// Area under the ROC curve of `score` (higher = one strand), ties half.
+double auc(const std::vector<double>& score, const std::vector<int>& label) {
+  std::vector<int> idx(score.size());
+  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
+  std::sort(idx.begin(), idx.end(), [&](int a, int b) { return score[a] < score[b]; });
+  double rank_sum = 0, pos = 0;
+  for (std::size_t i = 0; i < idx.size();) {
+    std::size_t j = i;
+    while (j < idx.size() && score[idx[j]] == score[idx[i]]) ++j;
+    const double rank = 0.5 * (i + j - 1) + 1;
+    for (std::size_t k = i; k < j; ++k)
+      if (label[idx[k]]) rank_sum += rank, ++pos;
+    i = j;
+  }
+  const double neg = static_cast<double>(score.size()) - pos;
+  if (pos == 0 || neg == 0) return 0.5;
+  return (rank_sum - pos * (pos + 1) / 2) / (pos * neg);
+}
+
+void report(const std::string& name, const std::vector<Row>& rows,
+            const completion::JoinScorerNet& net, double low, double high, double limit,
+            double threshold) {
+  std::vector<double> hand, learned;
+  std::vector<int> label;
+  int hand_tp = 0, hand_fp = 0, net_tp = 0, net_fp = 0, pos = 0;
+  for (const Row& r : rows) {
+    if (r.hand_cost < low || r.hand_cost > high) continue;
+    const double p = completion::join_probability(net, r.f);
+    hand.push_back(-r.hand_cost);
+    learned.push_back(p);
+    label.push_back(r.label);
+    pos += r.label;
+    const bool by_hand = r.hand_cost <= limit, by_net = p >= threshold;
+    hand_tp += by_hand && r.label, hand_fp += by_hand && !r.label;
+    net_tp += by_net && r.label, net_fp += by_net && !r.label;
+  }
+  std::printf(
+      "%s: band [%.2f, %.2f] %zu candidates (%d one strand): AUC hand cost %.3f, scorer %.3f; "
+      "accepted right / wrong: cost <= %.2f %d / %d, p >= %.2f %d / %d\n",
+      name.c_str(), low, high, label.size(), pos, auc(hand, label), auc(learned, label), limit,
+      hand_tp, hand_fp, threshold, net_tp, net_fp);
+  // Above the limit, accepted by the scorer (rescued); below it, refused (vetoed).
+  for (double t : {0.5, 0.7, 0.8, 0.9}) {
+    int rescued[2] = {0, 0}, vetoed[2] = {0, 0};
+    for (std::size_t i = 0; i < label.size(); ++i) {
+      const bool by_hand = -hand[i] <= limit, by_net = learned[i] >= t;
+      if (!by_hand && by_net) ++rescued[label[i]];
+      if (by_hand && !by_net) ++vetoed[label[i]];
+    }
+    std::printf(
+        "  p >= %.1f: rescued above the limit right / wrong %d / %d; vetoed below it %d / %d\n", t,
+        rescued[1], rescued[0], vetoed[1], vetoed[0]);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Train and measure the learned join scorer"};
+  app.require_subcommand(1);
+  auto* collect = app.add_subcommand("collect", "Append recorded candidates to a CSV");
+  std::string csv, set = "train", annotated, shadings = "all";
+  int seed = 3000, count = 8, width = 800, height = 640, strands = 20;
+  collect->add_option("--csv", csv, "CSV to append to")->required();
+  collect->add_option("--set", set, "Name of the set in the first column");
+  collect->add_option("--annotated", annotated, "Folder of annotated cases (else generated)");
+  collect->add_option("--seed", seed, "First generator seed")->check(CLI::NonNegativeNumber);
+  collect->add_option("--count", count, "Seeds")->check(CLI::Range(1, 10000));
+  collect->add_option("--width", width)->check(CLI::Range(64, 8192));
+  collect->add_option("--height", height)->check(CLI::Range(64, 8192));
+  collect->add_option("--strands", strands)->check(CLI::Range(1, 400));
+  collect->add_option("--shading", shadings, "flat, two-tone, gradient, screentone or all")
+      ->check(CLI::IsMember({"flat", "two-tone", "gradient", "screentone", "all"}));
+
+  auto* train = app.add_subcommand("train", "Train on CSVs, report, write the weights");
+  std::vector<std::string> train_csv, eval_csv;
+  std::string out;
+  double win_low = 1.0, win_high = 3.2, low = 1.4, high = 3.2, limit = 2.4, threshold = 0.5;
+  completion::JoinTrainingOptions topt;
+  train->add_option("--train", train_csv, "Training CSVs")->required();
+  train->add_option("--eval", eval_csv, "Evaluation CSVs (reported per set)");
+  train->add_option("--window-low", win_low, "Train on hand costs from");
+  train->add_option("--window-high", win_high, "... up to");
+  train->add_option("--band-low", low, "Band reported");
+  train->add_option("--band-high", high, "Band reported");
+  train->add_option("--threshold", threshold, "Probability accepted");
+  train->add_option("--epochs", topt.epochs);
+  train->add_option("--rate", topt.rate);
+  train->add_option("--decay", topt.decay);
+  train->add_option("--seed", topt.seed);
+  train->add_option("--out", out, "join_scorer_weights.cpp to write");
+  std::vector<std::string> drop;
+  train->add_option("--drop", drop, "Inputs left out (set to 0 everywhere): feature names");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    std::vector<int> dropped;
+    for (const std::string& name : drop) {
+      int k = 0;
+      while (k < kJoinFeatures && name != completion::join_feature_name(k)) ++k;
+      if (k == kJoinFeatures) throw std::runtime_error("no feature " + name);
+      dropped.push_back(k);
+    }
+    auto rows_of = [&](const std::string& path) {
+      std::vector<Row> rows = read_rows(path);
+      for (Row& r : rows)
+        for (int k : dropped) r.f[k] = 0;
+      return rows;
+    };
+    if (*collect) {
+      std::FILE* f = std::fopen(csv.c_str(), "a");
+      if (!f) throw std::runtime_error("cannot write " + csv);
+      int rows = 0;
+      if (!annotated.empty()) {
+        for (const auto& folder : find_annotated_cases(annotated))
+          collect_case(read_annotated_case(folder), set, f, &rows);
+      } else {
+        const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
+                                            generator::Shading::kGradient,
+                                            generator::Shading::kScreentone};
+        const char* names[] = {"flat", "two-tone", "gradient", "screentone"};
+        for (int k = 0; k < count; ++k)
+          for (int s = 0; s < 4; ++s) {
+            if (shadings != "all" && shadings != names[s]) continue;
+            generator::Options g;
+            g.width = width;
+            g.height = height;
+            g.strand_count = strands;
+            g.seed = static_cast<std::uint64_t>(seed + k);
+            g.shading = kinds[s];
+            AnnotatedCase c = generator::generate_case(g);
+            c.name = std::string(names[s]) + "-" + std::to_string(seed + k);
+            collect_case(c, set, f, &rows);
+          }
+      }
+      std::fclose(f);
+      std::printf("%d candidates appended to %s\n", rows, csv.c_str());
+      return 0;
+    }
+    std::vector<completion::JoinFeatures> x;
+    std::vector<int> y;
+    for (const std::string& path : train_csv)
+      for (const Row& r : rows_of(path))
+        if (r.hand_cost >= win_low && r.hand_cost <= win_high)
+          x.push_back(r.f), y.push_back(r.label);
+    std::printf("training on %zu candidates with hand cost in [%.2f, %.2f]\n", x.size(), win_low,
+                win_high);
+    const completion::JoinTrainingResult t = completion::train_join_scorer(x, y, topt);
+    std::printf("trained %d epochs, final loss %.4f\n", t.epochs, t.final_loss);
+    for (const std::string& path : train_csv)
+      report(path, rows_of(path), t.net, low, high, limit, threshold);
+    for (const std::string& path : eval_csv) {
+      std::map<std::string, std::vector<Row>> by_set;
+      for (const Row& r : rows_of(path)) by_set[r.set].push_back(r);
+      for (const auto& [name, rows] : by_set)
+        report(path + " " + name, rows, t.net, low, high, limit, threshold);
+    }
+    if (!out.empty()) {
+      std::ostringstream comment;
+      comment << "The learned join scorer's weights (join_scorer.h), trained by\n"
+              << "bench/completion/train_join_scorer train on " << x.size()
+              << " candidates (hand cost " << win_low << "-" << win_high << "), seed " << topt.seed
+              << ", " << t.epochs << " epochs, final loss " << t.final_loss << ".";
+      if (!drop.empty()) comment << "\nInputs left out:";
+      for (const std::string& name : drop) comment << " " << name;
+      std::ofstream file(out);
+      file << completion::join_scorer_source(t.net, comment.str());
+      if (!file) throw std::runtime_error("cannot write " + out);
+      std::printf("wrote %s\n", out.c_str());
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "train_join_scorer: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,94 @@
+// A learned scorer for case-1 strand-join candidates (paper §5.1): a small
+// network reading the hand cost's terms and what they leave out (colour
+// profiles across the pieces, what the join curve passes under, rivals).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hair25d::completion {
+
+// Inputs of the scorer, all symmetric in the two pieces (join_features.cpp
+// says what each is; `join_feature_name` names them).
+inline constexpr int kJoinFeatures = 32;
+inline constexpr int kJoinHidden = 12;
+using JoinFeatures = std::array<float, kJoinFeatures>;
+
+// "mean_angle", ...; throws hair25d::Error for an index out of range.
+const char* join_feature_name(int index);
+
+// One hidden layer of tanh units and a logistic output; inputs standardised
+// by `mean` and `inv_std` first.
+struct JoinScorerNet {
+  std::array<float, kJoinFeatures> mean{}, inv_std{};
+  std::array<std::array<float, kJoinHidden>, kJoinFeatures> w1{};
+  std::array<float, kJoinHidden> b1{}, w2{};
+  float b2 = 0.0f;
+};
+
+// Probability that the two pieces are one strand. Throws hair25d::Error for
+// a feature that is not finite.
+double join_probability(const JoinScorerNet& net, const JoinFeatures& features);
+
+// The weights trained by bench/completion/train_join_scorer (generated file
+// join_scorer_weights.cpp).
+const JoinScorerNet& default_join_scorer();
+
+// When and how completion uses the scorer (completion::Options::join_scorer).
+struct JoinScorerOptions {
+  // Strand-join candidates whose hand cost lies in [band_low, band_high]
+  // (where the cost does not separate right from wrong) are decided by the
+  // scorer: cost = max_join_cost + (threshold − p) × (band_high − band_low).
+  bool enabled = false;
+  double band_low = 1.4, band_high = 3.2;
+  double threshold = 0.5;
+  // Without it the scorer only lowers costs: it may accept a candidate the
+  // hand cost refuses, never refuse one it accepts.
+  bool may_refuse = false;
+  // Record every strand-join candidate with hand cost ≤ band_high in
+  // Result::join_candidates (training data; changes no join).
+  bool record = false;
+  bool is_valid(std::string* error) const;
+};
+
+// A strand-join candidate as completion saw it.
+struct JoinCandidate {
+  int region_a = 0, region_b = 0;
+  double hand_cost = 0.0;     // the hand-made cost (joins.cpp)
+  double cost = 0.0;          // the cost ranked (the scorer's when it decided)
+  double probability = -1.0;  // the scorer's, or −1 when it was not asked
+  bool chosen = false;        // made by the greedy matching
+  JoinFeatures features{};
+};
+
+struct JoinTrainingOptions {
+  int epochs = 60;
+  int batch = 64;
+  double rate = 3e-3;   // Adam's step
+  double decay = 1e-4;  // L2 on the weights (not the biases)
+  std::uint64_t seed = 1;
+  bool is_valid(std::string* error) const;
+};
+
+struct JoinTrainingResult {
+  JoinScorerNet net;
+  int epochs = 0;           // passes made (all of them: no early stop)
+  double final_loss = 0.0;  // weighted mean logistic loss of the last pass
+};
+
+// Adam on the logistic loss, classes weighted to equal total weight;
+// deterministic for one seed (one thread, a fixed shuffle). `labels` 1 =
+// one strand, 0 = two. Throws hair25d::Error for sizes that differ, fewer
+// than 2 rows of each class, labels other than 0 / 1, non-finite features
+// or invalid options.
+JoinTrainingResult train_join_scorer(const std::vector<JoinFeatures>& rows,
+                                     const std::vector<int>& labels,
+                                     const JoinTrainingOptions& options = {});
+
+// The C++ source of join_scorer_weights.cpp defining default_join_scorer()
+// as `net` (floats printed to round-trip exactly); `comment` heads the file.
+std::string join_scorer_source(const JoinScorerNet& net, const std::string& comment);
+
+}  // namespace hair25d::completion

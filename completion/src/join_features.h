@@ -1,0 +1,38 @@
+// The learned join scorer's inputs for one strand-join candidate (paper §5.1;
+// private): the hand cost's terms and what they leave out.
+#pragma once
+
+#include <map>
+#include <set>
+
+#include "context.h"
+#include "hair25d/completion/join_scorer.h"
+
+namespace hair25d::completion::detail {
+
+// The hand cost's terms of a strand join (joins.cpp), as it computed them.
+struct JoinTerms {
+  double mean_angle = 0, worst_angle = 0;  // over max_join_angle
+  double colour = 0;                       // over max_colour_distance
+  double colour_step = 0;                  // the step beyond the windows' spread, / 30 RGB
+  double width_change = 0;                 // 1 − narrow / wide
+  double gap_per_width = 0;                // min(gap / wide, 3)
+  double bulge = 0;
+  bool common_occluder = true;
+  double cover = 1;  // share of the patch under occluders
+  double hand_cost = 0;
+  double gap = 0, wide = 0;  // pixels
+};
+
+// Every input but the rivals' (indices 27–30, filled by `add_rival_features`).
+// `front`: regions above some region; `edge_count`: atoms of each region.
+JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, const JoinTerms& t,
+                           const std::set<int>& front, const std::map<int, int>& edge_count);
+
+// The rival candidates of each edge (other candidates sharing it):
+// `costs[i]` the hand cost of candidate i, `ends[i]` its two edges.
+void add_rival_features(const std::vector<double>& costs,
+                        const std::vector<std::pair<int, int>>& ends, double band_high,
+                        std::vector<JoinFeatures>* features);
+
+}  // namespace hair25d::completion::detail

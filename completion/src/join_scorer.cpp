@@ -1,0 +1,239 @@
+#include "hair25d/completion/join_scorer.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <random>
+#include <sstream>
+
+#include "hair25d/core/error.h"
+
+namespace hair25d::completion {
+namespace {
+
+constexpr const char* kNames[kJoinFeatures] = {
+    "mean_angle",       "worst_angle",    "colour",         "colour_step",
+    "width_change",     "gap_per_width",  "bulge",          "no_common_occluder",
+    "uncovered",        "hand_cost",      "log_width",      "log_gap",
+    "profile_luma",     "profile_rgb",    "profile_corr",   "profile_spread",
+    "texture",          "mid_above_both", "mid_unlabelled", "mid_above_one",
+    "mid_occluders",    "back_pieces",    "edges_min",      "edges_max",
+    "radial",           "elongation_min", "elongation_max", "rival_margin_min",
+    "rival_margin_max", "rivals_min",     "rivals_max",     "region_colour"};
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+void check_finite(const JoinFeatures& f, const char* what) {
+  for (int i = 0; i < kJoinFeatures; ++i)
+    if (!std::isfinite(f[i]))
+      throw Error(std::string(what) + ": feature " + kNames[i] + " = " + num(f[i]) +
+                  "; must be finite");
+}
+
+}  // namespace
+
+const char* join_feature_name(int index) {
+  if (index < 0 || index >= kJoinFeatures)
+    throw Error("join_feature_name: index " + std::to_string(index) + "; must be in [0, " +
+                std::to_string(kJoinFeatures) + ")");
+  return kNames[index];
+}
+
+double join_probability(const JoinScorerNet& net, const JoinFeatures& features) {
+  check_finite(features, "join_probability");
+  std::array<float, kJoinFeatures> x{};
+  for (int k = 0; k < kJoinFeatures; ++k) x[k] = (features[k] - net.mean[k]) * net.inv_std[k];
+  float out = net.b2;
+  for (int h = 0; h < kJoinHidden; ++h) {
+    float pre = net.b1[h];
+    for (int k = 0; k < kJoinFeatures; ++k) pre += x[k] * net.w1[k][h];
+    out += net.w2[h] * std::tanh(pre);
+  }
+  return 1.0 / (1.0 + std::exp(-static_cast<double>(out)));
+}
+
+bool JoinScorerOptions::is_valid(std::string* error) const {
+  auto fail = [&](const std::string& m) {
+    if (error != nullptr) *error = "JoinScorerOptions::" + m;
+    return false;
+  };
+  if (!(band_low >= 0)) return fail("band_low = " + num(band_low) + "; must be >= 0");
+  if (!(band_high > band_low))
+    return fail("band_high = " + num(band_high) + "; must be > band_low (" + num(band_low) + ")");
+  if (!(band_high < 100)) return fail("band_high = " + num(band_high) + "; must be < 100");
+  if (!(threshold > 0 && threshold < 1))
+    return fail("threshold = " + num(threshold) + "; must be in (0, 1)");
+  return true;
+}
+
+bool JoinTrainingOptions::is_valid(std::string* error) const {
+  auto fail = [&](const std::string& m) {
+    if (error != nullptr) *error = "JoinTrainingOptions::" + m;
+    return false;
+  };
+  if (epochs < 1 || epochs > 100000)
+    return fail("epochs = " + std::to_string(epochs) + "; must be in [1, 100000]");
+  if (batch < 1 || batch > 1 << 20)
+    return fail("batch = " + std::to_string(batch) + "; must be in [1, 2^20]");
+  if (!(rate > 0 && rate < 1)) return fail("rate = " + num(rate) + "; must be in (0, 1)");
+  if (!(decay >= 0 && decay < 1)) return fail("decay = " + num(decay) + "; must be in [0, 1)");
+  return true;
+}
+
+JoinTrainingResult train_join_scorer(const std::vector<JoinFeatures>& rows,
+                                     const std::vector<int>& labels,
+                                     const JoinTrainingOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw Error("train_join_scorer: " + why);
+  if (rows.size() != labels.size())
+    throw Error("train_join_scorer: " + std::to_string(rows.size()) + " rows but " +
+                std::to_string(labels.size()) + " labels; must be as many");
+  int positives = 0;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != 0 && labels[i] != 1)
+      throw Error("train_join_scorer: label " + std::to_string(i) + " = " +
+                  std::to_string(labels[i]) + "; must be 0 or 1");
+    positives += labels[i];
+    check_finite(rows[i], "train_join_scorer");
+  }
+  const int n = static_cast<int>(rows.size());
+  if (positives < 2 || n - positives < 2)
+    throw Error("train_join_scorer: " + std::to_string(positives) + " rows of one strand and " +
+                std::to_string(n - positives) + " of two; must be at least 2 of each");
+  constexpr int D = kJoinFeatures, H = kJoinHidden;
+  JoinTrainingResult result;
+  JoinScorerNet& net = result.net;
+  // Standardise (in double, so the sums do not depend on float rounding order).
+  for (int k = 0; k < D; ++k) {
+    double s = 0, s2 = 0;
+    for (const JoinFeatures& r : rows) s += r[k], s2 += static_cast<double>(r[k]) * r[k];
+    const double mean = s / n, var = std::max(0.0, s2 / n - mean * mean);
+    net.mean[k] = static_cast<float>(mean);
+    // A constant input carries nothing; zero keeps it out.
+    net.inv_std[k] = var > 1e-12 ? static_cast<float>(1.0 / std::sqrt(var)) : 0.0f;
+  }
+  Eigen::MatrixXf x(n, D);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < D; ++k) x(i, k) = (rows[i][k] - net.mean[k]) * net.inv_std[k];
+  // Both classes weigh the same in all (wrong candidates outnumber right ones).
+  std::vector<float> weight(n);
+  for (int i = 0; i < n; ++i)
+    weight[i] = labels[i] ? 0.5f * n / positives : 0.5f * n / (n - positives);
+
+  std::mt19937_64 rng(options.seed);
+  auto uniform = [&rng] { return static_cast<float>((rng() >> 11) * 0x1.0p-53 * 2.0 - 1.0); };
+  Eigen::MatrixXf w1(D, H);
+  for (int k = 0; k < D; ++k)
+    for (int h = 0; h < H; ++h) w1(k, h) = uniform() * std::sqrt(3.0f / D);
+  Eigen::RowVectorXf b1 = Eigen::RowVectorXf::Zero(H);
+  Eigen::VectorXf w2(H);
+  for (int h = 0; h < H; ++h) w2(h) = uniform() * std::sqrt(3.0f / H);
+  float b2 = 0;
+  Eigen::MatrixXf m1 = Eigen::MatrixXf::Zero(D, H), v1 = m1;
+  Eigen::RowVectorXf mb1 = Eigen::RowVectorXf::Zero(H), vb1 = mb1;
+  Eigen::VectorXf m2 = Eigen::VectorXf::Zero(H), v2 = m2;
+  float mb2 = 0, vb2 = 0;
+  long step = 0;
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  for (int epoch = 0; epoch < options.epochs; ++epoch) {
+    for (int i = n - 1; i > 0; --i) std::swap(order[i], order[rng() % (i + 1)]);
+    double loss = 0, total = 0;
+    for (int start = 0; start < n; start += options.batch) {
+      const int m = std::min(options.batch, n - start);
+      Eigen::MatrixXf bx(m, D);
+      for (int r = 0; r < m; ++r) bx.row(r) = x.row(order[start + r]);
+      Eigen::MatrixXf pre = bx * w1;
+      pre.rowwise() += b1;
+      const Eigen::MatrixXf t = pre.array().tanh().matrix();
+      const Eigen::VectorXf out = t * w2 + Eigen::VectorXf::Constant(m, b2);
+      Eigen::VectorXf dout(m);
+      float batch_weight = 0;
+      for (int r = 0; r < m; ++r) {
+        const int i = order[start + r];
+        const float p = 1.0f / (1.0f + std::exp(-out(r)));
+        const float y = static_cast<float>(labels[i]);
+        // Softplus form of the logistic loss, stable for large |out|.
+        const float z = y > 0 ? -out(r) : out(r);
+        loss += weight[i] * (z > 0 ? z + std::log1p(std::exp(-z)) : std::log1p(std::exp(z)));
+        total += weight[i];
+        batch_weight += weight[i];
+        dout(r) = weight[i] * (p - y);
+      }
+      dout /= std::max(batch_weight, 1e-12f);
+      const Eigen::VectorXf gw2 = t.transpose() * dout + static_cast<float>(options.decay) * w2;
+      const float gb2 = dout.sum();
+      const Eigen::MatrixXf dpre =
+          ((dout * w2.transpose()).array() * (1.0f - t.array().square())).matrix();
+      const Eigen::MatrixXf gw1 = bx.transpose() * dpre + static_cast<float>(options.decay) * w1;
+      const Eigen::RowVectorXf gb1 = dpre.colwise().sum();
+      ++step;
+      const float c1 = 1.0f - std::pow(0.9f, static_cast<float>(step));
+      const float c2 = 1.0f - std::pow(0.999f, static_cast<float>(step));
+      const float lr = static_cast<float>(options.rate) * std::sqrt(c2) / c1;
+      auto adam = [&](auto& p, auto& mm, auto& vv, const auto& g) {
+        mm = 0.9f * mm + 0.1f * g;
+        vv = 0.999f * vv + 0.001f * g.cwiseProduct(g);
+        p -= (lr * mm.array() / (vv.array().sqrt() + 1e-8f)).matrix();
+      };
+      adam(w1, m1, v1, gw1);
+      adam(b1, mb1, vb1, gb1);
+      adam(w2, m2, v2, gw2);
+      mb2 = 0.9f * mb2 + 0.1f * gb2;
+      vb2 = 0.999f * vb2 + 0.001f * gb2 * gb2;
+      b2 -= lr * mb2 / (std::sqrt(vb2) + 1e-8f);
+    }
+    result.final_loss = loss / std::max(total, 1e-12);
+    result.epochs = epoch + 1;
+  }
+  for (int k = 0; k < D; ++k)
+    for (int h = 0; h < H; ++h) net.w1[k][h] = w1(k, h);
+  for (int h = 0; h < H; ++h) net.b1[h] = b1(h), net.w2[h] = w2(h);
+  net.b2 = b2;
+  return result;
+}
+
+std::string join_scorer_source(const JoinScorerNet& net, const std::string& comment) {
+  std::ostringstream s;
+  // %.9g round-trips every float exactly, so the file is the net bit for bit.
+  auto f = [](float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
+    std::string out(buf);
+    // "0" or "3" would not be a float literal with the suffix.
+    if (out.find_first_of(".en") == std::string::npos) out += ".0";
+    return out + "f";
+  };
+  auto row = [&](const auto& values) {
+    std::string out = "{";
+    for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + f(values[i]);
+    return out + "}";
+  };
+  std::istringstream lines(comment);
+  for (std::string line; std::getline(lines, line);) s << "// " << line << "\n";
+  s << "// Generated file: do not edit (bench/completion/train_join_scorer writes it).\n"
+    << "#include \"hair25d/completion/join_scorer.h\"\n\n"
+    << "namespace hair25d::completion {\n\n"
+    << "const JoinScorerNet& default_join_scorer() {\n"
+    << "  static const JoinScorerNet net{\n"
+    << "      " << row(net.mean) << ",\n"
+    << "      " << row(net.inv_std) << ",\n"
+    << "      {{\n";
+  for (int k = 0; k < kJoinFeatures; ++k) s << "          " << row(net.w1[k]) << ",\n";
+  s << "      }},\n"
+    << "      " << row(net.b1) << ",\n"
+    << "      " << row(net.w2) << ",\n"
+    << "      " << f(net.b2) << "};\n"
+    << "  return net;\n"
+    << "}\n\n"
+    << "}  // namespace hair25d::completion\n";
+  return s.str();
+}
+
+}  // namespace hair25d::completion

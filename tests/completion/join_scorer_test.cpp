@@ -1,0 +1,281 @@
+// The learned join scorer (join_scorer.h, paper §5.1): its inputs on a
+// hand-made case, their behaviour under mirroring and transposition, the
+// trainer on planted rules, the generated weights file and bad input.
+#include "hair25d/completion/join_scorer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "hair25d/completion/completion.h"
+#include "hair25d/core/error.h"
+#include "synthetic.h"
+
+namespace hair25d::completion {
+namespace {
+
+using test::below;
+using test::blank;
+using test::Drawing;
+using test::paint;
+
+int feature(const char* name) {
+  for (int i = 0; i < kJoinFeatures; ++i)
+    if (std::string(join_feature_name(i)) == name) return i;
+  ADD_FAILURE() << "no feature " << name;
+  return 0;
+}
+
+// A horizontal band split by a vertical occluder; the band is two-toned
+// across its width (light upper half), and `flipped` paints the right piece
+// the other way up (dark upper half): same colours, other profile.
+Drawing banded(bool flipped) {
+  Drawing d = blank(300, 170);
+  const Rgba light{220, 190, 110, 255}, dark{150, 120, 60, 255};
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, light, 1);
+  paint(
+      d, [](double x, double y) { return x >= 150 && x < 280 && y > 60 && y < 100; }, light, 2);
+  for (int y = 0; y < d.image.height(); ++y)
+    for (int x = 0; x < d.image.width(); ++x) {
+      const int l = d.regions.at(x, y);
+      const bool lower = y >= 80;
+      if ((l == 1 && lower) || (l == 2 && lower != flipped)) d.image.at(x, y) = dark;
+    }
+  paint(
+      d, [](double x, double y) { return x > 130 && x < 170 && y > 10 && y < 150; },
+      Rgba{120, 90, 160, 255}, 3);
+  d.relations = {below(1, 3), below(2, 3)};
+  return d;
+}
+
+// Mirrored left-right (`transpose` false) or transposed; `head` moves along.
+Drawing transformed(const Drawing& d, bool transpose, Vec2* head) {
+  const int w = d.image.width(), h = d.image.height();
+  Drawing out = transpose ? blank(h, w) : blank(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int tx = transpose ? y : w - 1 - x, ty = transpose ? x : y;
+      out.image.at(tx, ty) = d.image.at(x, y);
+      out.regions.at(tx, ty) = d.regions.at(x, y);
+    }
+  out.relations = d.relations;
+  *head = transpose ? Vec2(head->y(), head->x()) : Vec2(w - head->x(), head->y());
+  return out;
+}
+
+const JoinCandidate* candidate(const Result& r, int a, int b) {
+  for (const JoinCandidate& c : r.join_candidates)
+    if ((c.region_a == a && c.region_b == b) || (c.region_a == b && c.region_b == a)) return &c;
+  return nullptr;
+}
+
+Result recorded(const Drawing& d, Vec2 head, bool enabled = false) {
+  Options o;
+  o.inpaint_strands = false;
+  o.inpaint_background = false;
+  o.join_scorer.record = true;
+  o.join_scorer.enabled = enabled;
+  return complete_strands(test::input_of(d, head), o);
+}
+
+TEST(JoinScorer, FeaturesOfAStraightBandUnderAnOccluder) {
+  const Result r = recorded(banded(false), Vec2(150, 300));
+  const JoinCandidate* c = candidate(r, 1, 2);
+  ASSERT_NE(c, nullptr);
+  EXPECT_TRUE(c->chosen);
+  EXPECT_EQ(r.joins, 1);
+  const JoinFeatures& f = c->features;
+  // Straight: the tangents run along the chord.
+  EXPECT_LT(f[feature("mean_angle")], 0.1);
+  EXPECT_LT(f[feature("bulge")], 0.1);
+  EXPECT_EQ(f[feature("no_common_occluder")], 0.0f);
+  EXPECT_LT(f[feature("uncovered")], 0.05);
+  // The same bands at the same places across both pieces.
+  EXPECT_LT(f[feature("profile_luma")], 0.05);
+  EXPECT_GT(f[feature("profile_corr")], 0.9);
+  EXPECT_GT(f[feature("profile_spread")], 0.05);
+  // The middle of the join lies under region 3, above both pieces.
+  EXPECT_GT(f[feature("mid_above_both")], 0.8);
+  EXPECT_EQ(f[feature("mid_above_one")], 0.0f);
+  // Both pieces lie above nothing; each has one occluded edge; no rival.
+  EXPECT_EQ(f[feature("back_pieces")], 1.0f);
+  EXPECT_EQ(f[feature("edges_max")], 0.25f);
+  EXPECT_EQ(f[feature("rivals_max")], 0.0f);
+  // Horizontal join, head straight below: across the radial direction.
+  EXPECT_LT(f[feature("radial")], 0.2);
+  EXPECT_FLOAT_EQ(f[feature("hand_cost")], static_cast<float>(c->hand_cost));
+  EXPECT_EQ(c->probability, -1.0);  // the scorer was not asked
+}
+
+TEST(JoinScorer, ProfileTellsABandFlippedAcrossTheStrand) {
+  const Result same = recorded(banded(false), Vec2(150, 300));
+  const Result flipped = recorded(banded(true), Vec2(150, 300));
+  const JoinCandidate* s = candidate(same, 1, 2);
+  const JoinCandidate* f = candidate(flipped, 1, 2);
+  ASSERT_NE(s, nullptr);
+  ASSERT_NE(f, nullptr);
+  // The windows' mean colours are alike, the profiles are not.
+  EXPECT_LT(std::abs(f->features[feature("colour")] - s->features[feature("colour")]), 0.1);
+  EXPECT_GT(f->features[feature("profile_luma")], 0.15);
+  EXPECT_LT(f->features[feature("profile_corr")], -0.9);
+}
+
+TEST(JoinScorer, FeaturesDoNotChangeUnderMirrorOrTransposition) {
+  const Drawing d = banded(false);
+  const Result base = recorded(d, Vec2(150, 300));
+  const JoinCandidate* c = candidate(base, 1, 2);
+  ASSERT_NE(c, nullptr);
+  for (bool transpose : {false, true}) {
+    Vec2 head(150, 300);
+    const Drawing t = transformed(d, transpose, &head);
+    const Result r = recorded(t, head);
+    const JoinCandidate* m = candidate(r, 1, 2);
+    ASSERT_NE(m, nullptr) << (transpose ? "transposed" : "mirrored");
+    EXPECT_NEAR(m->hand_cost, c->hand_cost, 0.05);
+    for (int k = 0; k < kJoinFeatures; ++k)
+      EXPECT_NEAR(m->features[k], c->features[k], 0.05 + 0.02 * std::abs(c->features[k]))
+          << join_feature_name(k) << (transpose ? " transposed" : " mirrored");
+  }
+}
+
+TEST(JoinScorer, EnabledScorerDecidesTheBandOnly) {
+  // The band widened down to 0 takes in the straight band's join.
+  for (bool may_refuse : {false, true}) {
+    Options o;
+    o.inpaint_strands = false;
+    o.inpaint_background = false;
+    o.join_scorer.record = true;
+    o.join_scorer.enabled = true;
+    o.join_scorer.band_low = 0.0;
+    o.join_scorer.band_high = 1.8;
+    o.join_scorer.may_refuse = may_refuse;
+    const Result r = complete_strands(test::input_of(banded(false), Vec2(150, 300)), o);
+    const JoinCandidate* c = candidate(r, 1, 2);
+    ASSERT_NE(c, nullptr);
+    ASSERT_LE(c->hand_cost, 1.8);
+    EXPECT_GE(c->probability, 0.0);
+    EXPECT_LE(c->probability, 1.0);
+    const double learned = 2.4 + (0.5 - c->probability) * 1.8;
+    EXPECT_NEAR(c->cost, may_refuse ? learned : std::min(learned, c->hand_cost), 1e-9);
+    EXPECT_EQ(c->chosen, c->cost <= 2.4);
+    for (const JoinCandidate& other : r.join_candidates)
+      if (other.hand_cost > 1.8) {
+        EXPECT_EQ(other.probability, -1.0);
+        EXPECT_EQ(other.cost, other.hand_cost);
+      }
+  }
+}
+
+// Rows with random inputs and a planted rule: one strand when
+// gap_per_width + 2 · profile_luma < 1.2 and the join is not across the
+// radial direction (an AND of two half-planes: no single input decides).
+void planted(int n, std::uint64_t seed, std::vector<JoinFeatures>* x, std::vector<int>* y) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int i = 0; i < n; ++i) {
+    JoinFeatures f{};
+    for (float& v : f) v = u(rng) * 2.0f;
+    f[feature("profile_luma")] = u(rng);
+    f[feature("radial")] = u(rng);
+    x->push_back(f);
+    y->push_back(f[feature("gap_per_width")] + 2 * f[feature("profile_luma")] < 1.2f &&
+                 f[feature("radial")] > 0.3f);
+  }
+}
+
+TEST(JoinScorer, TrainerLearnsAPlantedRule) {
+  std::vector<JoinFeatures> x, tx;
+  std::vector<int> y, ty;
+  planted(3000, 7, &x, &y);
+  planted(1000, 8, &tx, &ty);
+  JoinTrainingOptions o;
+  o.epochs = 40;
+  const JoinTrainingResult t = train_join_scorer(x, y, o);
+  EXPECT_EQ(t.epochs, 40);
+  EXPECT_LT(t.final_loss, 0.2);
+  int right = 0;
+  for (std::size_t i = 0; i < tx.size(); ++i)
+    right += (join_probability(t.net, tx[i]) >= 0.5) == (ty[i] == 1);
+  EXPECT_GT(right, 930) << "of 1000 held-out rows";
+  // Labels shuffled: nothing to learn, held-out accuracy near chance.
+  std::vector<int> shuffled = y;
+  std::mt19937_64 rng(3);
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  const JoinTrainingResult blind = train_join_scorer(x, shuffled, o);
+  int blind_right = 0;
+  for (std::size_t i = 0; i < tx.size(); ++i)
+    blind_right += (join_probability(blind.net, tx[i]) >= 0.5) == (ty[i] == 1);
+  EXPECT_LT(blind_right, 750);
+}
+
+TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
+  std::vector<JoinFeatures> x;
+  std::vector<int> y;
+  planted(400, 11, &x, &y);
+  JoinTrainingOptions o;
+  o.epochs = 5;
+  const std::string a = join_scorer_source(train_join_scorer(x, y, o).net, "a");
+  const std::string b = join_scorer_source(train_join_scorer(x, y, o).net, "a");
+  EXPECT_EQ(a, b);
+  o.seed = 2;
+  EXPECT_NE(join_scorer_source(train_join_scorer(x, y, o).net, "a"), a);
+  // The committed weights file is the default net printed again, byte for
+  // byte below its comment (the floats round-trip).
+  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) +
+                   "/../../completion/src/join_scorer_weights.cpp");
+  ASSERT_TRUE(in.good());
+  std::stringstream file;
+  file << in.rdbuf();
+  auto body = [](const std::string& s) {
+    const std::string::size_type at = s.find("// Generated file");
+    return at == std::string::npos ? std::string() : s.substr(at);
+  };
+  const std::string printed = join_scorer_source(default_join_scorer(), "x");
+  EXPECT_FALSE(body(printed).empty());
+  EXPECT_EQ(body(file.str()), body(printed));
+}
+
+TEST(JoinScorer, BadInputThrows) {
+  const JoinScorerNet net{};
+  JoinFeatures f{};
+  EXPECT_DOUBLE_EQ(join_probability(net, f), 0.5);
+  f[3] = std::nanf("");
+  EXPECT_THROW(join_probability(net, f), Error);
+  f[3] = INFINITY;
+  EXPECT_THROW(join_probability(net, f), Error);
+  EXPECT_THROW(join_feature_name(-1), Error);
+  EXPECT_THROW(join_feature_name(kJoinFeatures), Error);
+
+  std::vector<JoinFeatures> x(4, JoinFeatures{});
+  EXPECT_THROW(train_join_scorer(x, {1, 0, 1}), Error);     // sizes
+  EXPECT_THROW(train_join_scorer(x, {1, 0, 2, 0}), Error);  // label
+  EXPECT_THROW(train_join_scorer(x, {1, 0, 0, 0}), Error);  // one of a class
+  x[2][0] = std::nanf("");
+  EXPECT_THROW(train_join_scorer(x, {1, 0, 1, 0}), Error);  // not finite
+  x[2][0] = 0;
+  JoinTrainingOptions bad;
+  bad.epochs = 0;
+  EXPECT_THROW(train_join_scorer(x, {1, 0, 1, 0}, bad), Error);
+  bad = {};
+  bad.rate = -1;
+  EXPECT_THROW(train_join_scorer(x, {1, 0, 1, 0}, bad), Error);
+
+  const Drawing d = banded(false);
+  Options o;
+  o.join_scorer.band_high = 1.0;  // below band_low
+  std::string why;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("band_high"), std::string::npos);
+  EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
+  o = {};
+  o.join_scorer.threshold = 1.0;
+  EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
+}
+
+}  // namespace
+}  // namespace hair25d::completion
