@@ -1,5 +1,9 @@
 #include "hair25d/core/model_io.h"
 
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstdint>
 #include <future>
 #include <set>
 #include <utility>
@@ -18,23 +22,43 @@ inline constexpr const char* kModelFormat = "hair25d-model";
 
 namespace {
 
+// The model's arrays are built element by element and moved into place: an
+// initializer list of named arrays, or a strand pushed by value, copies every
+// node (three copies of each mesh made most of the time of a model write).
+template <typename T, std::size_t N>
+json tuple_json(const std::array<T, N>& values) {
+  json::array_t out;
+  out.reserve(N);
+  for (const T& v : values) out.emplace_back(v);
+  return json(std::move(out));
+}
+
 json points_json(const Polyline& points) {
-  json out = json::array();
-  for (const Vec2& p : points) out.push_back({p.x(), p.y()});
-  return out;
+  json::array_t out;
+  out.reserve(points.size());
+  for (const Vec2& p : points) out.push_back(tuple_json(std::array<double, 2>{p.x(), p.y()}));
+  return json(std::move(out));
 }
 
 json mesh_json(const TriMesh2& mesh) {
-  json vertices = json::array(), triangles = json::array(), on_curve = json::array();
-  for (int i = 0; i < mesh.V.rows(); ++i) vertices.push_back({mesh.V(i, 0), mesh.V(i, 1)});
+  json::array_t vertices, triangles, on_curve;
+  vertices.reserve(static_cast<std::size_t>(mesh.V.rows()));
+  triangles.reserve(static_cast<std::size_t>(mesh.F.rows()));
+  const bool curves = mesh.on_curve.rows() == mesh.F.rows();
+  if (curves) on_curve.reserve(static_cast<std::size_t>(mesh.F.rows()));
+  for (int i = 0; i < mesh.V.rows(); ++i)
+    vertices.push_back(tuple_json(std::array<double, 2>{mesh.V(i, 0), mesh.V(i, 1)}));
   for (int t = 0; t < mesh.F.rows(); ++t) {
-    triangles.push_back({mesh.F(t, 0), mesh.F(t, 1), mesh.F(t, 2)});
-    if (mesh.on_curve.rows() == mesh.F.rows()) {
-      on_curve.push_back({mesh.on_curve(t, 0), mesh.on_curve(t, 1), mesh.on_curve(t, 2)});
+    triangles.push_back(tuple_json(std::array<int, 3>{mesh.F(t, 0), mesh.F(t, 1), mesh.F(t, 2)}));
+    if (curves) {
+      on_curve.push_back(tuple_json(
+          std::array<bool, 3>{mesh.on_curve(t, 0), mesh.on_curve(t, 1), mesh.on_curve(t, 2)}));
     }
   }
-  json out = {{"vertices", vertices}, {"triangles", triangles}};
-  if (!on_curve.empty()) out["on_curve"] = on_curve;
+  json out = json::object();
+  out["vertices"] = std::move(vertices);
+  out["triangles"] = std::move(triangles);
+  if (!on_curve.empty()) out["on_curve"] = std::move(on_curve);
   return out;
 }
 
@@ -119,26 +143,37 @@ void check_writable(const fs::path& folder, const HairModel& model) {
 }
 
 void write_contents(const fs::path& tmp, const HairModel& model) {
-  // PNG compression is most of a model write: the images are encoded by two
-  // threads, every other one each, the JSON written by the caller's first.
+  // PNG compression is most of a model write: a second thread encodes the
+  // images, largest first, from the start; the caller's thread writes the
+  // JSON meanwhile, then takes the next image not yet taken as well.
   std::vector<std::pair<fs::path, const Image*>> images;
+  if (!model.image.empty()) images.emplace_back(tmp / "image.png", &model.image);
+  if (!model.background.empty()) images.emplace_back(tmp / "background.png", &model.background);
+  for (const Strand& s : model.strands)
+    if (!s.texture.empty())
+      images.emplace_back(tmp / "strands" / (std::to_string(s.id) + ".png"), &s.texture);
+  if (images.size() > (model.image.empty() ? 0 : 1) + (model.background.empty() ? 0 : 1))
+    fs::create_directory(tmp / "strands");
+  std::stable_sort(images.begin(), images.end(), [](const auto& a, const auto& b) {
+    return std::int64_t{a.second->width()} * a.second->height() >
+           std::int64_t{b.second->width()} * b.second->height();
+  });
+  std::atomic<std::size_t> next{0};
+  const auto encode = [&images, &next] {
+    for (std::size_t i = next++; i < images.size(); i = next++)
+      save_image(images[i].first, *images[i].second);
+  };
+  auto encoded = std::async(std::launch::async, encode);
   {
     json doc;
     doc["format"] = kModelFormat;
     doc["version"] = kModelFormatVersion;
     doc["width"] = model.width;
     doc["height"] = model.height;
-    if (!model.image.empty()) {
-      images.emplace_back(tmp / "image.png", &model.image);
-      doc["image"] = "image.png";
-    }
-    if (!model.background.empty()) {
-      images.emplace_back(tmp / "background.png", &model.background);
-      doc["background"] = "background.png";
-    }
+    if (!model.image.empty()) doc["image"] = "image.png";
+    if (!model.background.empty()) doc["background"] = "background.png";
     if (model.head_center) doc["head_center"] = {model.head_center->x(), model.head_center->y()};
     json strands = json::array();
-    bool made_folder = false;
     for (const Strand& s : model.strands) {
       json js;
       js["id"] = s.id;
@@ -147,25 +182,23 @@ void write_contents(const fs::path& tmp, const HairModel& model) {
       js["depth"] = s.depth;
       js["outline"] = points_json(s.outline);
       if (!s.texture.empty()) {
-        if (!made_folder) fs::create_directory(tmp / "strands");
-        made_folder = true;
-        const std::string rel = "strands/" + std::to_string(s.id) + ".png";
-        images.emplace_back(tmp / rel, &s.texture);
-        js["texture"] = rel;
+        js["texture"] = "strands/" + std::to_string(s.id) + ".png";
         js["texture_origin"] = {s.texture_origin.x(), s.texture_origin.y()};
       }
       js["mesh"] = mesh_json(s.mesh);
-      js["skeleton"] = {{"nodes", points_json(s.skeleton.nodes)},
-                        {"parent", s.skeleton.parent},
-                        {"tips", s.skeleton.tips}};
+      json skeleton = json::object();
+      skeleton["nodes"] = points_json(s.skeleton.nodes);
+      skeleton["parent"] = s.skeleton.parent;
+      skeleton["tips"] = s.skeleton.tips;
+      js["skeleton"] = std::move(skeleton);
       js["physics"] = {{"stiffness", s.physics.stiffness},
                        {"tau0", s.physics.tau0},
                        {"lambda", s.physics.lambda},
                        {"damping", s.physics.damping},
                        {"gravity", s.physics.gravity}};
-      strands.push_back(js);
+      strands.push_back(std::move(js));
     }
-    doc["strands"] = strands;
+    doc["strands"] = std::move(strands);
     json relations = json::array();
     for (const RegionRelation& r : model.relations) {
       relations.push_back({{"a", r.a},
@@ -175,16 +208,11 @@ void write_contents(const fs::path& tmp, const HairModel& model) {
                            {"user_fixed", r.user_fixed},
                            {"overridden", r.overridden}});
     }
-    doc["relations"] = relations;
-    const auto encode = [&images](std::size_t first) {
-      for (std::size_t i = first; i < images.size(); i += 2)
-        save_image(images[i].first, *images[i].second);
-    };
-    auto encoded = std::async(std::launch::async, encode, 0);
+    doc["relations"] = std::move(relations);
     write_text_atomically(tmp / "model.json", doc.dump(1) + "\n");
-    encode(1);
-    encoded.get();
   }
+  encode();
+  encoded.get();
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <future>
 #include <span>
 #include <string>
 #include <vector>
@@ -151,24 +152,29 @@ Image render_contact_sheet(const ModelRun& run, int panel_max_side) {
   if (m.image.empty()) return {};
   const std::array<int, 4> box = contact_sheet_box(run);
   const std::vector<int> order = back_to_front(m);
+  // The depth panel (and the drawing's) are drawn beside the other two: the
+  // sheet is drawn at full resolution, a serial step of the model command.
+  auto depth_panels = std::async(std::launch::async, [&] {
+    Image depth = m.background.empty() ? m.image : m.background;
+    wash(depth, {255, 255, 255, 255}, 153);
+    int max_depth = 0;
+    for (const Strand& s : m.strands) max_depth = std::max(max_depth, s.depth);
+    for (int i : order) {
+      const Strand& s = m.strands[i];
+      const Rgba c = depth_colour(s.depth, max_depth);
+      for (int y = 0; y < s.texture.height(); ++y)
+        for (int x = 0; x < s.texture.width(); ++x)
+          if (s.texture.at(x, y).a)
+            blend(depth, x + s.texture_origin.x(), y + s.texture_origin.y(), c, 217);
+      for (std::size_t k = 0; k < s.outline.size(); ++k)
+        line(depth, s.outline[k], s.outline[(k + 1) % s.outline.size()], 1.5, {30, 30, 30, 255});
+    }
+    return std::array<Image, 2>{shrink(m.image, box, panel_max_side),
+                                shrink(depth, box, panel_max_side)};
+  });
   Image skeletons = composite(m, order);
   Image completed = skeletons;
   tint_completed(completed, run);
-
-  Image depth = m.background.empty() ? m.image : m.background;
-  wash(depth, {255, 255, 255, 255}, 153);
-  int max_depth = 0;
-  for (const Strand& s : m.strands) max_depth = std::max(max_depth, s.depth);
-  for (int i : order) {
-    const Strand& s = m.strands[i];
-    const Rgba c = depth_colour(s.depth, max_depth);
-    for (int y = 0; y < s.texture.height(); ++y)
-      for (int x = 0; x < s.texture.width(); ++x)
-        if (s.texture.at(x, y).a)
-          blend(depth, x + s.texture_origin.x(), y + s.texture_origin.y(), c, 217);
-    for (std::size_t k = 0; k < s.outline.size(); ++k)
-      line(depth, s.outline[k], s.outline[(k + 1) % s.outline.size()], 1.5, {30, 30, 30, 255});
-  }
 
   wash(skeletons, {255, 255, 255, 255}, 115);
   const double w = std::max(2.0, std::max(box[2], box[3]) / 300.0);
@@ -181,9 +187,11 @@ Image render_contact_sheet(const ModelRun& run, int panel_max_side) {
     if (!k.nodes.empty()) disc(skeletons, k.nodes[0], 2.0 * w, {30, 60, 230, 255});
   }
 
-  const Image panels[4] = {
-      shrink(m.image, box, panel_max_side), shrink(completed, box, panel_max_side),
-      shrink(depth, box, panel_max_side), shrink(skeletons, box, panel_max_side)};
+  Image shrunk_completed = shrink(completed, box, panel_max_side);
+  Image shrunk_skeletons = shrink(skeletons, box, panel_max_side);
+  std::array<Image, 2> drawing_and_depth = depth_panels.get();
+  const Image panels[4] = {std::move(drawing_and_depth[0]), std::move(shrunk_completed),
+                           std::move(drawing_and_depth[1]), std::move(shrunk_skeletons)};
   const int pw = panels[0].width(), ph = panels[0].height(), gap = 8;
   Image sheet(2 * pw + 3 * gap, 2 * ph + 3 * gap, {255, 255, 255, 255});
   for (int p = 0; p < 4; ++p) {
