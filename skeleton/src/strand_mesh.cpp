@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "hair25d/core/error.h"
+#include "inside_test.h"
 #include "polygon_sampling.h"
 #include "simple_outline.h"
 #include "simplify_outline.h"
@@ -82,9 +83,13 @@ MeshResult mesh_samples(const std::vector<Polyline>& loops, const MeshOptions& o
         if (a != b) cdt.insert_constraint(a, b);
       }
     }
-    auto inside = [&loops](const Vec2& p) {
+    // Binned edges: a large strand's outline has ~1000 samples and as many
+    // initial triangles (same answers as point_in_polygon, inside_test.h).
+    std::vector<detail::InsideTest> tests;
+    for (const Polyline& loop : loops) tests.emplace_back(loop);
+    auto inside = [&tests](const Vec2& p) {
       bool odd = false;
-      for (const Polyline& loop : loops) odd ^= point_in_polygon(loop, p);
+      for (const detail::InsideTest& t : tests) odd ^= t.contains(p);
       return odd;
     };
     // Seeds are points inside the outline: the domain is the components of
