@@ -80,7 +80,7 @@ BoundaryLine colour_line(const Image& image, double line_width, const Polyline& 
   const double reach = 3.0 * line_width + 2.0;
   const int span = std::max(2, static_cast<int>(std::lround(line_width)));
   const int stride = n > 40 ? 2 : 1;
-  std::vector<double> values;
+  std::vector<double> values, grey_values;
   double along = 0.0;
   for (int i = 0; i < n; ++i) {
     if (i > 0) along += (pts[i] - pts[i - 1]).norm();
@@ -109,20 +109,36 @@ BoundaryLine colour_line(const Image& image, double line_width, const Polyline& 
     }
     const bool found_left = grey_left >= 0.0, found_right = grey_right >= 0.0;
     if (!found_left || !found_right) continue;
-    double farthest = 0.0;
+    // The line's colour may lift the side where the grey levels see no line
+    // (paint as dark as the ink) up to the contrast the grey levels see on
+    // the other side, not beyond: where both sides see a faint line in grey
+    // (a fork line fading out) its hue does not make it stronger.
+    double farthest = 0.0, darkest = 1e9;
     for (double s = -half; s <= half + 1e-9; s += 0.5) {
       const Vec2 q = p + s * to_left;
-      farthest =
-          std::max(farthest, to_segment(colour_at(image, q.x(), q.y()), paint_left, paint_right));
+      const Rgb c = colour_at(image, q.x(), q.y());
+      farthest = std::max(farthest, to_segment(c, paint_left, paint_right));
+      darkest = std::min(darkest, grey_of(c));
     }
-    values.push_back(farthest / std::sqrt(3.0));
+    const double grey_low = std::min(grey_left, grey_right) - darkest;
+    const double grey_high = std::max(grey_left, grey_right) - darkest;
+    values.push_back(std::max(grey_low, std::min(farthest / std::sqrt(3.0), grey_high)));
+    grey_values.push_back(grey_low);
   }
   if (values.empty()) return out;
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t m = v.size();
+    return m % 2 ? v[m / 2] : 0.5 * (v[m / 2 - 1] + v[m / 2]);
+  };
+  // Only where the colour sees at least twice the line the grey levels see
+  // (read here on the same pixels): elsewhere the grey contrast stands.
+  const double line = median(values);
+  if (median(grey_values) > 0.5 * line) return out;
+  out.contrast = line;
   std::vector<double> sorted = values;
   std::sort(sorted.begin(), sorted.end());
-  const std::size_t m = sorted.size();
-  out.contrast = m % 2 ? sorted[m / 2] : 0.5 * (sorted[m / 2 - 1] + sorted[m / 2]);
-  out.contrast_low = sorted[m / 4];
+  out.contrast_low = sorted[sorted.size() / 4];
   return out;
 }
 

@@ -11,18 +11,23 @@ namespace hair25d::layering::detail {
 
 // Along `curve` (pixel corners, `skip` pixels left out at each end, one
 // sample per pixel, every other one on boundaries over 40 px, as
-// LineResponse::measure samples), per sample: the largest distance, over the
-// line's cross-section (half a line width + 1 px each side), from the
-// image's colour there to the segment between the two sides' paper colours,
-// Euclidean RGB / √3. Paper on a side is, as for the grey contrast, the
-// colour of the brightest point (grey level) within 3 line widths + 2 px
-// along the normal that lies in that side's region of `labels` (`left` /
-// `right`). Colours are read bilinearly, translucent pixels over white. A
-// line of any colour answers; a mix of the two paints (anti-aliasing, a
-// tone step, JPEG's chroma) lies on the segment and does not. Median
-// (contrast) and lower quartile (contrast_low) over the samples;
-// colour_difference is left 0. Samples without paper on both sides are
-// left out; none at all gives 0.
+// LineResponse::measure samples), per sample: paper on each side is, as for
+// the grey contrast, the colour of the brightest point (grey level) within
+// 3 line widths + 2 px along the normal that lies in that side's region of
+// `labels` (`left` / `right`); over the line's cross-section (half a line
+// width + 1 px each side) the grey contrast of each side (its paper − the
+// darkest point) and the largest distance from the image's colour to the
+// segment between the two papers' colours (Euclidean RGB / √3: a line of
+// any colour lies off it; a mix of the two paints — anti-aliasing, a tone
+// step, JPEG's chroma — lies on it). The sample's value is the lower side's
+// grey contrast lifted by that colour distance, at most up to the higher
+// side's: ink is as visible against paint as dark as it as, in grey, against
+// the other paint, never more. Colours are read bilinearly (paper: the pixel
+// whose label is read), translucent pixels over white. Median (contrast)
+// and lower quartile (contrast_low) of the values, but only where the
+// median lifted value is at least twice the median lower-side grey
+// contrast — the colour sees a line the grey levels miss; otherwise, and
+// without samples with paper on both sides, 0. colour_difference is 0.
 BoundaryLine colour_line(const Image& image, double line_width, const Polyline& curve, double skip,
                          const LabelMap& labels, int left, int right);
 

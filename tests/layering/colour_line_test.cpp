@@ -78,6 +78,20 @@ TEST(ColourLine, ToneStepAndBlendAreNoLine) {
   }
 }
 
+// A faint line of another hue that the grey levels see on both sides (a
+// fork line fading out): its colour does not make it a stronger line.
+TEST(ColourLine, HueOfALineBothSidesSeeAddsNothing) {
+  TwoPaints d(true, false);
+  for (int y = 0; y < 43; ++y)
+    for (int x = 0; x < 61; ++x)
+      d.image.at(x, y) = x == 29 || x == 30 ? Rgba{150, 110, 200, 255}  // grey 132.3
+                         : x < 30           ? Rgba{180, 150, 140, 255}  // grey 157.9
+                                            : Rgba{170, 150, 160, 255};           // grey 157.1
+  const int l = left_of(d);
+  ASSERT_NE(l, 0);
+  EXPECT_EQ(d.colour(l, 3 - l).contrast, 0.0);
+}
+
 TEST(ColourLine, NoPaperOnASideGivesZero) {
   const TwoPaints d(true, false);
   const int l = left_of(d);
