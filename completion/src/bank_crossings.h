@@ -108,16 +108,59 @@ class RegionTones {
   // (a few pieces with drawn lines inside 0.07-0.32), of two 0-0.27, mostly
   // over 0.05.
   static constexpr double kMaxToneStep = 0.02;
+  // A dot: a dark component of at most this many pixels (the generator's
+  // dots cover 3-35 px at 800 x 640; drawn lines are longer).
+  static constexpr int kMaxDotArea = 60;
+  // A region's dot mass is measured over at least this many whole dots.
+  static constexpr int kMinDots = 3;
+  // Pieces of one tone: dot masses within this share of the larger and
+  // dark shares within kMaxSameToneStep. On generated screentone seeds
+  // 101-116 strand-join candidates of one strand with both masses measured
+  // differed by 0-0.04 (151 edge pairs, dark shares 0-0.032 apart), of two
+  // strands mostly by more than 0.08 (22 of 478 within 0.04).
+  static constexpr double kMaxSameMassStep = 0.04;
+  static constexpr double kMaxSameToneStep = 0.04;
+  // Pieces of two tones: masses more than this share apart, or dark shares
+  // more than kMinOtherToneStep apart (none of one strand on 101-116).
+  static constexpr double kMinOtherMassStep = 0.08;
+  static constexpr double kMinOtherToneStep = 0.08;
+
+  enum class Match { kUnknown, kSame, kOther };
+
   explicit RegionTones(const Context& ctx) : ctx_(&ctx) {}
   double tone(int region);
   // False when both are textured and their tones differ by more than
   // kMaxToneStep; `textured` says whether both are.
   bool same_tone(int a, int b, bool* textured);
+  // The median ink of the region's whole dots (dark components of at most
+  // kMaxDotArea px, 1 px clear of its border, with their anti-aliased rim:
+  // darkness summed from the region's paper, its 90th luma percentile, to
+  // its darkest pixel), or -1 with fewer than kMinDots. Unlike the dark
+  // share, which moves with the dots' phase against the pixel grid and
+  // with how many dots a small piece cuts, a dot's ink is the same
+  // wherever it lies; with the dark share it also fixes the dots' period.
+  double dot_mass(int region);
+  // The drawing is screentone: a quarter of the regions or more show whole
+  // dots (on generated screentone drawings 8-18 of 24-34 regions, on
+  // flat, two-tone, gradient and the annotated cases none).
+  bool screentone();
+  // kSame / kOther when both pieces' dots are measured and agree / differ
+  // (above); kUnknown otherwise or on a drawing that is no screentone.
+  Match match(int a, int b);
 
  private:
   const Context* ctx_;
-  std::map<int, double> tones_;
+  std::map<int, double> tones_, masses_;
+  int screentone_ = -1;
 };
+// Cost added to a strand join of regions a and b (joins.cpp) on a
+// screentone drawing, where the colour says nothing (every window's spread
+// is larger than the steps): -1.2 for pieces of one tone, +1 for two tones,
+// -0.6 when both are paper-white (a third of the generator's strands are
+// untoned; a toned piece and a white one are two strands: +0.6, as for a
+// dark-share step over kMinOtherToneStep when the dots are not measured).
+// 0 on other drawings.
+double tone_join_cost(RegionTones& tones, int a, int b);
 // The colour at the 75th luma percentile of a region's own pixels in the
 // 11 x 11 window round `at`: the paper between screentone dots (which cover
 // under half of a tone).
