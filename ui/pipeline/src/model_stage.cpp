@@ -124,8 +124,11 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
     run.strands.push_back(std::move(info));
   }
 
-  // Skeleton and mesh of one strand; strands are independent.
-  const auto finish = [&](std::size_t i) {
+  // Skeleton and mesh of one strand; strands, and a strand's skeleton and
+  // mesh, are independent: each is a job of its own, so that the largest
+  // strand's two do not run one after the other while the other worker idles.
+  std::vector<std::string> skeleton_problem(m.strands.size()), mesh_problem(m.strands.size());
+  const auto make_skeleton = [&](std::size_t i) {
     Strand& s = m.strands[i];
     StrandReport& info = run.strands[i];
     if (s.outline.size() >= 3) {
@@ -174,17 +177,10 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
         s.skeleton = r.skeleton;
         info.skeleton = r.status;
       } catch (const Error& e) {
-        info.problem = std::string("skeleton: ") + e.what();
-      }
-      try {
-        const skeleton::MeshResult r = skeleton::mesh_strand(s.outline, options.mesh);
-        s.mesh = r.mesh;
-        info.mesh = r.status;
-      } catch (const Error& e) {
-        info.problem += (info.problem.empty() ? "" : "; ") + std::string("mesh: ") + e.what();
+        skeleton_problem[i] = std::string("skeleton: ") + e.what();
       }
     } else {
-      info.problem = "outline has fewer than 3 points";
+      skeleton_problem[i] = "outline has fewer than 3 points";
     }
     if (s.skeleton.nodes.empty()) {
       // Still a usable strand: one fixed node where its pixels are.
@@ -200,35 +196,54 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
       }
     }
   };
+  const auto make_mesh = [&](std::size_t i) {
+    Strand& s = m.strands[i];
+    if (s.outline.size() < 3) return;
+    try {
+      const skeleton::MeshResult r = skeleton::mesh_strand(s.outline, options.mesh);
+      s.mesh = r.mesh;
+      run.strands[i].mesh = r.status;
+    } catch (const Error& e) {
+      mesh_problem[i] = std::string("mesh: ") + e.what();
+    }
+  };
   const std::size_t count = m.strands.size();
-  if (options.threads > 1 && count > 1) {
-    // Two workers each take the next strand, longest outline first, so that
-    // one large strand does not leave the other worker idle at the end.
-    std::vector<std::size_t> work(count);
-    for (std::size_t i = 0; i < count; ++i) work[i] = i;
+  // Job 2i is strand i's skeleton, 2i + 1 its mesh.
+  const auto job = [&](std::size_t k) { k % 2 == 0 ? make_skeleton(k / 2) : make_mesh(k / 2); };
+  if (options.threads > 1 && count > 0) {
+    // Two workers each take the next job, longest outline first, so that one
+    // large strand does not leave the other worker idle at the end.
+    std::vector<std::size_t> work(2 * count);
+    for (std::size_t k = 0; k < work.size(); ++k) work[k] = k;
     std::stable_sort(work.begin(), work.end(), [&](std::size_t a, std::size_t b) {
-      return m.strands[a].outline.size() > m.strands[b].outline.size();
+      return m.strands[a / 2].outline.size() > m.strands[b / 2].outline.size();
     });
-    std::atomic<std::size_t> next_strand{0};
+    std::atomic<std::size_t> next_job{0};
     std::atomic<std::size_t> finished{0};
     std::size_t reported = 0;  // by the reporting worker only
     const auto worker = [&](bool reports) {
-      for (std::size_t k = next_strand++; k < count; k = next_strand++) {
-        finish(work[k]);
+      for (std::size_t k = next_job++; k < work.size(); k = next_job++) {
+        job(work[k]);
         const std::size_t n = ++finished;
-        if (reports) report(progress, "skeleton", static_cast<double>(reported = n) / count);
+        if (reports) report(progress, "skeleton", static_cast<double>(reported = n) / work.size());
       }
     };
     auto other = std::async(std::launch::async, worker, false);
     worker(true);
     other.get();
-    // The silent worker may finish the last strand: the stage still ends at 100%.
-    if (reported != count) report(progress, "skeleton", 1.0);
+    // The silent worker may finish the last job: the stage still ends at 100%.
+    if (reported != work.size()) report(progress, "skeleton", 1.0);
   } else {
     for (std::size_t i = 0; i < count; ++i) {
-      finish(i);
+      make_skeleton(i);
+      make_mesh(i);
       report(progress, "skeleton", static_cast<double>(i + 1) / count);
     }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    std::string& problem = run.strands[i].problem;
+    problem = skeleton_problem[i];
+    if (!mesh_problem[i].empty()) problem += (problem.empty() ? "" : "; ") + mesh_problem[i];
   }
   run.seconds["skeleton"] = since(start);
 
