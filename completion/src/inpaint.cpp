@@ -629,21 +629,33 @@ std::vector<std::uint8_t> ink_mask(const Image& image, const InpaintOptions& o) 
     luma[i] = ((299 * c.r + 587 * c.g + 114 * c.b) / 1000 * c.a + 255 * (255 - c.a)) / 255;
   }
   std::vector<std::uint8_t> ink(luma.size(), 0);
-  for (int y = 0; y < h; ++y)
+  for (int y = 0; y < h; ++y) {
+    // Rows and columns 2 px from the border read their neighbours without
+    // clamping (the same values: the clamp changes nothing there).
+    const bool inner_row = y >= 2 && y < h - 2;
     for (int x = 0; x < w; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
       bool dark = luma[i] < o.ink_luma;
       // A ridge: darker than both sides, 1 or 2 px away (a line or a dot,
       // not the border between two flat regions).
-      auto at = [&](int px, int py) {
-        return luma[static_cast<std::size_t>(std::clamp(py, 0, h - 1)) * w +
-                    std::clamp(px, 0, w - 1)];
-      };
-      for (int d = 1; d <= 2 && !dark; ++d)
-        dark = std::min(at(x - d, y), at(x + d, y)) - luma[i] > o.ink_step ||
-               std::min(at(x, y - d), at(x, y + d)) - luma[i] > o.ink_step;
+      if (!dark && inner_row && x >= 2 && x < w - 2) {
+        const int* c = luma.data() + i;
+        const std::ptrdiff_t row = w;
+        for (int d = 1; d <= 2 && !dark; ++d)
+          dark = std::min(c[-d], c[d]) - *c > o.ink_step ||
+                 std::min(c[-d * row], c[d * row]) - *c > o.ink_step;
+      } else {
+        auto at = [&](int px, int py) {
+          return luma[static_cast<std::size_t>(std::clamp(py, 0, h - 1)) * w +
+                      std::clamp(px, 0, w - 1)];
+        };
+        for (int d = 1; d <= 2 && !dark; ++d)
+          dark = std::min(at(x - d, y), at(x + d, y)) - luma[i] > o.ink_step ||
+                 std::min(at(x, y - d), at(x, y + d)) - luma[i] > o.ink_step;
+      }
       ink[i] = dark ? 1 : 0;
     }
+  }
   return ink;
 }
 
