@@ -9,11 +9,11 @@
 #include <set>
 #include <sstream>
 
+#include "colour_line.h"
 #include "hair25d/core/error.h"
 #include "hair25d/layering/depth_order.h"
 #include "hair25d/layering/metrics.h"
 #include "hair25d/layering/optimizer.h"
-#include "colour_line.h"
 #include "line_response.h"
 #include "neighbours.h"
 #include "outline_fill.h"
@@ -246,9 +246,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     if (rep.line_contrast >= out.line_threshold || rep.length < 4.0 * out.line_width) continue;
     Polyline curve = b.points;
     if (b.closed()) curve.push_back(curve.front());
-    const detail::BoundaryLine seen = detail::colour_line(image, out.line_width, curve,
-                                                          1.5 * out.line_width, out.labels,
-                                                          b.left, b.right);
+    const detail::BoundaryLine seen = detail::colour_line(
+        image, out.line_width, curve, 1.5 * out.line_width, out.labels, b.left, b.right);
     if (seen.contrast >= out.line_threshold) {
       rep.line_contrast = seen.contrast;
       rep.line_contrast_low = seen.contrast_low;
