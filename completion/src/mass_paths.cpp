@@ -175,23 +175,39 @@ double RegionTones::dot_mass(int region) {
       lumas.push_back(l);
     }
   if (lumas.empty()) return masses_[region] = -1.0;
-  const float ink = *std::min_element(lumas.begin(), lumas.end());
   const std::size_t k = (lumas.size() - 1) * 9 / 10;
   std::nth_element(lumas.begin(), lumas.begin() + static_cast<std::ptrdiff_t>(k), lumas.end());
   const float paper = lumas[k];
-  const float range = std::max(1.0f, paper - ink);
   cv::Mat comp, stats, centroids;
   const int n = cv::connectedComponentsWithStats(dark, comp, stats, centroids, 8, CV_32S);
-  std::vector<double> masses;
+  // Whole dots only: small, their rim inside the region (not cut by its
+  // outline). The ink is the dots' own (median of their darkest pixels): a
+  // drawn line may be darker.
+  std::vector<int> dots;
+  std::vector<float> cores;
   for (int c = 1; c < n; ++c) {
     if (stats.at<int>(c, cv::CC_STAT_AREA) > kMaxDotArea) continue;  // a drawn line
     const int cx = stats.at<int>(c, cv::CC_STAT_LEFT), cy = stats.at<int>(c, cv::CC_STAT_TOP);
     const int cw = stats.at<int>(c, cv::CC_STAT_WIDTH), ch = stats.at<int>(c, cv::CC_STAT_HEIGHT);
-    // Whole dots only, their rim inside the region (not cut by its outline).
     bool whole = true;
+    float core = 255;
     for (int y = cy - 1; y <= cy + ch && whole; ++y)
-      for (int x = cx - 1; x <= cx + cw && whole; ++x) whole = own(x, y);
+      for (int x = cx - 1; x <= cx + cw && whole; ++x) {
+        whole = own(x, y);
+        if (whole && comp.at<int>(y, x) == c) core = std::min(core, luma.at<float>(y, x));
+      }
     if (!whole) continue;
+    dots.push_back(c);
+    cores.push_back(core);
+  }
+  if (static_cast<int>(dots.size()) < kMinDots) return masses_[region] = -1.0;
+  std::nth_element(cores.begin(), cores.begin() + static_cast<std::ptrdiff_t>(cores.size() / 2),
+                   cores.end());
+  const float range = std::max(1.0f, paper - cores[cores.size() / 2]);
+  std::vector<double> masses;
+  for (int c : dots) {
+    const int cx = stats.at<int>(c, cv::CC_STAT_LEFT), cy = stats.at<int>(c, cv::CC_STAT_TOP);
+    const int cw = stats.at<int>(c, cv::CC_STAT_WIDTH), ch = stats.at<int>(c, cv::CC_STAT_HEIGHT);
     double mass = 0.0;
     for (int y = cy - 1; y <= cy + ch; ++y)
       for (int x = cx - 1; x <= cx + cw; ++x) {

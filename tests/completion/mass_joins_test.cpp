@@ -313,6 +313,83 @@ TEST(PathJoins, SliverInAnotherScreentoneIsNotJoined) {
   EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1}));
 }
 
+// Screentone strand joins (joins.cpp, tone_join_cost): a vertical strand
+// over a lowest region 4, cut in two (1 above, 2 below) by a band 3 lying
+// over it; the pieces are 48 px deep behind a 44 px crossing, too shallow
+// for the banks, and lie above a region, so no mass or path join takes
+// them: only the strand join can. Its plain cost is about 0.55 (gap / width
+// 1.1, straight tangents). The pieces' tones are painted with `tone`.
+Drawing strand_under_band() {
+  Drawing d = blank(250, 300);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kFan, 4);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y > 70 && y < 140; }, kFan, 1);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y >= 140 && y < 210; }, kFan, 2);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 210 && y > 118 && y < 162; }, kFan, 3);
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
+  return d;
+}
+
+Result run_strand(const Drawing& d, double max_join_cost) {
+  Options o;
+  o.max_join_cost = max_join_cost;
+  o.inpaint_background = false;
+  o.face_joins = false;
+  return complete_strands(test::input_of(d, Vec2(125, 10)), o);
+}
+
+TEST(ToneJoins, StrandPiecesOfOneToneAreJoinedBeyondThePlainCost) {
+  // One tone, its dots 3 px off between the pieces: the tone's bonus (-1.2)
+  // brings the join under a limit of 0.2 that its geometry alone exceeds.
+  Drawing d = strand_under_band();
+  tone(d, 1, 6, 3, 0);
+  tone(d, 2, 6, 3, 3);
+  EXPECT_EQ(test::regions_with(run_strand(d, 0.2), 1), (std::vector<int>{1, 2}));
+  // Without the tones (flat pieces) the same limit keeps them apart.
+  EXPECT_EQ(test::regions_with(run_strand(strand_under_band(), 0.2), 1), (std::vector<int>{1}));
+}
+
+TEST(ToneJoins, StrandPiecesOfTwoTonesAreNotJoined) {
+  // Under a limit of 1.0, which the geometry passes: 3 px dots every 5 px
+  // below against every 6 px above (the same dots, dark shares 0.36 and
+  // 0.25), and 2 px dots every 4 px (dark share 0.25 as above, a quarter of
+  // the ink a dot) are other strands (+1).
+  for (const auto& [period, dot] : {std::pair{5, 3}, std::pair{4, 2}}) {
+    Drawing d = strand_under_band();
+    tone(d, 1, 6, 3, 0);
+    tone(d, 2, period, dot, 0);
+    EXPECT_EQ(test::regions_with(run_strand(d, 1.0), 1), (std::vector<int>{1})) << period;
+  }
+  Drawing same = strand_under_band();
+  tone(same, 1, 6, 3, 0);
+  tone(same, 2, 6, 3, 3);
+  EXPECT_EQ(test::regions_with(run_strand(same, 1.0), 1), (std::vector<int>{1, 2}));
+}
+
+TEST(ToneJoins, PaperWhitePiecesOnAScreentoneDrawingAreJoined) {
+  // Both pieces untoned among toned hair (band and back): -0.6.
+  Drawing d = strand_under_band();
+  tone(d, 3, 6, 3, 0);
+  tone(d, 4, 5, 2, 1);
+  EXPECT_EQ(test::regions_with(run_strand(d, 0.2), 1), (std::vector<int>{1, 2}));
+}
+
+TEST(PathJoins, SliverOfTheBackHairsToneIsJoinedThoughLinesDarkenTheBack) {
+  // The tone of SliverInOneScreentoneIsJoined; a drawn line (4 px, 120 px
+  // long) inside the back hair raises its dark share by 0.035 over the
+  // sliver's, past the 0.02 the dark shares alone allow; the whole dots of
+  // both carry the same ink, so they are one tone.
+  Drawing d = back_hair_and_sliver(kBack);
+  tone(d, 1, 4, 2, 0);
+  tone(d, 2, 4, 2, 2);
+  for (int y = 100; y < 104; ++y)
+    for (int x = 25; x < 145; ++x) d.image.at(x, y) = Rgba{20, 15, 10, 255};
+  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1, 2}));
+}
+
 TEST(PathJoins, PiecesWithNoOccluderInCommonAreNotJoined) {
   // Strand 3 lies over the back hair only and 4 over the sliver only: no
   // region lies above both, so no path runs under their common occluders.
