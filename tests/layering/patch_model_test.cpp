@@ -262,6 +262,42 @@ TEST(PatchScore, BothScoresAtOnceAreTheSameScores) {
   }
 }
 
+TEST(PatchScore, BothScoresAtOnceOnSparsePatches) {
+  // Patches as the layering makes them (mostly zeros, quarters, a grey
+  // channel), plus −0, NaN-free odd values and a network reading fewer
+  // inputs: patch_scores skips the zeros and builds the swapped patch's
+  // inputs itself, and must still give the two scores to the bit.
+  const PatchNet& order = patch_weights();
+  const PatchNet& same = patch_same_weights().net;
+  std::mt19937 rng(29);
+  std::uniform_int_distribution<int> quarter(-4, 4), pick(0, 9);
+  std::uniform_real_distribution<float> grey(0, 2);
+  for (int k = 0; k < 20; ++k) {
+    Patch p{};
+    for (int i = 0; i < kPatchLabelInputs; ++i) {
+      const int c = pick(rng);
+      p[i] = c < 6 ? 0.0f : c == 6 ? -0.0f : 0.25f * static_cast<float>(quarter(rng));
+    }
+    for (int i = kPatchLabelInputs; i < kPatchInputs; ++i) p[i] = pick(rng) < 5 ? 0.0f : grey(rng);
+    for (int used : {kPatchInputs, kPatchLabelInputs, kPatchScaleInputs + 7}) {
+      const PatchScores s = patch_scores(order, used, same, p);
+      EXPECT_EQ(s.order, patch_net(order, p, used) - patch_net(order, swapped(p), used));
+      EXPECT_EQ(s.same, patch_same_score(same, p));
+    }
+  }
+  // A junction of the T map, with the drawing's grey channel.
+  Image image(40, 30);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x)
+      image.at(x, y) = Rgba{static_cast<std::uint8_t>(7 * x), static_cast<std::uint8_t>(5 * y),
+                            static_cast<std::uint8_t>(x * y), 255};
+  const Patch t = junction_patch(t_junction(), PatchImage{&image, 20.0}, Vec2(20, 15), Vec2(1, 0),
+                                 1, 3, false, 6.0);
+  const PatchScores s = patch_scores(order, patch_inputs_used(order), same, t);
+  EXPECT_EQ(s.order, patch_score(order, t));
+  EXPECT_EQ(s.same, patch_same_score(same, t));
+}
+
 TEST(PatchScore, WalkingTheBoundaryBackwardsFlipsTheSignExactly) {
   const LabelMap m = t_junction();
   const BoundaryGraph g = build_boundary_graph(m);
