@@ -153,8 +153,8 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::band_high");
   app.add_option("--scorer-threshold", options.join_scorer.threshold,
                  "JoinScorerOptions::threshold");
-  app.add_flag("--scorer-may-refuse", options.join_scorer.may_refuse,
-               "JoinScorerOptions::may_refuse");
+  app.add_option("--scorer-refuse-below", options.join_scorer.refuse_below,
+                 "JoinScorerOptions::refuse_below");
   bool bound = false;
   app.add_flag("--upper-bound", bound,
                "Also count the true pairs linked through regions lying above them (what any "

@@ -118,7 +118,7 @@ void report(const std::string& name, const std::vector<Row>& rows,
       name.c_str(), low, high, label.size(), pos, auc(hand, label), auc(learned, label), limit,
       hand_tp, hand_fp, threshold, net_tp, net_fp);
   // Above the limit, accepted by the scorer (rescued); below it, refused (vetoed).
-  for (double t : {0.5, 0.7, 0.8, 0.9}) {
+  for (double t : {0.05, 0.1, 0.2, 0.5, 0.7, 0.8, 0.9}) {
     int rescued[2] = {0, 0}, vetoed[2] = {0, 0};
     for (std::size_t i = 0; i < label.size(); ++i) {
       const bool by_hand = -hand[i] <= limit, by_net = learned[i] >= t;
@@ -126,7 +126,7 @@ void report(const std::string& name, const std::vector<Row>& rows,
       if (by_hand && !by_net) ++vetoed[label[i]];
     }
     std::printf(
-        "  p >= %.1f: rescued above the limit right / wrong %d / %d; vetoed below it %d / %d\n", t,
+        "  p >= %.2f: rescued above the limit right / wrong %d / %d; vetoed below it %d / %d\n", t,
         rescued[1], rescued[0], vetoed[1], vetoed[0]);
   }
 }

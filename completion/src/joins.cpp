@@ -130,8 +130,10 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
     double p = -1.0;
     if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
       p = join_probability(net, features[k]);
-      const double learned = o.max_join_cost + (s.threshold - p) * (s.band_high - s.band_low);
-      j.cost = s.may_refuse ? learned : std::min(j.cost, learned);
+      if (p >= s.threshold)
+        j.cost = std::min(j.cost, o.max_join_cost + (s.threshold - p) * (s.band_high - s.band_low));
+      else if (p < s.refuse_below)
+        j.cost = std::numeric_limits<double>::infinity();
     }
     if (ctx.join_log == nullptr) continue;
     JoinCandidate c;

@@ -144,29 +144,41 @@ TEST(JoinScorer, FeaturesDoNotChangeUnderMirrorOrTransposition) {
 }
 
 TEST(JoinScorer, EnabledScorerDecidesTheBandOnly) {
-  // The band widened down to 0 takes in the straight band's join.
-  for (bool may_refuse : {false, true}) {
-    Options o;
-    o.inpaint_strands = false;
-    o.inpaint_background = false;
-    o.join_scorer.record = true;
-    o.join_scorer.enabled = true;
-    o.join_scorer.band_low = 0.0;
-    o.join_scorer.band_high = 1.8;
-    o.join_scorer.may_refuse = may_refuse;
-    const Result r = complete_strands(test::input_of(banded(false), Vec2(150, 300)), o);
-    const JoinCandidate* c = candidate(r, 1, 2);
-    ASSERT_NE(c, nullptr);
-    ASSERT_LE(c->hand_cost, 1.8);
-    EXPECT_GE(c->probability, 0.0);
-    EXPECT_LE(c->probability, 1.0);
-    const double learned = 2.4 + (0.5 - c->probability) * 1.8;
-    EXPECT_NEAR(c->cost, may_refuse ? learned : std::min(learned, c->hand_cost), 1e-9);
-    EXPECT_EQ(c->chosen, c->cost <= 2.4);
-    for (const JoinCandidate& other : r.join_candidates)
-      if (other.hand_cost > 1.8) {
-        EXPECT_EQ(other.probability, -1.0);
-        EXPECT_EQ(other.cost, other.hand_cost);
+  // The band widened down to 0 takes in the band's join; thresholds on both
+  // sides of its probability, for the band painted alike and flipped.
+  for (bool flipped : {false, true}) {
+    const Drawing d = banded(flipped);
+    for (double threshold : {0.02, 0.5, 0.98, 0.9999})
+      for (double refuse_below : {0.0, 0.01, threshold}) {
+        Options o;
+        o.inpaint_strands = false;
+        o.inpaint_background = false;
+        o.join_scorer.record = true;
+        o.join_scorer.enabled = true;
+        o.join_scorer.band_low = 0.0;
+        o.join_scorer.band_high = 1.8;
+        o.join_scorer.threshold = threshold;
+        o.join_scorer.refuse_below = refuse_below;
+        const Result r = complete_strands(test::input_of(d, Vec2(150, 300)), o);
+        const JoinCandidate* c = candidate(r, 1, 2);
+        ASSERT_NE(c, nullptr);
+        ASSERT_LE(c->hand_cost, 1.8);
+        const double p = c->probability;
+        EXPECT_GE(p, 0.0);
+        EXPECT_LE(p, 1.0);
+        if (p >= threshold)
+          EXPECT_NEAR(c->cost, std::min(c->hand_cost, 2.4 + (threshold - p) * 1.8), 1e-9);
+        else if (p < refuse_below)
+          EXPECT_TRUE(std::isinf(c->cost));
+        else
+          EXPECT_EQ(c->cost, c->hand_cost);
+        EXPECT_EQ(c->chosen, c->cost <= 2.4);
+        EXPECT_EQ(r.joins, c->chosen ? 1 : 0);
+        for (const JoinCandidate& other : r.join_candidates)
+          if (other.hand_cost > 1.8) {
+            EXPECT_EQ(other.probability, -1.0);
+            EXPECT_EQ(other.cost, other.hand_cost);
+          }
       }
   }
 }
@@ -274,6 +286,9 @@ TEST(JoinScorer, BadInputThrows) {
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.threshold = 1.0;
+  EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
+  o = {};
+  o.join_scorer.refuse_below = 0.95;  // above the threshold
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
 }
 

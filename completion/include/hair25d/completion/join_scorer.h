@@ -39,14 +39,15 @@ const JoinScorerNet& default_join_scorer();
 // When and how completion uses the scorer (completion::Options::join_scorer).
 struct JoinScorerOptions {
   // Strand-join candidates whose hand cost lies in [band_low, band_high]
-  // (where the cost does not separate right from wrong) are decided by the
-  // scorer: cost = max_join_cost + (threshold − p) × (band_high − band_low).
+  // (where the cost does not separate right from wrong) are judged by the
+  // scorer's probability p: with p >= threshold the cost becomes at most
+  // max_join_cost + (threshold − p) × (band_high − band_low) (accepted, and
+  // ranked by p); with p < refuse_below the candidate is refused; else the
+  // hand cost stands.
   bool enabled = false;
   double band_low = 1.4, band_high = 3.2;
-  double threshold = 0.5;
-  // Without it the scorer only lowers costs: it may accept a candidate the
-  // hand cost refuses, never refuse one it accepts.
-  bool may_refuse = false;
+  double threshold = 0.9;
+  double refuse_below = 0.0;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
