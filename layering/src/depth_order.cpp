@@ -89,6 +89,15 @@ class GroupDag {
 
 DepthOrder order_regions(const std::vector<int>& regions,
                          const std::vector<RegionRelation>& relations) {
+  return order_regions(regions, relations, {});
+}
+
+DepthOrder order_regions(const std::vector<int>& regions,
+                         const std::vector<RegionRelation>& relations,
+                         const std::vector<char>& firm) {
+  if (!firm.empty() && firm.size() != relations.size())
+    throw Error("layering::order_regions: firm flags = " + std::to_string(firm.size()) + " for " +
+                std::to_string(relations.size()) + " relations; must be none or one per relation");
   std::map<int, int> index;
   for (int id : regions) index.emplace(id, static_cast<int>(index.size()));
   const int n = static_cast<int>(index.size());
@@ -109,16 +118,21 @@ DepthOrder order_regions(const std::vector<int>& regions,
 
   // Strongest first, so a cycle is broken at its weakest link: user-fixed
   // relations, then above/below by |score|, then "equal" (which has no
-  // score): a same-depth claim never undoes a placed above/below.
+  // score): a same-depth claim never undoes a placed above/below — unless
+  // it is flagged firm.
   std::vector<int> order(relations.size());
   std::iota(order.begin(), order.end(), 0);
-  auto rank = [&](const RegionRelation& r) {
-    return r.user_fixed ? 0 : (r.relation == Relation::kEqual ? 2 : 1);
+  // Firm "equal" relations come right after the user-fixed ones.
+  auto rank = [&](int k) {
+    const RegionRelation& r = relations[k];
+    if (r.user_fixed) return 0;
+    if (r.relation != Relation::kEqual) return 2;
+    return !firm.empty() && firm[k] ? 1 : 3;
   };
   std::stable_sort(order.begin(), order.end(), [&](int p, int q) {
     const RegionRelation& a = relations[p];
     const RegionRelation& b = relations[q];
-    if (rank(a) != rank(b)) return rank(a) < rank(b);
+    if (rank(p) != rank(q)) return rank(p) < rank(q);
     return std::abs(a.score) > std::abs(b.score);
   });
 

@@ -717,6 +717,12 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     left_normal.normalize();
     return RelationAnchor{pts[m], b.left == a ? Vec2(-left_normal) : left_normal};
   };
+  // Same-depth pairs the joined model (6c with the patch network) is sure
+  // of: mean log-odds over kFirmEqualLogOdds. They go before the orders
+  // (depth_order.h), which otherwise override an "equal" between regions
+  // ordered through others.
+  constexpr double kFirmEqualLogOdds = 2.0;
+  std::vector<char> firm;
   for (const auto& [k, acc] : pairs) {
     RegionRelation r;
     r.a = k.first;
@@ -726,7 +732,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     if (acc.occluding < options.equal_fraction * acc.total || acc.occluding == 0 || same_depth) {
       r.relation = Relation::kEqual;
       r.score = 0.0;
+      firm.push_back(same_depth && use_patches && acc.same > kFirmEqualLogOdds * acc.occluding);
     } else {
+      firm.push_back(0);
       r.score = acc.score / acc.occluding;
       r.relation = relation_of_sign(r.score);
     }
@@ -741,6 +749,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                      [&](const RegionRelation& r) { return r.a == k.first && r.b == k.second; });
     if (it == out.relations.end()) {
       out.relations.push_back({k.first, k.second, rel, 0.0, true, false});
+      firm.push_back(0);
       out.anchors.push_back({});
       continue;
     }
@@ -748,7 +757,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     it->user_fixed = true;
   }
 
-  DepthOrder order = order_regions(ids, out.relations);
+  DepthOrder order = order_regions(ids, out.relations, firm);
   out.relations = std::move(order.relations);
   out.depth = std::move(order.depth);
   out.overridden = std::move(order.overridden);

@@ -31,4 +31,15 @@ struct DepthOrder {
 DepthOrder order_regions(const std::vector<int>& regions,
                          const std::vector<RegionRelation>& relations);
 
+// The same, with `firm` (empty, or one flag per relation): an "equal" flagged
+// firm is taken right after the user-fixed relations, before every
+// above/below one, so stronger orders do not override it (the layering flags
+// the same-depth claims its junction-patch networks are sure of); an
+// above/below relation ordering two regions a firm "equal" merged is
+// overridden to equal. Throws hair25d::Error if `firm` is neither empty nor
+// as long as `relations`.
+DepthOrder order_regions(const std::vector<int>& regions,
+                         const std::vector<RegionRelation>& relations,
+                         const std::vector<char>& firm);
+
 }  // namespace hair25d::layering
