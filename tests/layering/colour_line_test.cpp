@@ -34,7 +34,7 @@ struct TwoPaints {
           image.at(x, y) = Rgba{(60 + 33) / 2, (24 + 13) / 2, (95 + 53) / 2, 255};
       }
   }
-  const Polyline boundary() const {
+  Polyline boundary() const {
     for (const Boundary& b : build_boundary_graph(labels).boundaries)
       if ((b.left == 1 && b.right == 2) || (b.left == 2 && b.right == 1)) return b.points;
     return {};
@@ -64,7 +64,8 @@ TEST(ColourLine, InkOnPaintAsDarkAsItIsALine) {
   EXPECT_NEAR(c.contrast_low, c.contrast, 0.5);
   EXPECT_EQ(c.colour_difference, 0.0);
   // Walked the other way (sides exchanged): the same.
-  const Polyline back(d.boundary().rbegin(), d.boundary().rend());
+  const Polyline forth = d.boundary();
+  const Polyline back(forth.rbegin(), forth.rend());
   EXPECT_NEAR(detail::colour_line(d.image, 2.0, back, 3.0, d.labels, 3 - l, l).contrast, c.contrast,
               1e-9);
 }
