@@ -523,9 +523,10 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   // (generated seed 50's third wedge, left of its left eye). The wedge
   // itself — the piece's pixels of the outline's or the hair's colour,
   // joined through such pixels, all within the wedge reach, no thick
-  // feature — goes; the iris stays with the rest of the piece.
-  // Smaller bits are blends along a face line drawn in the outline's
-  // colour (sylvie's chin), not a point's two converging lines.
+  // feature — goes; the iris stays with the rest of the piece. A wedge has
+  // at least kMinWedge pixels: smaller bits are blends along a face line
+  // drawn in the outline's colour (sylvie's chin), not a point's two
+  // converging lines.
   constexpr int kMinWedge = 20;
   cv::Mat wedge_parts;
   std::vector<std::uint8_t> wedge_goes;
