@@ -218,6 +218,9 @@ std::string join_scorer_source(const JoinScorerNet& net, const std::string& comm
     for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + f(values[i]);
     return out + "}";
   };
+  // Kept as written (long rows, the comment's own lines): clang-format would
+  // reflow it and the file would no longer be what the trainer wrote.
+  s << "// clang-format off\n";
   std::istringstream lines(comment);
   for (std::string line; std::getline(lines, line);) s << "// " << line << "\n";
   s << "// Generated file: do not edit (bench/completion/train_join_scorer writes it).\n"

@@ -1,3 +1,4 @@
+// clang-format off
 // The learned join scorer's weights (join_scorer.h), trained by
 // bench/completion/train_join_scorer train on 10473 candidates (hand cost 1-3.2), seed 1, 60 epochs, final loss 0.271272.
 // Generated file: do not edit (bench/completion/train_join_scorer writes it).
