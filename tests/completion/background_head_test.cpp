@@ -30,6 +30,28 @@ Result run(const test::Drawing& d, Vec2 head) {
   return complete_strands(test::input_of(d, head), o);
 }
 
+// A face (skin in an ink rim, radius r about (cx, cy)) under a cap of hair,
+// region 1, that ends at cap_bottom: the scene of the wedge tests below.
+test::Drawing face_under_cap(int w, int h, double cx, double cy, double r, double cap_bottom) {
+  test::Drawing d{Image(w, h, Rgba{0, 0, 0, 0}), LabelMap(w, h, 0), {}};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double e = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+      if (e < r) d.image.at(x, y) = e > r - 3 ? kInk : kSkin;
+    }
+  test::paint(
+      d,
+      [=](double x, double y) { return std::hypot(x - cx, y - (cy - 8)) < 84 && y < cap_bottom; },
+      kHair, 1);
+  return d;
+}
+
+// A lock's point below the cap: 10 px wide at the cap, 30 px long.
+bool in_wedge_below(double x, double y, double cx, double cap_bottom) {
+  const double t = (y - (cap_bottom - 3)) / 30.0;
+  return t >= 0 && t < 1 && std::abs(x - cx) < 5.0 * (1 - t);
+}
+
 // A face (an egg, 3 px ink outline) whose lower half runs open into the
 // neck and on to the drawing's lower edge (lucy's soft lines are no ink:
 // her face's skin reaches her neck), cut from the upper half by a line (a
@@ -105,22 +127,10 @@ bool in_eye(double x, double y) {
     if (std::hypot(x - ex, y - kEyeY) < kEyeR) return true;
   return false;
 }
-bool in_wedge(double x, double y) {
-  const double t = (y - (kCapBottom - 3)) / 30.0;
-  return t >= 0 && t < 1 && std::abs(x - kCx) < 5.0 * (1 - t);
-}
+bool in_wedge(double x, double y) { return in_wedge_below(x, y, kCx, kCapBottom); }
 
 test::Drawing drawing() {
-  test::Drawing d{Image(kW, kH, Rgba{0, 0, 0, 0}), LabelMap(kW, kH, 0), {}};
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      const double r = std::hypot(x + 0.5 - kCx, y + 0.5 - kCy);
-      if (r < kR) d.image.at(x, y) = r > kR - 3 ? kInk : kSkin;
-    }
-  test::paint(
-      d,
-      [](double x, double y) { return std::hypot(x - kCx, y - (kCy - 8)) < 84 && y < kCapBottom; },
-      kHair, 1);
+  test::Drawing d = face_under_cap(kW, kH, kCx, kCy, kR, kCapBottom);
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
       if (in_eye(x + 0.5, y + 0.5)) d.image.at(x, y) = kIris;
@@ -174,6 +184,92 @@ TEST(HeadBehindHairJaw, KnownPixelsFarFromTheHairAreUntouched) {
       }
     EXPECT_EQ(changed, 0);
   }
+}
+
+// A lock's point lying on the face right beside an eye: its converging
+// outlines make a wedge of the outline's colour that touches the iris, so
+// the dark piece they form holds a pixel of another colour (generated seed
+// 50's third wedge, beside its left eye).
+namespace eye_wedge {
+
+constexpr Rgba kIris{25, 60, 30, 255};  // dark green: dark, of no hair colour
+
+constexpr int kW = 300, kH = 240;
+constexpr double kCx = 150, kCy = 140, kR = 62, kCapBottom = 122;
+constexpr double kEyeX = kCx + 10, kEyeY = 136, kEyeR = 7;
+
+bool in_eye(double x, double y) { return std::hypot(x - kEyeX, y - kEyeY) < kEyeR; }
+// The point: 10 px wide at the cap, 30 px long, with a core of the lock's
+// fill colour between its two lines near the cap.
+bool in_wedge(double x, double y) { return in_wedge_below(x, y, kCx, kCapBottom); }
+bool in_core(double x, double y) {
+  const double t = (y - (kCapBottom - 3)) / 30.0;
+  return t >= 0 && t < 0.35 && std::abs(x - kCx) < 1.5 * (1 - t);
+}
+
+test::Drawing drawing() {
+  test::Drawing d = face_under_cap(kW, kH, kCx, kCy, kR, kCapBottom);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      if (in_eye(px, py)) d.image.at(x, y) = kIris;
+      if (in_wedge(px, py) && d.regions.at(x, y) == 0)
+        d.image.at(x, y) = in_core(px, py) ? kHair : kOutline;
+    }
+  return d;
+}
+
+}  // namespace eye_wedge
+
+// The wedge goes with the hair and the eye it touches stays. Before, the
+// whole dark piece (wedge and iris) was "mixed" and kept: the wedge stayed
+// on the face as a black spike.
+TEST(HeadBehindHairWedgeAtAnEye, WedgeTouchingAnIrisGoesTheIrisStays) {
+  using namespace eye_wedge;
+  const test::Drawing d = drawing();
+  ASSERT_TRUE(in_eye(kCx + 4.5, kCapBottom + 14)) << "the eye touches the wedge";
+  const Result r = run(d, Vec2(kCx, kCy));
+  int tip = 0, tip_dark = 0, eye = 0, eye_kept = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      const Rgba& c = r.background.at(x, y);
+      if (in_wedge(px, py) && !in_eye(px, py) && py >= kCapBottom + 2) {
+        ++tip;
+        tip_dark += luma(c) < 120;
+      }
+      if (in_eye(px, py) && !in_wedge(px, py) && d.regions.at(x, y) == 0) {
+        ++eye;
+        eye_kept += c == d.image.at(x, y);
+      }
+    }
+  ASSERT_GT(tip, 100);
+  ASSERT_GT(eye, 100);
+  EXPECT_LE(tip_dark, tip / 50) << "the wedge is left on the face";
+  EXPECT_GE(eye_kept, eye * 85 / 100) << "the eye went with the wedge";
+}
+
+// The same face without the core of the lock's colour: a piece all of the
+// outline's colour touching an eye is a face line of that colour (an upper
+// lash), and stays.
+TEST(HeadBehindHairWedgeAtAnEye, LineOfTheOutlineColourWithoutFillStays) {
+  using namespace eye_wedge;
+  test::Drawing d = drawing();
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      if (in_core(x + 0.5, y + 0.5) && d.regions.at(x, y) == 0) d.image.at(x, y) = kOutline;
+  const Result r = run(d, Vec2(kCx, kCy));
+  int tip = 0, tip_dark = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      if (in_wedge(px, py) && !in_eye(px, py) && py >= kCapBottom + 8) {
+        ++tip;
+        tip_dark += luma(r.background.at(x, y)) < 120;
+      }
+    }
+  ASSERT_GT(tip, 50);
+  EXPECT_GE(tip_dark, tip * 9 / 10) << "a line of the outline's colour at an eye went";
 }
 
 }  // namespace
