@@ -74,10 +74,10 @@ BoundaryLine colour_line(const Image& image, double line_width, const Polyline& 
   const int n = static_cast<int>(pts.size());
   const double total = polyline_length(curve);
   skip = std::min(skip, total / 3.0);
-  // The reaches of LineResponse::measure: the centre within half a line
-  // width + 1 px, paper within 3 line widths + 2 px.
-  const double half = 0.5 * line_width + 1.0;
-  const double reach = 3.0 * line_width + 2.0;
+  // The reaches of LineResponse::measure.
+  const Reach reaches = reach_of(line_width);
+  const double half = reaches.half;
+  const double reach = reaches.paper;
   const int span = std::max(2, static_cast<int>(std::lround(line_width)));
   const int stride = n > 40 ? 2 : 1;
   std::vector<double> values, grey_values;

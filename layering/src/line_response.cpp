@@ -118,15 +118,6 @@ double median_of(std::vector<double>& v) {
   return *mid;
 }
 
-// How far from a boundary point measure() looks (pixels): for the line
-// centre, for paper, and for paint on each side.
-struct Reach {
-  double half, paper, paint_near, paint_far;
-};
-Reach reach_of(double line_width) {
-  return {0.5 * line_width + 1.0, 3.0 * line_width + 2.0, line_width + 2.0, 2.5 * line_width + 3.0};
-}
-
 double grey_sigma(double line_width) { return std::max(0.6, 0.25 * line_width); }
 double colour_sigma(double line_width) { return std::max(1.0, 0.5 * line_width); }
 // At least the radius of the kernel cv::GaussianBlur makes for a float image

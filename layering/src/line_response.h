@@ -21,6 +21,15 @@ namespace hair25d::layering::detail {
 using Rgb3f = std::array<float, 3>;
 struct LabelBox;  // raster_scan.h
 
+// How far from a boundary point the line measurements look (pixels): for
+// the line centre, for paper, and for paint on each side.
+struct Reach {
+  double half, paper, paint_near, paint_far;
+};
+inline Reach reach_of(double line_width) {
+  return {0.5 * line_width + 1.0, 3.0 * line_width + 2.0, line_width + 2.0, 2.5 * line_width + 3.0};
+}
+
 // What is measured along one boundary.
 struct BoundaryLine {
   double contrast = 0.0;      // median over samples of the line's contrast (grey levels)
