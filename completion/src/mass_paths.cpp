@@ -99,6 +99,42 @@ std::vector<Landing> paths_between(const Context& ctx, int a, int b, const std::
   return out;
 }
 
+// The landings of paths that cross their occluders, not ones that run along
+// one (two strand tops lying on the face, joined through the cap above
+// both): the straight line between a path's ends lies under them too.
+std::vector<Landing> crossing_paths(const Context& ctx, int a, int b, const std::set<int>& common,
+                                    double reach) {
+  std::vector<Landing> landings = paths_between(ctx, a, b, common, reach);
+  std::erase_if(landings, [&](const Landing& l) {
+    const double length = (l.to - l.from).norm();
+    int under = 0, total = 0, zeros = 0;
+    for (double t = 0.0; t <= length; t += 1.0, ++total) {
+      const int label = ctx.label(l.from + (length > 0 ? t / length : 0.0) * (l.to - l.from));
+      zeros = label == 0 ? zeros + 1 : 0;
+      under +=
+          label == a || label == b || (label == 0 && zeros <= kMaxZeroRun) || common.count(label);
+    }
+    return under < kMinStraightCover * total;
+  });
+  return landings;
+}
+
+// The hidden part of a path join: kBandWidth px bands along up to kBands of
+// its chords.
+std::vector<Polyline> path_bands(const std::vector<Landing>& landings) {
+  std::vector<Polyline> out;
+  const int n = static_cast<int>(landings.size());
+  const int bands = std::min(n, kBands);
+  for (int s = 0; s < bands; ++s) {
+    const Landing& l = landings[static_cast<std::size_t>(s) * n / bands];
+    Vec2 side(-(l.to - l.from).y(), (l.to - l.from).x());
+    if (side.norm() < 1e-9) continue;
+    side *= 0.5 * kBandWidth / side.norm();
+    out.push_back({l.from + side, l.to + side, l.to - side, l.from - side});
+  }
+  return out;
+}
+
 // Share of a region's outline within 3 px of the face.
 double face_share(const Context& ctx, const cv::Mat& near_face, int region) {
   const std::vector<cv::Point>& contour = ctx.regions.at(region).contour;
@@ -200,7 +236,8 @@ double RegionTones::dot_mass(int region) {
     dots.push_back(c);
     cores.push_back(core);
   }
-  if (static_cast<int>(dots.size()) < kMinDots) return masses_[region] = -1.0;
+  dots_[region] = static_cast<int>(dots.size());
+  if (static_cast<int>(dots.size()) < kMinMassDots) return masses_[region] = -1.0;
   std::nth_element(cores.begin(), cores.begin() + static_cast<std::ptrdiff_t>(cores.size() / 2),
                    cores.end());
   const float range = std::max(1.0f, paper - cores[cores.size() / 2]);
@@ -217,7 +254,7 @@ double RegionTones::dot_mass(int region) {
       }
     masses.push_back(mass);
   }
-  if (static_cast<int>(masses.size()) < kMinDots) return masses_[region] = -1.0;
+  if (static_cast<int>(masses.size()) < kMinMassDots) return masses_[region] = -1.0;
   const std::size_t m = masses.size() / 2;
   std::nth_element(masses.begin(), masses.begin() + static_cast<std::ptrdiff_t>(m), masses.end());
   return masses_[region] = masses[m];
@@ -226,7 +263,10 @@ double RegionTones::dot_mass(int region) {
 bool RegionTones::screentone() {
   if (screentone_ < 0) {
     int dotted = 0;
-    for (const auto& [id, info] : ctx_->regions) dotted += dot_mass(id) > 0;
+    for (const auto& [id, info] : ctx_->regions) {
+      dot_mass(id);
+      dotted += dots_[id] >= kMinDots;
+    }
     screentone_ = ctx_->regions.empty() ? 0 : 4 * dotted >= static_cast<int>(ctx_->regions.size());
   }
   return screentone_ == 1;
@@ -310,21 +350,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
       if (match == RegionTones::Match::kOther) continue;
       bool textured = match == RegionTones::Match::kSame;
       if (!textured && !tones.same_tone(a, b, &textured)) continue;
-      std::vector<Landing> landings = paths_between(ctx, a, b, common, reach);
-      // A path that crosses its occluders, not one that runs along one (two
-      // strand tops lying on the face, joined through the cap above both):
-      // the straight line between its ends lies under them too.
-      std::erase_if(landings, [&](const Landing& l) {
-        const double length = (l.to - l.from).norm();
-        int under = 0, total = 0, zeros = 0;
-        for (double t = 0.0; t <= length; t += 1.0, ++total) {
-          const int label = ctx.label(l.from + (length > 0 ? t / length : 0.0) * (l.to - l.from));
-          zeros = label == 0 ? zeros + 1 : 0;
-          under += label == a || label == b || (label == 0 && zeros <= kMaxZeroRun) ||
-                   common.count(label);
-        }
-        return under < kMinStraightCover * total;
-      });
+      const std::vector<Landing> landings = crossing_paths(ctx, a, b, common, reach);
       if (static_cast<int>(landings.size()) < kMinLandings) continue;
       std::vector<double> colour_steps;
       const int n = static_cast<int>(landings.size());
@@ -353,19 +379,51 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
       j.region_b = b;
       j.rays = n;
       j.colour = step;
-      const int bands = std::min(n, kBands);
-      for (int s = 0; s < bands; ++s) {
-        const Landing& l = landings[static_cast<std::size_t>(s) * n / bands];
-        Vec2 side(-(l.to - l.from).y(), (l.to - l.from).x());
-        if (side.norm() < 1e-9) continue;
-        side *= 0.5 * kBandWidth / side.norm();
-        j.bands.push_back({l.from + side, l.to + side, l.to - side, l.from - side});
-      }
+      j.bands = path_bands(landings);
       out.push_back(std::move(j));
     }
   std::sort(out.begin(), out.end(), [](const MassJoin& x, const MassJoin& y) {
     return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
   });
+  // Screentone: pieces of a strand crossed by another strand (a bang under
+  // a bang, a side lock under a bang) are front hair, lying above some
+  // region, and their dots are the one cue they carry. Two such pieces of
+  // one tone (dot masses and dark shares agree) linked under the strands
+  // lying above both are joined, after the back hair's joins. Back-hair
+  // pieces are left to the rules above: the back hair's tone (the
+  // generator's 0.35-0.55) overlaps the strands' (0.12-0.45), and on
+  // screentone seeds 101-116 every wrong candidate of this kind paired a
+  // strand with a piece lying above no region (back hair, a bang's end on
+  // the face), none of two front pieces.
+  if (tones.screentone()) {
+    std::vector<MassJoin> toned;
+    for (auto i = front.begin(); i != front.end(); ++i)
+      for (auto k = std::next(i); k != front.end(); ++k) {
+        const int a = *i, b = *k;
+        if (!ctx.regions.count(a) || !ctx.regions.count(b)) continue;
+        if (ctx.is_above(a, b) || ctx.is_above(b, a)) continue;
+        if (tones.match(a, b) != RegionTones::Match::kSame) continue;
+        std::set<int> common;
+        for (int u : above(a))
+          if (above(b).count(u)) common.insert(u);
+        if (common.empty()) continue;
+        const std::vector<Landing> landings = crossing_paths(ctx, a, b, common, reach);
+        if (static_cast<int>(landings.size()) < kMinLandings) continue;
+        MassJoin j;
+        j.region_a = a;
+        j.region_b = b;
+        j.rays = static_cast<int>(landings.size());
+        const double ma = tones.dot_mass(a), mb = tones.dot_mass(b);
+        j.colour = std::abs(ma - mb) / std::max(ma, mb);  // the mass step, not RGB
+        j.bands = path_bands(landings);
+        toned.push_back(std::move(j));
+      }
+    std::sort(toned.begin(), toned.end(), [](const MassJoin& x, const MassJoin& y) {
+      return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
+    });
+    out.insert(out.end(), std::make_move_iterator(toned.begin()),
+               std::make_move_iterator(toned.end()));
+  }
   return out;
 }
 

@@ -390,6 +390,87 @@ TEST(PathJoins, SliverOfTheBackHairsToneIsJoinedThoughLinesDarkenTheBack) {
   EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1, 2}));
 }
 
+// Tone path joins (mass_paths.cpp): the strand of strand_under_band bends
+// under the band, its lower piece (2) 12 px right of the upper one (1) and
+// `depth` px deep below the band. Strand joins are ruled out (tangents
+// within 0.5 degrees), the pieces lie above region 4 (front hair, no back
+// hair for the mass and path joins): only a path under band 3, which lies
+// above both, joins them, and on a screentone drawing only when their dots
+// are one tone.
+Drawing bent_strand_under_band(int depth, int width = 40) {
+  Drawing d = blank(250, 300);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kFan, 4);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y > 70 && y < 140; }, kFan, 1);
+  paint(
+      d,
+      [depth, width](double x, double y) {
+        return x > 112 && x < 112 + width && y >= 140 && y < 162 + depth;
+      },
+      kFan, 2);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 210 && y > 118 && y < 162; }, kFan, 3);
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
+  return d;
+}
+
+Result run_bent(const Drawing& d) {
+  Options o;
+  o.max_join_angle_deg = 0.5;
+  o.inpaint_background = false;
+  o.face_joins = false;
+  return complete_strands(test::input_of(d, Vec2(125, 10)), o);
+}
+
+TEST(TonePathJoins, StrandPiecesOfOneToneAreJoinedUnderTheStrandLyingOnBoth) {
+  // One tone, its dots 3 px off between the pieces (the old rules left them
+  // apart: no strand join fits, and front hair makes no path join).
+  Drawing d = bent_strand_under_band(48);
+  tone(d, 1, 6, 3, 0);
+  tone(d, 2, 6, 3, 3);
+  const Result r = run_bent(d);
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(r, 3), (std::vector<int>{3}));
+  EXPECT_EQ(test::regions_with(r, 4), (std::vector<int>{4}));
+  // Completed pixels lie under the band only.
+  const CompletedStrand* s = strand_with(r, 1);
+  ASSERT_NE(s, nullptr);
+  int completed = 0;
+  for (int y = 0; y < s->mask.height(); ++y)
+    for (int x = 0; x < s->mask.width(); ++x) {
+      if (s->mask.at(x, y) != 2) continue;
+      ++completed;
+      EXPECT_EQ(r.regions.at(x + s->origin.x(), y + s->origin.y()), 3);
+    }
+  EXPECT_GT(completed, 0);
+  // Flat pieces (no screentone drawing) stay apart: the colour says nothing
+  // there about strands of one paint.
+  EXPECT_EQ(test::regions_with(run_bent(bent_strand_under_band(48)), 1), (std::vector<int>{1}));
+}
+
+TEST(TonePathJoins, StrandPiecesOfTwoTonesAreNotJoined) {
+  // 3 px dots every 5 px below against every 6 px above; 2 px dots every
+  // 4 px (the same dark share, a quarter of the ink a dot).
+  for (const auto& [period, dot] : {std::pair{5, 3}, std::pair{4, 2}}) {
+    Drawing d = bent_strand_under_band(48);
+    tone(d, 1, 6, 3, 0);
+    tone(d, 2, period, dot, 0);
+    EXPECT_EQ(test::regions_with(run_bent(d), 1), (std::vector<int>{1})) << period;
+  }
+}
+
+TEST(TonePathJoins, SmallEndWithTwoWholeDotsIsJoined) {
+  // The lower piece shows 12 x 13 px below the band: two whole dots (clear
+  // of its outline), fewer than the three a dot mass needed before (with
+  // kMinMassDots = 3 this test fails).
+  Drawing d = bent_strand_under_band(12, 14);
+  tone(d, 1, 6, 3, 0);
+  tone(d, 2, 6, 3, 0);
+  tone(d, 4, 5, 2, 1);  // toned back: a screentone drawing without the small piece
+  EXPECT_EQ(test::regions_with(run_bent(d), 1), (std::vector<int>{1, 2}));
+}
+
 TEST(PathJoins, PiecesWithNoOccluderInCommonAreNotJoined) {
   // Strand 3 lies over the back hair only and 4 over the sliver only: no
   // region lies above both, so no path runs under their common occluders.
