@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <opencv2/imgproc.hpp>
@@ -24,17 +25,252 @@ constexpr double kBulgeWeight = 4.0;
 // (generated 1000 × 800 drawings: precision 0.702 → 0.754, recall 0.333 →
 // 0.358; annotated cases unchanged).
 constexpr double kNoCommonOccluderCost = 0.2;
-// Cost per 30 RGB of the colour step between the edges beyond the colour
-// spread inside their windows. On the generated drawings (strands of one
-// hair colour with small per-strand changes, flat inside) the chosen strand
-// joins stepped median 3.3 RGB when right and 15.1 when wrong (seeds
-// 101-116); the plain colour term (0.4 per 90 RGB) hardly ranks them, and
-// a heavier one lost annotated joins whose edges lie in shading bands
-// (steps of 36-45 with the spread as large). 0.5: annotated unchanged,
-// generated precision up (flat seeds 1-4 0.846 -> 1.000, 101-116 0.774 ->
-// 0.831; 1000 x 800 0.754 -> 0.811); 1.0 lost gradient recall (0.557 ->
-// 0.528 on 101-116).
-constexpr double kColourStepWeight = 0.5;
+// Cost per 30 RGB of the colour step between the pieces that their paint
+// does not explain (`paint_step`). Session 4 (0.5, the step between the
+// windows' means beyond their spread): on the generated drawings (strands of
+// one hair colour with small per-strand changes) the chosen strand joins
+// stepped median 3.3 RGB when right and 15.1 when wrong (seeds 101-116); a
+// heavier plain colour term lost annotated joins whose edges lie in shading
+// bands, and weight 1.0 lost gradient recall (0.557 -> 0.528). Session 10:
+// with the step measured by the paint (a gradient's predicted change and a
+// cel band's colours no longer count), 1.0: precision / recall 101-116
+// two-tone 0.851 / 0.601, gradient 0.970 / 0.601, flat 0.959 / 0.775
+// (0.5: 0.806 / 0.566 without the shadow ratio, 0.948 / 0.605, 0.943 /
+// 0.731; 1.5: 0.878 / 0.601, 0.969 / 0.583, 0.968 / 0.775); annotated
+// unchanged at all three.
+constexpr double kColourStepWeight = 1.0;
+
+// How a piece is painted next to its cut: its flat colours (cel paint: a
+// base and a shadow band) in the 11 x 11 windows along the edge, and a
+// linear fit of its colour over 25 x 25 windows (a gradient along the
+// strand). Drawn pixels of the region only, not outlines.
+struct EdgePaint {
+  std::vector<Eigen::Vector3d> flats;   // up to two flat colours, commonest first
+  Eigen::Vector3d fit_colour{0, 0, 0};  // the fit's colour at fit_centre
+  Vec2 fit_centre{0, 0};                // mean position of the fitted pixels
+  Eigen::Matrix<double, 3, 2> slope = Eigen::Matrix<double, 3, 2>::Zero();  // RGB per px
+  double fit_residual = 0.0;  // RGB deviation from the fit
+};
+
+// A region's flat colours (up to three, each at least 5 % of its pixels) and
+// the share of its pixels that its three commonest colours hold (4-level
+// bins): near 1 for flat and cel paint, low for gradients and real shading.
+struct RegionPaint {
+  std::vector<Eigen::Vector3d> flats;
+  double exact_share = 0.0;
+};
+
+// Flat paint: both regions' three commonest colours hold this share of their
+// pixels (generated flat drawings 1.0, two-tone 0.88-1.0, gradient mostly
+// 0.15-0.75, the annotated cases 0.07-0.98).
+constexpr double kFlatPaintShare = 0.85;
+// A linear fit explains a piece when its colour deviates from it by at most
+// this (RGB): generated gradient windows 0.5-5.5, two-tone windows holding a
+// band edge 8-29, the annotated cases' 11-73 (line rims, noise).
+constexpr double kLinearResidual = 4.0;
+
+Eigen::Vector3d rgb_at(const Context& ctx, int x, int y) {
+  const Rgba& c = ctx.image->at(x, y);
+  return {static_cast<double>(c.r), static_cast<double>(c.g), static_cast<double>(c.b)};
+}
+
+// The region's own pixels within `radius` (Chebyshev) of every other point
+// of the edge, each once.
+std::vector<cv::Point> pixels_near(const Context& ctx, const Edge& e, int radius) {
+  std::vector<cv::Point> out;
+  double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
+  for (const Vec2& p : e.points) {
+    x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
+    x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
+  }
+  const int bx = static_cast<int>(x0) - radius, by = static_cast<int>(y0) - radius;
+  const int w = static_cast<int>(x1) + radius + 1 - bx, h = static_cast<int>(y1) + radius + 1 - by;
+  if (w <= 0 || h <= 0) return out;
+  cv::Mat seen(h, w, CV_8U, cv::Scalar(0));
+  for (std::size_t i = 0; i < e.points.size(); i += 2) {
+    const int cx = static_cast<int>(e.points[i].x()), cy = static_cast<int>(e.points[i].y());
+    for (int y = cy - radius; y <= cy + radius; ++y)
+      for (int x = cx - radius; x <= cx + radius; ++x) {
+        if (!ctx.original->contains(x, y) || ctx.original->at(x, y) != e.region) continue;
+        std::uint8_t& s = seen.at<std::uint8_t>(y - by, x - bx);
+        if (s) continue;
+        s = 1;
+        out.emplace_back(x, y);
+      }
+  }
+  return out;
+}
+
+// Flat colours of `pixels`: in 8-level bins, the mean of the pixels in the
+// 3 x 3 x 3 bins round the bin whose neighbourhood holds most, taken out in
+// turn while that holds at least `min_share` of the pixels.
+std::vector<Eigen::Vector3d> flat_colours(const Context& ctx, const std::vector<cv::Point>& pixels,
+                                          int most, double min_share) {
+  std::vector<Eigen::Vector3d> flats;
+  if (pixels.size() < 8) return flats;
+  auto key = [](int r, int g, int b) { return ((r >> 3) * 32 + (g >> 3)) * 32 + (b >> 3); };
+  std::map<int, std::vector<Eigen::Vector3d>> bins;
+  for (const cv::Point& p : pixels) {
+    const Rgba& c = ctx.image->at(p.x, p.y);
+    bins[key(c.r, c.g, c.b)].push_back(rgb_at(ctx, p.x, p.y));
+  }
+  auto around =
+      [&](int k,
+          const std::function<void(std::map<int, std::vector<Eigen::Vector3d>>::iterator)>& f) {
+        for (int dr = -1; dr <= 1; ++dr)
+          for (int dg = -1; dg <= 1; ++dg)
+            for (int db = -1; db <= 1; ++db) {
+              auto it = bins.find(k + (dr * 32 + dg) * 32 + db);
+              if (it != bins.end()) f(it);
+            }
+      };
+  while (static_cast<int>(flats.size()) < most) {
+    int best = -1;
+    std::size_t held = 0;
+    for (const auto& [k, list] : bins) {
+      std::size_t n = 0;
+      around(k, [&](auto it) { n += it->second.size(); });
+      if (n > held) held = n, best = k;
+    }
+    if (best < 0 || held < min_share * pixels.size()) break;
+    Eigen::Vector3d sum(0, 0, 0);
+    std::vector<int> taken;
+    around(best, [&](auto it) {
+      for (const Eigen::Vector3d& c : it->second) sum += c;
+      taken.push_back(it->first);
+    });
+    for (int k : taken) bins.erase(k);
+    flats.push_back(sum / static_cast<double>(held));
+  }
+  return flats;
+}
+
+EdgePaint edge_paint(const Context& ctx, const Edge& e) {
+  EdgePaint out;
+  out.flats = flat_colours(ctx, pixels_near(ctx, e, 5), 2, 0.15);
+  const std::vector<cv::Point> wide = pixels_near(ctx, e, 12);
+  if (wide.size() < 8) {
+    out.fit_colour = e.colour;
+    out.fit_residual = std::numeric_limits<double>::infinity();
+    return out;
+  }
+  Vec2 m(0, 0);
+  Eigen::Vector3d c(0, 0, 0);
+  for (const cv::Point& p : wide) m += centre(p), c += rgb_at(ctx, p.x, p.y);
+  m /= static_cast<double>(wide.size());
+  c /= static_cast<double>(wide.size());
+  // Least squares, pulled a little towards no slope where the pixels do not
+  // spread (a thin piece).
+  Eigen::Matrix2d xx = Eigen::Matrix2d::Identity() * 0.5 * static_cast<double>(wide.size());
+  Eigen::Matrix<double, 3, 2> cx = Eigen::Matrix<double, 3, 2>::Zero();
+  for (const cv::Point& p : wide) {
+    const Vec2 d = centre(p) - m;
+    xx += d * d.transpose();
+    cx += (rgb_at(ctx, p.x, p.y) - c) * d.transpose();
+  }
+  out.slope = cx * xx.inverse();
+  double squares = 0.0;
+  for (const cv::Point& p : wide)
+    squares += (rgb_at(ctx, p.x, p.y) - c - out.slope * (centre(p) - m)).squaredNorm();
+  out.fit_residual = std::sqrt(squares / static_cast<double>(wide.size()));
+  out.fit_colour = c;
+  out.fit_centre = m;
+  return out;
+}
+
+RegionPaint region_paint(const Context& ctx, int region) {
+  std::vector<cv::Point> pixels;
+  const RegionInfo& r = ctx.regions.at(region);
+  std::map<int, int> exact;
+  for (int y = r.box.y; y < r.box.y + r.box.height; ++y)
+    for (int x = r.box.x; x < r.box.x + r.box.width; ++x)
+      if (ctx.original->at(x, y) == region) {
+        pixels.emplace_back(x, y);
+        const Rgba& c = ctx.image->at(x, y);
+        ++exact[((c.r >> 2) * 64 + (c.g >> 2)) * 64 + (c.b >> 2)];
+      }
+  RegionPaint out;
+  out.flats = flat_colours(ctx, pixels, 3, 0.05);
+  std::vector<int> counts;
+  for (const auto& [k, n] : exact) counts.push_back(n);
+  std::sort(counts.rbegin(), counts.rend());
+  int top = 0;
+  for (std::size_t k = 0; k < counts.size() && k < 3; ++k) top += counts[k];
+  out.exact_share = pixels.empty() ? 0.0 : static_cast<double>(top) / pixels.size();
+  return out;
+}
+
+// The drawing's cel shadow: per channel, the ratio of a flat-painted
+// region's darker flat colour to its lighter one, when at least 3 regions
+// show two and half of them agree within 0.05 on every channel (the median);
+// none (all 0) otherwise.
+Eigen::Vector3d shadow_ratio(const std::map<int, RegionPaint>& paints) {
+  std::vector<Eigen::Vector3d> ratios;
+  for (const auto& [id, p] : paints) {
+    if (p.exact_share < kFlatPaintShare || p.flats.size() < 2) continue;
+    Eigen::Vector3d light = p.flats[0], dark = p.flats[1];
+    if (light.sum() < dark.sum()) std::swap(light, dark);
+    if (light.minCoeff() < 16 || light.sum() < dark.sum() + 30) continue;
+    ratios.push_back(dark.cwiseQuotient(light));
+  }
+  if (ratios.size() < 3) return Eigen::Vector3d::Zero();
+  Eigen::Vector3d median;
+  for (int c = 0; c < 3; ++c) {
+    std::vector<double> v;
+    for (const auto& r : ratios) v.push_back(r[c]);
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    median[c] = v[v.size() / 2];
+  }
+  std::size_t agree = 0;
+  for (const auto& r : ratios) agree += (r - median).cwiseAbs().maxCoeff() <= 0.05;
+  return 2 * agree >= ratios.size() ? median : Eigen::Vector3d::Zero();
+}
+
+// The largest distance from a flat colour of `from` to the nearest of `to`,
+// or of `to` in the drawing's shadow or out of it (0 when either has none:
+// nothing to compare).
+double flat_distance(const std::vector<Eigen::Vector3d>& from,
+                     const std::vector<Eigen::Vector3d>& to, const Eigen::Vector3d& shadow) {
+  double worst = 0.0;
+  if (to.empty()) return worst;
+  std::vector<Eigen::Vector3d> painted = to;
+  if (shadow.minCoeff() > 0)
+    for (const Eigen::Vector3d& y : to) {
+      painted.push_back(y.cwiseProduct(shadow));
+      painted.push_back(y.cwiseQuotient(shadow));
+    }
+  for (const Eigen::Vector3d& x : from) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& y : painted) nearest = std::min(nearest, (x - y).norm());
+    worst = std::max(worst, nearest);
+  }
+  return worst;
+}
+
+// The colour step between two pieces' cuts that their paint does not
+// explain (RGB):
+// - flat or cel paint (both regions): the flat colours at one cut that the
+//   other piece is not painted in anywhere, the smaller way round. A cel
+//   band spreads a window's colours, so the mean step beyond the spread
+//   said nothing on two-tone drawings; a piece may show only the base or
+//   only the band at its cut, but the strand is painted in both.
+// - colour linear in position (both windows, a gradient along the strand):
+//   the step beyond the change the mean slope of the two pieces predicts
+//   between them, beyond the fits' deviations;
+// - else the step between the windows' means beyond their spread.
+double paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const EdgePaint& pb,
+                  const RegionPaint& ra, const RegionPaint& rb, const Eigen::Vector3d& shadow) {
+  if (ra.exact_share >= kFlatPaintShare && rb.exact_share >= kFlatPaintShare)
+    return std::min(flat_distance(pa.flats, rb.flats, shadow),
+                    flat_distance(pb.flats, ra.flats, shadow));
+  if (std::max(pa.fit_residual, pb.fit_residual) <= kLinearResidual) {
+    const Vec2 d = pb.fit_centre - pa.fit_centre;
+    const Eigen::Vector3d change = 0.5 * (pa.slope + pb.slope) * d;
+    return std::max(
+        0.0, (pb.fit_colour - pa.fit_colour - change).norm() - (pa.fit_residual + pb.fit_residual));
+  }
+  return std::max(0.0, (a.colour - b.colour).norm() - (a.colour_spread + b.colour_spread));
+}
 
 double angle(const Vec2& a, const Vec2& b) {
   const double la = a.norm(), lb = b.norm();
@@ -168,6 +404,17 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   const JoinScorerOptions& scorer = o.join_scorer;
   const bool scoring = scorer.enabled || ctx.join_log != nullptr;
   const double limit = scoring ? std::max(o.max_join_cost, scorer.band_high) : o.max_join_cost;
+  std::vector<EdgePaint> paints(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) paints[i] = edge_paint(ctx, edges[i]);
+  std::map<int, RegionPaint> region_paints;
+  auto region_paint_of = [&](int region) -> const RegionPaint& {
+    auto it = region_paints.find(region);
+    if (it == region_paints.end())
+      it = region_paints.emplace(region, region_paint(ctx, region)).first;
+    return it->second;
+  };
+  for (const auto& [id, info] : ctx.regions) region_paint_of(id);
+  const Eigen::Vector3d shadow = shadow_ratio(region_paints);
   std::map<int, int> edge_count;
   for (const Edge& e : edges) edge_count[e.region] += e.atoms.size() == 1;
   std::vector<Join> candidates;
@@ -225,8 +472,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         // A colour step larger than the shading inside the windows: two
         // flat pieces of different colours are two strands; a band, gradient
         // or tone under the windows explains a step up to its own spread.
-        cost +=
-            kColourStepWeight * std::max(0.0, colour - (a.colour_spread + b.colour_spread)) / 30.0;
+        const double step = paint_step(a, b, paints[i], paints[j], region_paint_of(a.region),
+                                       region_paint_of(b.region), shadow);
+        cost += kColourStepWeight * step / 30.0;
         // Screentone: the colour says nothing there, the dots' tone does.
         cost += tone_join_cost(tones, a.region, b.region);
         if (cost <= limit) {  // before the costly coverage raster

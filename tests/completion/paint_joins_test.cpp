@@ -1,0 +1,137 @@
+// The colour step of strand joins (joins.cpp, `paint_step`): pieces of one
+// strand are compared by how they are painted — the flat colours of cel
+// paint (a base and its shadow band), or a gradient along the strand — not
+// by the mean colour of windows along their cuts.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "hair25d/completion/completion.h"
+#include "synthetic.h"
+
+namespace hair25d::completion {
+namespace {
+
+using test::below;
+using test::blank;
+using test::Drawing;
+using test::paint;
+
+constexpr Rgba kBase{200, 150, 110, 255};
+constexpr Rgba kBack{120, 90, 70, 255};
+
+Rgba scaled(Rgba c, double k) {
+  auto s = [k](std::uint8_t v) {
+    return static_cast<std::uint8_t>(std::clamp(std::lround(v * k), 0L, 255L));
+  };
+  return {s(c.r), s(c.g), s(c.b), 255};
+}
+
+// A vertical strand cut by a horizontal band lying over it: the upper piece
+// (1, x 100..140, y 70..140) and the lower one (2, y 140..210) under band 3
+// (y 118..162), all over a wide back piece 4. Only a strand join can join 1
+// and 2 (the pieces lie above 4, so no mass join; too narrow for banks).
+Drawing strand_under_band() {
+  Drawing d = blank(250, 300);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kBack, 4);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y > 70 && y < 140; }, kBase, 1);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y >= 140 && y < 210; }, kBase, 2);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 210 && y > 118 && y < 162; }, kBase, 3);
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
+  return d;
+}
+
+// Repaints the drawn (labelled) pixels of `region` where `where(x, y)` holds.
+void repaint(
+    Drawing& d, int region, const std::function<Rgba(int, int)>& colour,
+    const std::function<bool(int, int)>& where = [](int, int) { return true; }) {
+  for (int y = 0; y < d.image.height(); ++y)
+    for (int x = 0; x < d.image.width(); ++x)
+      if (d.regions.at(x, y) == region && where(x, y)) d.image.at(x, y) = colour(x, y);
+}
+
+// Cel paint: `base` with a shadow band (0.72 of it) down the left 15 px.
+void cel(Drawing& d, int region, Rgba base) {
+  repaint(d, region, [base](int x, int) { return x < 115 ? scaled(base, 0.72) : base; });
+}
+
+std::vector<int> joined_with_1(const Drawing& d, double max_join_cost) {
+  Options o;
+  o.max_join_cost = max_join_cost;
+  o.inpaint_background = false;
+  o.face_joins = false;
+  return test::regions_with(complete_strands(test::input_of(d, Vec2(125, 10)), o), 1);
+}
+
+TEST(PaintJoins, CelPiecesOfTwoBaseColoursAreNotJoined) {
+  // Both pieces with a shadow band, the lower one's base 12 % lighter (29
+  // RGB): the band spreads each cut's window over both colours (RGB
+  // deviation ~30), so the old step beyond the spread was 0 and they were
+  // joined under a limit of 1.0 that the geometry passes; their flat colours
+  // differ. The same paint on both is joined.
+  Drawing same = strand_under_band();
+  cel(same, 1, kBase);
+  cel(same, 2, kBase);
+  EXPECT_EQ(joined_with_1(same, 1.0), (std::vector<int>{1, 2}));
+  Drawing other = strand_under_band();
+  cel(other, 1, kBase);
+  cel(other, 2, scaled(kBase, 1.12));
+  EXPECT_EQ(joined_with_1(other, 1.0), (std::vector<int>{1}));
+}
+
+TEST(PaintJoins, BaseAndShadowOfOnePaintAreJoined) {
+  // The upper piece shows only the shadow colour at its cut, the lower one
+  // only the base: 70 RGB apart, which cost 1.2 before (not joined under a
+  // limit of 1.2). The band and the back show base and shadow in the
+  // drawing's one ratio (0.72), so the shadow of the lower piece's base is
+  // the upper piece's colour. A lower piece of another, darker base (0.85)
+  // stays apart.
+  for (const double lower : {1.0, 0.85}) {
+    Drawing d = strand_under_band();
+    repaint(d, 1, [](int, int) { return scaled(kBase, 0.72); });
+    repaint(d, 2, [lower](int, int) { return scaled(kBase, lower); });
+    repaint(d, 3, [](int, int y) { return y > 140 ? scaled(kBase, 0.72) : kBase; });
+    repaint(d, 4, [](int x, int) { return x > 160 ? scaled(kBack, 0.72) : kBack; });
+    // A third strand elsewhere with base and shadow.
+    paint(
+        d, [](double x, double y) { return x > 170 && x < 210 && y > 180 && y < 260; }, kBase, 5);
+    d.relations.push_back(below(4, 5));
+    repaint(d, 5, [](int x, int) { return x < 185 ? scaled(kBase, 0.72) : kBase; });
+    EXPECT_EQ(joined_with_1(d, 1.2),
+              lower == 1.0 ? (std::vector<int>{1, 2}) : (std::vector<int>{1}))
+        << lower;
+  }
+}
+
+// A gradient down the strand: 0.5 levels a pixel on every channel from
+// `top` at y = 70.
+Rgba ramp(Rgba top, int y) {
+  auto s = [y](std::uint8_t v) {
+    return static_cast<std::uint8_t>(std::clamp(std::lround(v - 0.5 * (y - 70)), 0L, 255L));
+  };
+  return {s(top.r), s(top.g), s(top.b), 255};
+}
+
+TEST(PaintJoins, GradientContinuingUnderTheBandIsJoined) {
+  // The colour falls 0.5 a channel per px all down the strand, so the cuts'
+  // windows step ~40 RGB across the band: beyond their spread that cost 0.6
+  // before (not joined under a limit of 1.0). The slopes of both pieces
+  // predict the step. The lower piece 30 levels lighter than the slope
+  // predicts (another strand) stays apart.
+  for (const int offset : {0, 30}) {
+    Drawing d = strand_under_band();
+    repaint(d, 1, [](int, int y) { return ramp(kBase, y); });
+    repaint(d, 2, [offset](int, int y) { return ramp(kBase, y - 2 * offset); });
+    EXPECT_EQ(joined_with_1(d, 1.0), offset == 0 ? (std::vector<int>{1, 2}) : (std::vector<int>{1}))
+        << offset;
+  }
+}
+
+}  // namespace
+}  // namespace hair25d::completion
