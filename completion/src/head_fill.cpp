@@ -40,6 +40,64 @@ constexpr int kLineGap = 6;
 // Fewer skin pixels than this joined to the face is no cheek.
 constexpr int kMinSkinPiece = 100;
 
+// A piece of the face lying wholly below its largest piece, more than this
+// many px under it, with no hair between them, is the neck or the chest seen
+// below a collar or a scarf (sylvie), no part of the head. A piece cut off by
+// a strand lying across the face has hair between.
+constexpr int kChinGap = 6;
+// Pieces with less skin than this share of the largest's are specks (a
+// skin-coloured gap between locks beside the face).
+constexpr double kMinPieceShare = 0.01;
+
+// 1 on the face's pieces that belong to the head, with their outlines. The
+// pieces are those of the face's ink-free pixels (find_face's mask holds the
+// outlines up to `outline_reach` px, which bridges a scarf's band between its
+// lines); a piece counts by its skin pixels (`skin`; paper or a scarf next to
+// the face's outline has none). Kept: the piece with the most skin, and the
+// others that are no speck and do not lie below it past kChinGap across
+// something other than hair.
+cv::Mat head_pieces(const Context& ctx, const cv::Mat& face_mask, const cv::Mat& skin,
+                    const std::vector<std::uint8_t>& ink) {
+  cv::Mat open = face_mask.clone();
+  for (int y = 0; y < open.rows; ++y)
+    for (int x = 0; x < open.cols; ++x)
+      if (ink[static_cast<std::size_t>(y) * open.cols + x]) open.at<std::uint8_t>(y, x) = 0;
+  cv::Mat parts, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(open, parts, stats, centroids, 4, CV_32S);
+  std::vector<int> skin_of(static_cast<std::size_t>(n), 0);
+  for (int y = 0; y < parts.rows; ++y)
+    for (int x = 0; x < parts.cols; ++x)
+      if (skin.at<std::uint8_t>(y, x)) ++skin_of[static_cast<std::size_t>(parts.at<int>(y, x))];
+  auto stat = [&](int k, int which) { return stats.at<int>(k, which); };
+  int largest = 0;
+  for (int k = 1; k < n; ++k)
+    if (skin_of[static_cast<std::size_t>(k)] > skin_of[static_cast<std::size_t>(largest)])
+      largest = k;
+  std::vector<std::uint8_t> keep(static_cast<std::size_t>(n), 0);
+  const int bottom = stat(largest, cv::CC_STAT_TOP) + stat(largest, cv::CC_STAT_HEIGHT) - 1;
+  for (int k = 1; largest > 0 && k < n; ++k) {
+    const int s = skin_of[static_cast<std::size_t>(k)];
+    if (s == 0 || s < kMinPieceShare * skin_of[static_cast<std::size_t>(largest)]) continue;
+    const int top = stat(k, cv::CC_STAT_TOP);
+    // What lies between it and the largest piece, over its columns.
+    int between = 0, hair = 0;
+    const int x0 = stat(k, cv::CC_STAT_LEFT), x1 = x0 + stat(k, cv::CC_STAT_WIDTH);
+    for (int y = bottom + 1; y < top; ++y)
+      for (int x = x0; x < x1; ++x) {
+        ++between;
+        hair += ctx.label(x, y) != 0;
+      }
+    keep[static_cast<std::size_t>(k)] = top <= bottom + kChinGap || 2 * hair >= between;
+  }
+  cv::Mat kept(face_mask.size(), CV_8U, cv::Scalar(0));
+  for (int y = 0; y < parts.rows; ++y)
+    for (int x = 0; x < parts.cols; ++x)
+      kept.at<std::uint8_t>(y, x) = keep[static_cast<std::size_t>(parts.at<int>(y, x))];
+  const int r = ctx.options->outline_reach;
+  cv::dilate(kept, kept, cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * r + 1, 2 * r + 1}));
+  return kept & face_mask;
+}
+
 // Mean |luma − its 3×3 median| over the skin pixels (0 on flat or softly
 // shaded skin).
 double skin_texture(const Image& image, const cv::Mat& skin) {
@@ -140,9 +198,13 @@ Head find_head(const Context& ctx, const Face& face, const InpaintOptions& optio
     }
   // Joined across a line (her glasses' frame, the nose's line): within
   // kLineGap px of the face's skin.
+  // Only the head's pieces of the face count: the chest's skin below a
+  // scarf drew the head's hull down beside the neck to the shoulder, and the
+  // skull's hidden side was filled with skin down to there.
+  const cv::Mat pieces = head_pieces(ctx, face.mask, head.skin, ink);
   cv::Mat reach;
   cv::dilate(
-      head.skin, reach,
+      head.skin & pieces, reach,
       cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * kLineGap + 1, 2 * kLineGap + 1)));
   auto within = [&](int x, int y) {
     return std::hypot(x + 0.5 - ctx.head.x(), y + 0.5 - ctx.head.y()) <= kFaceReach * radius;
@@ -162,7 +224,7 @@ Head find_head(const Context& ctx, const Face& face, const InpaintOptions& optio
     if (area[k] < kMinSkinPiece) joined[k] = 0;
   std::vector<cv::Point> near, hull;
   for (const cv::Point& p : points)
-    if (within(p.x, p.y)) near.push_back(p);
+    if (within(p.x, p.y) && pieces.at<std::uint8_t>(p)) near.push_back(p);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const int k = parts.at<int>(y, x);

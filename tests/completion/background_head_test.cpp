@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "hair25d/completion/completion.h"
 #include "synthetic.h"
@@ -270,6 +271,86 @@ TEST(HeadBehindHairWedgeAtAnEye, LineOfTheOutlineColourWithoutFillStays) {
     }
   ASSERT_GT(tip, 50);
   EXPECT_GE(tip_dark, tip * 9 / 10) << "a line of the outline's colour at an eye went";
+}
+
+// A face (an egg, closed ink outline) with a scarf below the chin and the
+// chest's skin below the scarf, both running under two side locks (sylvie):
+// find_face's face holds the chest too, since it has the skin's colour.
+namespace chest {
+
+constexpr int kW = 340, kH = 300;
+constexpr double kCx = 170, kCy = 130, kRx = 70, kRy = 64;
+constexpr double kScarfTop = kCy + kRy, kScarfBottom = kScarfTop + 6, kChestBottom = 250;
+constexpr Rgba kScarf{230, 140, 40, 255};
+
+double egg(double x, double y) { return std::hypot((x - kCx) / kRx, (y - kCy) / kRy); }
+bool in_hair(double x, double y) {
+  const double dx = std::abs(x - kCx);
+  return (std::hypot(x - kCx, y - (kCy - 12)) < 96 && y < kCy - 35) ||
+         (dx >= 62 && dx < 110 && y >= kCy - 70 && y < kChestBottom + 10);
+}
+
+test::Drawing drawing() {
+  test::Drawing d{Image(kW, kH, kPaper), LabelMap(kW, kH, 0), {}};
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const double px = x + 0.5, py = y + 0.5, e = egg(px, py);
+      if (e < 1) d.image.at(x, y) = e > 1 - 3.0 / kRx ? kInk : kSkin;
+      if (e >= 1 && std::abs(px - kCx) < 80 && py >= kScarfTop && py < kChestBottom) {
+        // The scarf between two ink lines, then the chest, inked below.
+        if (py < kScarfBottom)
+          d.image.at(x, y) = kScarf;
+        else if (py < kScarfBottom + 2 || py >= kChestBottom - 3)
+          d.image.at(x, y) = kInk;
+        else
+          d.image.at(x, y) = kSkin;
+      }
+    }
+  test::paint(d, in_hair, kHair, 1);
+  return d;
+}
+
+// Skin pixels of the background under the locks well beside the jaw (12 px
+// and more outside the egg), between the cheeks and the scarf.
+std::pair<int, int> skin_beside_jaw(const test::Drawing& d, const Image& background) {
+  int beside = 0, skin = 0;
+  for (int y = static_cast<int>(kCy) + 20; y < kScarfTop; ++y)
+    for (int x = 0; x < kW; ++x)
+      if (d.regions.at(x, y) == 1 && egg(x + 0.5, y + 0.5) > 1.1) {
+        ++beside;
+        skin += distance(background.at(x, y), kSkin) <= 40;
+      }
+  return {beside, skin};
+}
+
+}  // namespace chest
+
+// The chest seen below the scarf is no part of the head. Before, the head's
+// hull took in the chest's pixels near the head: its sides ran from the
+// skull straight down to the chest, and the hidden sides of the neck were
+// skin as wide as the skull (sylvie, down to her shoulder).
+TEST(HeadBehindHairChest, ChestBelowAScarfIsNoPartOfTheHead) {
+  const test::Drawing d = chest::drawing();
+  const Result r = run(d, Vec2(chest::kCx, chest::kCy - 8));
+  const auto [beside, skin] = chest::skin_beside_jaw(d, r.background);
+  ASSERT_GT(beside, 1000);
+  EXPECT_LE(skin, beside / 50) << "the head reaches down to the chest";
+}
+
+// A few pixels of skin between the locks beside the jaw (a gap in the hair
+// the segmentation left unlabelled) are no part of the head: before, the
+// hull reached out to them (sylvie's right side, 6 px).
+TEST(HeadBehindHairChest, SkinSpeckBetweenTheLocksIsNoPartOfTheHead) {
+  test::Drawing d = chest::drawing();
+  for (int y = 166; y < 170; ++y)
+    for (int x = 243; x < 246; ++x) {
+      d.image.at(x, y) = kSkin;
+      d.regions.at(x, y) = 0;
+    }
+  const Result r = run(d, Vec2(chest::kCx, chest::kCy - 8));
+  const auto [beside, skin] = chest::skin_beside_jaw(d, r.background);
+  ASSERT_GT(beside, 1000);
+  EXPECT_LE(skin, beside / 50) << "the head reaches out to the speck";
 }
 
 }  // namespace
