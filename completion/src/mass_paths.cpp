@@ -135,6 +135,15 @@ std::vector<Polyline> path_bands(const std::vector<Landing>& landings) {
   return out;
 }
 
+// A front piece (above some region) and a piece above none are joined by
+// their tone when their dot masses differ by at most this share: the
+// strands' tones (the generator's 0.12-0.45) overlap the back hair's
+// (0.35-0.55), and a bang's end lying on the face lies above no region
+// either. On screentone seeds 101-116 such candidates of one strand (a cap
+// sliver and the cap, a side lock's end on the face) differed by 0-0.012,
+// of two strands by 0.016-0.028.
+constexpr double kMaxMixedMassStep = 0.012;
+
 // Share of a region's outline within 3 px of the face.
 double face_share(const Context& ctx, const cv::Mat& near_face, int region) {
   const std::vector<cv::Point>& contour = ctx.regions.at(region).contour;
@@ -389,20 +398,26 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
   // a bang, a side lock under a bang) are front hair, lying above some
   // region, and their dots are the one cue they carry. Two such pieces of
   // one tone (dot masses and dark shares agree) linked under the strands
-  // lying above both are joined, after the back hair's joins. Back-hair
-  // pieces are left to the rules above: the back hair's tone (the
-  // generator's 0.35-0.55) overlaps the strands' (0.12-0.45), and on
-  // screentone seeds 101-116 every wrong candidate of this kind paired a
-  // strand with a piece lying above no region (back hair, a bang's end on
-  // the face), none of two front pieces.
+  // lying above both are joined, after the back hair's joins. A front piece
+  // and one lying above no region only when their masses agree closely
+  // (kMaxMixedMassStep): on screentone seeds 101-116 every wrong candidate
+  // of one tone paired a strand with such a piece (back hair, a bang's end
+  // on the face), none two front pieces. Two pieces above no region are
+  // left to the rules above.
   if (tones.screentone()) {
+    const auto mass_step = [&](int a, int b) {
+      const double ma = tones.dot_mass(a), mb = tones.dot_mass(b);
+      return std::abs(ma - mb) / std::max(ma, mb);
+    };
     std::vector<MassJoin> toned;
-    for (auto i = front.begin(); i != front.end(); ++i)
-      for (auto k = std::next(i); k != front.end(); ++k) {
-        const int a = *i, b = *k;
-        if (!ctx.regions.count(a) || !ctx.regions.count(b)) continue;
+    for (auto i = ctx.regions.begin(); i != ctx.regions.end(); ++i)
+      for (auto k = std::next(i); k != ctx.regions.end(); ++k) {
+        const int a = i->first, b = k->first;
+        const int fronts = static_cast<int>(front.count(a) + front.count(b));
+        if (fronts == 0) continue;
         if (ctx.is_above(a, b) || ctx.is_above(b, a)) continue;
         if (tones.match(a, b) != RegionTones::Match::kSame) continue;
+        if (fronts == 1 && mass_step(a, b) > kMaxMixedMassStep) continue;
         std::set<int> common;
         for (int u : above(a))
           if (above(b).count(u)) common.insert(u);
@@ -413,8 +428,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         j.region_a = a;
         j.region_b = b;
         j.rays = static_cast<int>(landings.size());
-        const double ma = tones.dot_mass(a), mb = tones.dot_mass(b);
-        j.colour = std::abs(ma - mb) / std::max(ma, mb);  // the mass step, not RGB
+        j.colour = mass_step(a, b);  // not RGB
         j.bands = path_bands(landings);
         toned.push_back(std::move(j));
       }

@@ -471,6 +471,35 @@ TEST(TonePathJoins, SmallEndWithTwoWholeDotsIsJoined) {
   EXPECT_EQ(test::regions_with(run_bent(d), 1), (std::vector<int>{1, 2}));
 }
 
+// Each dot of `tone` in `region` gets a pixel a quarter as dark right of it
+// (an anti-aliased rim): the dots' ink grows by 0.25 / 9 = 2.8 %, the dark
+// share stays.
+void heavier_dots(Drawing& d, int region, int period, int dot) {
+  for (int y = 0; y < d.image.height(); ++y)
+    for (int x = 0; x < d.image.width(); ++x)
+      if (d.regions.at(x, y) == region && x % period == dot && y % period == dot / 2)
+        d.image.at(x, y) = Rgba{191, 164, 139, 255};
+}
+
+TEST(TonePathJoins, EndAboveNoRegionIsJoinedOnlyWhenItsDotsAgreeClosely) {
+  // The lower piece lies above no region (a lock's end lying on the face):
+  // one tone joins it.
+  Drawing d = bent_strand_under_band(48);
+  d.relations = {below(4, 1), below(4, 3), below(1, 3), below(2, 3)};
+  tone(d, 1, 6, 3, 0);
+  tone(d, 2, 6, 3, 0);
+  EXPECT_EQ(test::regions_with(run_bent(d), 1), (std::vector<int>{1, 2}));
+  // Dots 2.8 % heavier on it: one tone for two front pieces (within 4 %),
+  // not close enough for a piece above no region (1.2 %).
+  heavier_dots(d, 2, 6, 3);
+  EXPECT_EQ(test::regions_with(run_bent(d), 1), (std::vector<int>{1}));
+  Drawing front = bent_strand_under_band(48);
+  tone(front, 1, 6, 3, 0);
+  tone(front, 2, 6, 3, 0);
+  heavier_dots(front, 2, 6, 3);
+  EXPECT_EQ(test::regions_with(run_bent(front), 1), (std::vector<int>{1, 2}));
+}
+
 TEST(PathJoins, PiecesWithNoOccluderInCommonAreNotJoined) {
   // Strand 3 lies over the back hair only and 4 over the sliver only: no
   // region lies above both, so no path runs under their common occluders.
