@@ -133,5 +133,42 @@ TEST(PaintJoins, GradientContinuingUnderTheBandIsJoined) {
   }
 }
 
+TEST(PaintJoins, GradientCarryingOnAcrossTheGapJoinsBeyondThePlainCost) {
+  // Slopes of 0.87 RGB a pixel on both sides predict the ~40 RGB step across
+  // the band: the shading visibly carries on, so the join costs 0.6 less and
+  // passes a limit of 0.4 (it joins from 0.3) that the same pieces painted
+  // flat, one colour, exceed (they join from 0.65).
+  Drawing d = strand_under_band();
+  repaint(d, 1, [](int, int y) { return ramp(kBase, y); });
+  repaint(d, 2, [](int, int y) { return ramp(kBase, y); });
+  EXPECT_EQ(joined_with_1(d, 0.4), (std::vector<int>{1, 2}));
+  EXPECT_EQ(joined_with_1(strand_under_band(), 0.4), (std::vector<int>{1}));
+}
+
+// A wide piece cut in two by a strand lying over it: left (1) and right (2)
+// of strand 3, both over region 4 (front hair: no mass or path join), so a
+// bank or strand join must join them.
+Drawing wide_piece_under_strand(Rgba right) {
+  Drawing d = blank(260, 300);
+  paint(
+      d, [](double x, double y) { return x > 10 && x < 250 && y > 20 && y < 280; }, kBack, 4);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 110 && y > 100 && y < 200; }, kBase, 1);
+  paint(
+      d, [](double x, double y) { return x >= 110 && x < 240 && y > 100 && y < 200; }, right, 2);
+  paint(
+      d, [](double x, double y) { return x > 95 && x < 145 && y > 40 && y < 260; }, kBase, 3);
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
+  return d;
+}
+
+TEST(PaintJoins, BankJoinComparesThePaint) {
+  // The right piece 25 % lighter (68 RGB, under max_colour_distance): the
+  // bank join cost 0.8 and was made; the paint step now counts (+3.4).
+  EXPECT_EQ(joined_with_1(wide_piece_under_strand(kBase), 2.4), (std::vector<int>{1, 2}));
+  EXPECT_EQ(joined_with_1(wide_piece_under_strand(scaled(kBase, 1.25)), 2.4),
+            (std::vector<int>{1}));
+}
+
 }  // namespace
 }  // namespace hair25d::completion
