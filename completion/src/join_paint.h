@@ -1,0 +1,72 @@
+// How the pieces of a strand join are painted (private, case 1 of §5.1):
+// the colour step between two cut edges that their paint does not explain
+// — cel paint compared by its flat colours, gradients by the change their
+// slopes predict across the gap. The strand joins' colour term.
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "context.h"
+
+namespace hair25d::completion::detail {
+
+// How a piece is painted next to its cut: its flat colours (cel paint: a
+// base and a shadow band) in the 11 x 11 windows along the edge, and a
+// linear fit of its colour over 25 x 25 windows (a gradient along the
+// strand). Drawn pixels of the region only, not outlines.
+struct EdgePaint {
+  std::vector<Eigen::Vector3d> flats;   // up to two flat colours, commonest first
+  Eigen::Vector3d fit_colour{0, 0, 0};  // the fit's colour at fit_centre
+  Vec2 fit_centre{0, 0};                // mean position of the fitted pixels
+  Eigen::Matrix<double, 3, 2> slope = Eigen::Matrix<double, 3, 2>::Zero();  // RGB per px
+  double fit_residual = 0.0;  // RGB deviation from the fit
+};
+
+// A region's flat colours (up to three, each at least 5 % of its pixels) and
+// the share of its pixels that its three commonest colours hold (4-level
+// bins): near 1 for flat and cel paint, low for gradients and real shading.
+struct RegionPaint {
+  std::vector<Eigen::Vector3d> flats;
+  double exact_share = 0.0;
+};
+
+// Flat colours of `pixels` of `image`, at most `most`: in 8-level bins, the
+// mean of the pixels in the 3 x 3 x 3 bins round the bin whose neighbourhood
+// holds most, taken out in turn while that holds at least `min_share` of the
+// pixels.
+std::vector<Eigen::Vector3d> flat_colours(const Image& image, const std::vector<cv::Point>& pixels,
+                                          int most, double min_share);
+
+// The paint next to edge `e`'s cut, and the paint of a whole region.
+EdgePaint edge_paint(const Context& ctx, const Edge& e);
+RegionPaint region_paint(const Context& ctx, int region);
+
+// The drawing's cel shadow: per channel, the ratio of a flat-painted
+// region's darker flat colour to its lighter one, when at least 3 regions
+// show two and half of them agree within 0.05 on every channel (the median);
+// none (all 0) otherwise.
+Eigen::Vector3d shadow_ratio(const std::map<int, RegionPaint>& paints);
+
+// The colour step between two pieces' cuts that their paint does not
+// explain (RGB):
+// - flat or cel paint (both regions): the flat colours at one cut that the
+//   other piece is not painted in anywhere, the smaller way round. A cel
+//   band spreads a window's colours, so the mean step beyond the spread
+//   said nothing on two-tone drawings; a piece may show only the base or
+//   only the band at its cut, but the strand is painted in both.
+// - colour linear in position (both windows, a gradient along the strand):
+//   the step beyond the change the mean slope of the two pieces predicts
+//   between them, beyond the fits' deviations;
+// - else the step between the windows' means beyond their spread.
+struct PaintStep {
+  double step = 0.0;               // RGB
+  bool flat = false;               // compared as flat paint
+  bool shading_continues = false;  // both pieces' gradients predict the step
+};
+PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const EdgePaint& pb,
+                     const RegionPaint& ra, const RegionPaint& rb, const Eigen::Vector3d& shadow);
+
+}  // namespace hair25d::completion::detail
