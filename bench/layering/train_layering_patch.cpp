@@ -13,10 +13,12 @@
 #include <CLI/CLI.hpp>
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -44,14 +46,18 @@ struct Record {
 };
 
 // Drawings first .. cases − 1 (a dump can be collected in parts by several
-// processes and the parts read together with --from).
-std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor, int first) {
+// processes and the parts read together with --from), those from
+// `extra_from` on in thin_fork_style.
+std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor, int first,
+                            int extra_from) {
   std::vector<Record> out;
   for (int i = first; i < cases; ++i) {
     hair25d::AnnotatedCase c;
     layering::Result r;
     try {
-      c = hair25d::generator::generate_case(hair25d::layering_training::training_style(i, seed));
+      c = hair25d::generator::generate_case(
+          i >= extra_from ? hair25d::layering_training::thin_fork_style(i, seed)
+                          : hair25d::layering_training::training_style(i, seed));
       // Without the patch models, so the order and same-depth log-odds are
       // those the patch stages are joined with, whatever weights are built in.
       layering::Options options;
@@ -126,6 +132,26 @@ std::vector<Record> load(const std::string& path) {
   if (!f) throw hair25d::Error("train_layering_patch: " + path + " is cut short");
   return out;
 }
+
+// Which drawings the networks learn from: the first `net_cases` and those
+// from `extra_from` on; the second stages are fitted on the ones between.
+// `thin_weight` weighs the networks' rows of drawings with lines of at most
+// 1.5 px.
+struct Split {
+  int net_cases = 0;
+  int extra_from = 0;
+  std::uint64_t seed = 0;
+  double thin_weight = 1.0;
+  bool network(int drawing) const { return drawing < net_cases || drawing >= extra_from; }
+  double line_width(int drawing) const {
+    return drawing >= extra_from
+               ? hair25d::layering_training::thin_fork_style(drawing, seed).line_width
+               : hair25d::layering_training::training_style(drawing, seed).line_width;
+  }
+  float weight(int drawing) const {
+    return static_cast<float>(line_width(drawing) <= 1.5 ? thin_weight : 1.0);
+  }
+};
 
 // Logistic regression by Newton's method (an intercept is a constant term),
 // each sample weighted.
@@ -211,19 +237,21 @@ void write_net(std::FILE* f, const detail::PatchNet& net) {
 // up to half the total), joined with the same-depth model's log-odds by a
 // logistic stage with intercept on the other drawings, weighted by
 // √(length / line width) as that model is trained.
-detail::SameDepthNet train_same_depth(const std::vector<Record>& records, int net_cases,
+detail::SameDepthNet train_same_depth(const std::vector<Record>& records, const Split& split,
                                       int iterations, std::uint64_t seed,
                                       const hair25d::layering_training::MlpOptions* adam,
                                       int inputs, std::string* report) {
   int n = 0, positives = 0, total = 0;
   for (const Record& r : records)
-    if (r.drawing < net_cases) n += static_cast<int>(r.ends.size()), ++total, positives += r.y == 0;
+    if (split.network(r.drawing))
+      n += static_cast<int>(r.ends.size()), ++total, positives += r.y == 0;
   cv::Mat x(2 * n, detail::kPatchInputs, CV_32F), t(2 * n, 1, CV_32F), w(2 * n, 1, CV_32F);
   int row = 0;
   for (const Record& r : records) {
-    if (r.drawing >= net_cases) continue;
+    if (!split.network(r.drawing)) continue;
     const double share = r.y == 0 ? positives : total - positives;
-    const float weight = static_cast<float>(total / (2.0 * std::max(share, 1.0)));
+    const float weight =
+        static_cast<float>(total / (2.0 * std::max(share, 1.0))) * split.weight(r.drawing);
     for (const detail::Patch& p : r.ends)
       for (const detail::Patch& q : {p, detail::swapped(p)}) {
         std::copy(q.begin(), q.end(), x.ptr<float>(row));
@@ -274,7 +302,7 @@ detail::SameDepthNet train_same_depth(const std::vector<Record>& records, int ne
   std::vector<double> sy[2], sw[2];
   int k = 0;
   for (const Record& r : records) {
-    if (r.drawing < net_cases) continue;
+    if (split.network(r.drawing)) continue;
     double q = 0;
     for (const detail::Patch& p : r.ends) q += detail::patch_same_score(out.net, p);
     Eigen::VectorXd v(3);
@@ -358,6 +386,15 @@ int main(int argc, char** argv) {
   app.add_flag("--grey", grey,
                "both networks also read the patches' grey channel (with --adam and "
                "--order-scales 2)");
+  int extra_from = std::numeric_limits<int>::max();
+  app.add_option("--extra-from", extra_from,
+                 "drawings from this one on are drawn in thin_fork_style and train the networks "
+                 "(the second stages keep the drawings from --net-cases to here)")
+      ->check(CLI::NonNegativeNumber);
+  double thin_weight = 1.0;
+  app.add_option("--thin-weight", thin_weight,
+                 "weight of the networks' rows of drawings with lines of at most 1.5 px")
+      ->check(CLI::PositiveNumber);
   int first = 0;
   app.add_option("--first", first, "with --dump: collect drawings from this one on")
       ->check(CLI::NonNegativeNumber);
@@ -374,9 +411,10 @@ int main(int argc, char** argv) {
                  detail::kPatchMembers);
     return 1;
   }
+  const Split split{net_cases, extra_from, seed, thin_weight};
   std::vector<Record> records;
   if (from.empty()) {
-    records = collect(cases, seed, radius_factor, first);
+    records = collect(cases, seed, radius_factor, first, extra_from);
   } else {
     // Parts read one after the other, as one run's drawings in order.
     for (const std::string& path : from) {
@@ -411,11 +449,11 @@ int main(int argc, char** argv) {
   // the regions exchanged and the answer negated.
   int n = 0;
   for (const Record& r : records)
-    if (r.y != 0 && r.drawing < net_cases) n += static_cast<int>(r.ends.size());
+    if (r.y != 0 && split.network(r.drawing)) n += static_cast<int>(r.ends.size());
   cv::Mat x(2 * n, d, CV_32F), t(2 * n, 1, CV_32F);
   int row = 0;
   for (std::size_t r = 0; r < records.size(); ++r) {
-    if (records[r].y == 0 || records[r].drawing >= net_cases) continue;
+    if (records[r].y == 0 || !split.network(records[r].drawing)) continue;
     for (std::size_t e = 0; e < records[r].ends.size(); ++e) {
       end_row(r, e, false, x.ptr<float>(row));
       t.at<float>(row++) = static_cast<float>(records[r].y);
@@ -442,6 +480,12 @@ int main(int argc, char** argv) {
                            std::to_string(detail::kPatchHidden) + " hidden units");
     hair25d::layering_training::RowMatrix px(n, d), ps(n, d);
     std::vector<float> py(n), pw(n, 1.0f);
+    {
+      int k = 0;
+      for (const Record& r : records)
+        if (r.y != 0 && split.network(r.drawing))
+          for (std::size_t e = 0; e < r.ends.size(); ++e) pw[k++] = split.weight(r.drawing);
+    }
     for (int k = 0; k < n; ++k) {
       px.row(k) = Eigen::Map<const Eigen::RowVectorXf>(x.ptr<float>(2 * k), d);
       ps.row(k) = Eigen::Map<const Eigen::RowVectorXf>(x.ptr<float>(2 * k + 1), d);
@@ -509,7 +553,7 @@ int main(int argc, char** argv) {
   for (const Record& r : records) {
     if (r.y == 0) continue;
     const double s = score[&r - records.data()];
-    if (r.drawing < net_cases) {
+    if (split.network(r.drawing)) {
       ++in_total;
       in_right += s * r.y > 0;
     } else {
@@ -519,6 +563,20 @@ int main(int argc, char** argv) {
       sx.emplace_back(r.learned, s);
       sy.push_back(r.y);
     }
+  }
+  {
+    // The others by the line width they were drawn with.
+    std::map<double, std::array<int, 3>> by_width;  // right (patch), right (order), boundaries
+    for (const Record& r : records) {
+      if (r.y == 0 || split.network(r.drawing)) continue;
+      std::array<int, 3>& c = by_width[split.line_width(r.drawing)];
+      c[0] += score[&r - records.data()] * r.y > 0;
+      c[1] += r.learned * r.y > 0;
+      ++c[2];
+    }
+    for (const auto& [width, c] : by_width)
+      std::printf("  lines %.1f px: patch sign %.1f%%, order model %.1f%% of %d\n", width,
+                  100.0 * c[0] / c[2], 100.0 * c[1] / c[2], c[2]);
   }
   std::printf(
       "patch sign: network's drawings %.1f%% of %d; others %.1f%% of %d (order model %.1f%%)\n",
@@ -568,7 +626,7 @@ int main(int argc, char** argv) {
   }
   std::string same_report;
   const detail::SameDepthNet same =
-      train_same_depth(records, net_cases, same_iterations, seed, use_adam ? &adam : nullptr,
+      train_same_depth(records, split, same_iterations, seed, use_adam ? &adam : nullptr,
                        grey ? detail::kPatchInputs : detail::kPatchLabelInputs, &same_report);
   char method_buffer[200];
   if (use_adam)
@@ -581,10 +639,20 @@ int main(int argc, char** argv) {
     std::snprintf(method_buffer + std::strlen(method_buffer),
                   sizeof method_buffer - std::strlen(method_buffer), " --grey-dropout %g",
                   grey_dropout);
-  else
+  else if (!use_adam)
     std::snprintf(method_buffer, sizeof method_buffer, "--iterations %d --same-iterations %d",
                   iterations, same_iterations);
-  const std::string method = method_buffer;
+  std::string method = method_buffer;
+  if (thin_weight != 1.0) {
+    char text[40];
+    std::snprintf(text, sizeof text, " --thin-weight %g", thin_weight);
+    method += text;
+  }
+  std::string drawings = "the first " + std::to_string(net_cases) + " drawings";
+  if (extra_from != std::numeric_limits<int>::max()) {
+    method += " --extra-from " + std::to_string(extra_from);
+    drawings += " and of drawings " + std::to_string(extra_from) + " on (thin_fork_style)";
+  }
   std::FILE* f = std::fopen(write.c_str(), "w");
   if (f == nullptr) {
     std::fprintf(stderr, "cannot write %s\n", write.c_str());
@@ -601,13 +669,13 @@ int main(int argc, char** argv) {
                "//   train_layering_patch --cases %d --seed %llu --net-cases %d --order-scales %d\n"
                "//     %s\n"
                "// Weights input-major (w1[input][hidden]). The network learnt from the %d\n"
-               "// ends of ordered boundaries of the first %d drawings (and each exchanged);\n"
+               "// ends of ordered boundaries of %s (and each exchanged);\n"
                "// boundary sign right there %.1f%%, on the other drawings %.1f%% (order\n"
                "// model %.1f%%), where the second stage was fitted.\n"
                "const PatchNet& patch_weights() {\n"
                "  static const PatchNet kNet = ",
                cases, static_cast<unsigned long long>(seed), net_cases, order_scales,
-               method.c_str(), n, net_cases, 100.0 * in_right / std::max(in_total, 1),
+               method.c_str(), n, drawings.c_str(), 100.0 * in_right / std::max(in_total, 1),
                100.0 * out_right_patch / std::max(out_total, 1),
                100.0 * out_right_order / std::max(out_total, 1));
   write_net(f, *net);

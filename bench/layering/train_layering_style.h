@@ -37,6 +37,20 @@ inline hair25d::generator::Options training_style(int i, std::uint64_t seed) {
   return o;
 }
 
+// The drawings the patch networks also learn from since session 10
+// (train_layering_patch --extra-from): the same spread, but thin lines
+// (1–1.8 px) and fork lines that fade out inside the strand in half of them,
+// the two styles the layering read worst. The line widths cycle over 7 and
+// the forks over blocks of 12 drawings, so neither is tied to the shading
+// (4), JPEG (5) or strand count (6) of training_style.
+inline hair25d::generator::Options thin_fork_style(int i, std::uint64_t seed) {
+  static constexpr double kThinLines[] = {1.0, 1.2, 1.5, 1.2, 1.8, 1.0, 1.4};
+  hair25d::generator::Options o = training_style(i, seed);
+  o.line_width = kThinLines[i % 7];
+  o.fading_forks = (i / 12) % 2 == 0;
+  return o;
+}
+
 // The annotated relation of every judged pair, both ways round.
 inline std::map<std::pair<int, int>, hair25d::Relation> pair_truth(
     const hair25d::AnnotatedCase& c) {
