@@ -319,19 +319,7 @@ TEST(PathJoins, SliverInAnotherScreentoneIsNotJoined) {
 // for the banks, and lie above a region, so no mass or path join takes
 // them: only the strand join can. Its plain cost is about 0.55 (gap / width
 // 1.1, straight tangents). The pieces' tones are painted with `tone`.
-Drawing strand_under_band() {
-  Drawing d = blank(250, 300);
-  paint(
-      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kFan, 4);
-  paint(
-      d, [](double x, double y) { return x > 100 && x < 140 && y > 70 && y < 140; }, kFan, 1);
-  paint(
-      d, [](double x, double y) { return x > 100 && x < 140 && y >= 140 && y < 210; }, kFan, 2);
-  paint(
-      d, [](double x, double y) { return x > 40 && x < 210 && y > 118 && y < 162; }, kFan, 3);
-  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
-  return d;
-}
+Drawing strand_under_band() { return test::strand_under_band(kFan, kFan); }
 
 Result run_strand(const Drawing& d, double max_join_cost) {
   Options o;

@@ -29,23 +29,9 @@ Rgba scaled(Rgba c, double k) {
   return {s(c.r), s(c.g), s(c.b), 255};
 }
 
-// A vertical strand cut by a horizontal band lying over it: the upper piece
-// (1, x 100..140, y 70..140) and the lower one (2, y 140..210) under band 3
-// (y 118..162), all over a wide back piece 4. Only a strand join can join 1
-// and 2 (the pieces lie above 4, so no mass join; too narrow for banks).
-Drawing strand_under_band() {
-  Drawing d = blank(250, 300);
-  paint(
-      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kBack, 4);
-  paint(
-      d, [](double x, double y) { return x > 100 && x < 140 && y > 70 && y < 140; }, kBase, 1);
-  paint(
-      d, [](double x, double y) { return x > 100 && x < 140 && y >= 140 && y < 210; }, kBase, 2);
-  paint(
-      d, [](double x, double y) { return x > 40 && x < 210 && y > 118 && y < 162; }, kBase, 3);
-  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
-  return d;
-}
+// Pieces 1 and 2 of a strand under band 3, over a darker back piece 4
+// (test::strand_under_band): only a strand join can join 1 and 2.
+Drawing strand_under_band() { return test::strand_under_band(kBack, kBase); }
 
 // Repaints the drawn (labelled) pixels of `region` where `where(x, y)` holds.
 void repaint(

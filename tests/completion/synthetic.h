@@ -47,6 +47,26 @@ inline Drawing blank(int w, int h) {
 
 inline RegionRelation below(int a, int b) { return {a, b, Relation::kBelow, 1.0, false, false}; }
 
+// A vertical strand over a wide lowest region 4 (x 20..230, y 20..280, in
+// `back`), cut in two by a band 3 lying over it (x 40..210, y 118..162):
+// the upper piece 1 (x 100..140, y 70..140) and the lower one 2 (y
+// 140..210), both in `strand`, as is the band. The pieces lie above a region,
+// so no mass join takes them, and are too shallow for the banks: only a
+// strand join (or a path join) can.
+inline Drawing strand_under_band(Rgba back, Rgba strand) {
+  Drawing d = blank(250, 300);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, back, 4);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y > 70 && y < 140; }, strand, 1);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y >= 140 && y < 210; }, strand, 2);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 210 && y > 118 && y < 162; }, strand, 3);
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
+  return d;
+}
+
 // The completion input for drawing `d` (which must outlive it).
 inline Input input_of(const Drawing& d, std::optional<Vec2> head_center) {
   Input in;
