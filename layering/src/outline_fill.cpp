@@ -67,6 +67,15 @@ struct Growth {
   // Every label-0 pixel reached in the band's own rows, once: the passes
   // after the growth visit these rather than the whole window.
   std::vector<int> reached;
+  // The same pixels with their image position, final distance and owner,
+  // listed on the band's core after its growth, so that the serial pass
+  // which writes them into the map reads one array in order rather than
+  // the band's distance and owner maps at scattered places.
+  struct Given {
+    int x, y, owner;
+    std::uint16_t dist;
+  };
+  std::vector<Given> given;
 };
 
 #if defined(HAIR25D_FILL_AVX2)
@@ -363,7 +372,10 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
         const int* owner = g.owner.get();
         const int stride = g.box.stride();
         std::vector<int>& meet = meets[b];
+        growth[b].given.resize(g.reached.size());
+        Growth::Given* given = growth[b].given.data();
         for (int i : g.reached) {
+          *given++ = {g.box.x_of(i), g.box.y_of(i), owner[i], dist[i]};
           for (int j : {i + 1, i + stride}) {
             // The frame and region pixels hold 0, unreached pixels kUnreached.
             if (dist[j] == 0 || dist[j] == kUnreached || owner[j] == owner[i]) continue;
@@ -386,13 +398,14 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   const int radius = static_cast<int>(std::floor(out.radius * kUnit));
   // The filled map's non-zero labels: the regions' and the pixels given to them.
   LabelBox filled{true, bx0, by0, bx1, by1};
+  int* map = out.labels.data();
+  const std::size_t map_w = static_cast<std::size_t>(out.labels.width());
   for (const Growth& g : growth) {
-    for (int i : g.reached) {
-      if (g.dist[i] > radius) continue;
-      const int x = g.box.x_of(i), y = g.box.y_of(i);
-      out.labels.at(x, y) = g.owner[i];
-      filled.x0 = std::min(filled.x0, x), filled.x1 = std::max(filled.x1, x);
-      filled.y0 = std::min(filled.y0, y), filled.y1 = std::max(filled.y1, y);
+    for (const Growth::Given& p : g.given) {
+      if (p.dist > radius) continue;
+      map[static_cast<std::size_t>(p.y) * map_w + p.x] = p.owner;
+      filled.x0 = std::min(filled.x0, p.x), filled.x1 = std::max(filled.x1, p.x);
+      filled.y0 = std::min(filled.y0, p.y), filled.y1 = std::max(filled.y1, p.y);
     }
   }
   if (filled_box != nullptr) *filled_box = filled;
