@@ -483,6 +483,35 @@ TEST(FillBands, FilledBoxIsTheLabelBoxOfTheFilledMap) {
   EXPECT_EQ(box.y1, y1);
 }
 
+// label_box sixteen labels a compare (AVX-512F where the processor has it)
+// gives the plain scan's box: maps of every width up to 70 with a few labels
+// anywhere (at the rows' ends, in the last block of sixteen), and none.
+TEST(LabelBox, WidestScanEqualsThePlainScan) {
+  std::mt19937 rng(31);
+  for (int trial = 0; trial < 400; ++trial) {
+    const int w = 1 + trial % 70, h = 1 + static_cast<int>(rng() % 12);
+    LabelMap m(w, h, 0);
+    const int count = static_cast<int>(rng() % 4);
+    for (int k = 0; k < count; ++k)
+      m.at(static_cast<int>(rng() % w), static_cast<int>(rng() % h)) =
+          1 + static_cast<int>(rng() % 9);
+    if (trial % 5 == 1) m.at(w - 1, static_cast<int>(rng() % h)) = 3;
+    if (trial % 5 == 2) m.at(0, static_cast<int>(rng() % h)) = 3;
+    int a[4] = {-7, -7, -7, -7}, b[4] = {-7, -7, -7, -7};
+    const bool any_plain = detail::label_box(m, &a[0], &a[1], &a[2], &a[3], false);
+    const bool any_widest = detail::label_box(m, &b[0], &b[1], &b[2], &b[3], true);
+    ASSERT_EQ(any_plain, any_widest) << "trial " << trial;
+    if (!any_plain) continue;
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(a[k], b[k]) << "trial " << trial << " k " << k;
+  }
+  // A generated drawing-like map.
+  const LabelMap m = strand_map(640, 480, 9, 4);
+  int a[4], b[4];
+  ASSERT_TRUE(detail::label_box(m, &a[0], &a[1], &a[2], &a[3], false));
+  ASSERT_TRUE(detail::label_box(m, &b[0], &b[1], &b[2], &b[3], true));
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(a[k], b[k]) << "k " << k;
+}
+
 // The public fill splits large maps; it equals one growth there too (a
 // 640 x 480 drawing-like map, the bands of fill_outlines).
 TEST(FillBands, PublicFillOnALargeMapEqualsOneGrowth) {
