@@ -15,6 +15,10 @@
 #include <immintrin.h>
 #define HAIR25D_FILL_AVX2 1
 #endif
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#define HAIR25D_FILL_SSE2 1
+#endif
 
 #include "hair25d/core/error.h"
 #include "hair25d/layering/boundary_graph.h"
@@ -216,6 +220,58 @@ bool widest_rows_available() {
 #endif
 }
 
+#if defined(HAIR25D_FILL_SSE2)
+// The distances a pixel's neighbours are offered, as compared by
+// improved_neighbours: lanes of the rows above and of its own row (four
+// each, from its left), and of the row below. Offsets are xor 0x8000 (an
+// unsigned compare by a signed one); 0x7FFF never improves anything (the
+// pixel itself, the fourth lanes, corners past the limit).
+struct NeighbourLimits {
+  __m128i above_mid;
+  __m128i below;
+};
+
+inline NeighbourLimits neighbour_limits(int edge, int corner) {
+  const auto e = static_cast<short>(edge ^ 0x8000);
+  const auto c = static_cast<short>(corner < 0 ? 0x7FFF : corner ^ 0x8000);
+  constexpr short kNever = 0x7FFF;
+  return {_mm_setr_epi16(c, e, c, kNever, e, kNever, e, kNever),
+          _mm_setr_epi16(c, e, c, kNever, kNever, kNever, kNever, kNever)};
+}
+
+// Bit b of the result: the distance of (ordinal) neighbour b is lowered by
+// the offer, neighbours in relax order: right, left, down, up, then down
+// right, up right, down left, up left. From movemask's bits (above: 0-2,
+// own row: 4 and 6, below: 8-10).
+constexpr std::array<std::uint8_t, 256> kAboveMidOrder = [] {
+  std::array<std::uint8_t, 256> t{};
+  for (int m = 0; m < 256; ++m)
+    t[m] =
+        static_cast<std::uint8_t>(((m >> 0 & 1) << 7) | ((m >> 1 & 1) << 3) | ((m >> 2 & 1) << 5) |
+                                  ((m >> 4 & 1) << 1) | ((m >> 6 & 1) << 0));
+  return t;
+}();
+constexpr std::array<std::uint8_t, 8> kBelowOrder = {
+    0,      1 << 6,          1 << 2,          1 << 6 | 1 << 2,
+    1 << 4, 1 << 6 | 1 << 4, 1 << 2 | 1 << 4, 1 << 6 | 1 << 2 | 1 << 4};
+
+// Which of the eight neighbours of the pixel at `at` the offer lowers.
+inline unsigned improved_neighbours(const std::uint16_t* at, int stride,
+                                    const NeighbourLimits& lim) {
+  auto four = [](const std::uint16_t* p) {
+    return _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p));
+  };
+  const __m128i bias = _mm_set1_epi16(static_cast<short>(0x8000));
+  const __m128i above_mid =
+      _mm_xor_si128(_mm_unpacklo_epi64(four(at - stride - 1), four(at - 1)), bias);
+  const __m128i below = _mm_xor_si128(four(at + stride - 1), bias);
+  const __m128i lower =
+      _mm_packs_epi16(_mm_cmpgt_epi16(above_mid, lim.above_mid), _mm_cmpgt_epi16(below, lim.below));
+  const auto m = static_cast<unsigned>(_mm_movemask_epi8(lower));
+  return kAboveMidOrder[m & 0xFF] | kBelowOrder[(m >> 8) & 7];
+}
+#endif
+
 // Dial's algorithm: a multi-source shortest path on the 8-neighbour grid with a
 // ring of buckets, linear in the pixel count. Fronts start from region pixels
 // next to label 0, in raster order; where two fronts reach a pixel at the same
@@ -244,7 +300,10 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
   win.h = y1 - y0;
   const int stride = win.stride();
   const std::size_t n = static_cast<std::size_t>(stride) * (win.h + 2);
-  g.dist = std::make_unique_for_overwrite<std::uint16_t[]>(n);
+  // Four more entries: the growth reads neighbours four at a time from a
+  // pixel's left (improved_neighbours), up to two past the last corner.
+  g.dist = std::make_unique_for_overwrite<std::uint16_t[]>(n + 4);
+  std::fill(g.dist.get() + n, g.dist.get() + n + 4, 0);
   g.owner = std::make_unique_for_overwrite<int[]>(n);
   std::uint16_t* dist = g.dist.get();
   int* owner = g.owner.get();
@@ -290,17 +349,50 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
   // Each seed reaches a few pixels; reserving avoids most regrowth.
   g.reached.reserve(4 * ring[0].size());
   std::size_t pending = ring[0].size();
+#if defined(HAIR25D_FILL_SSE2)
+  // The neighbours in relax order (the bits of improved_neighbours).
+  const std::array<int, 8> around = {1,          -1,          stride,     -stride,
+                                     stride + 1, -stride + 1, stride - 1, -stride - 1};
+#endif
   for (int d = 0; pending > 0; ++d) {
     auto& bucket = ring[d % ring.size()];
     // Entries may be added to this bucket while it is processed only with
     // weight 0, which never happens, so iterating by index is safe.
-    for (std::size_t k = 0; k < bucket.size(); ++k) {
-      const auto [i, own] = bucket[k];
-      if (dist[i] != d) continue;  // a stale entry
-      if (d + kOrtho > limit) continue;
-      for (int s : ortho) relax(i + s, d + kOrtho, own);
-      if (d + kDiag > limit) continue;
-      for (int s : diag) relax(i + s, d + kDiag, own);
+#if defined(HAIR25D_FILL_SSE2)
+    // With `wide`, the eight compares of a pixel at once; then only the
+    // neighbours they improve are relaxed, in the same order (a relaxation
+    // changes only its own neighbour, so the compares do not depend on each
+    // other): the same distances, owners and bucket order.
+    if (wide) {
+      if (d + kOrtho <= limit) {
+        const NeighbourLimits lim =
+            neighbour_limits(d + kOrtho, d + kDiag <= limit ? d + kDiag : -1);
+        for (std::size_t k = 0; k < bucket.size(); ++k) {
+          const auto [i, own] = bucket[k];
+          if (dist[i] != d) continue;  // a stale entry
+          for (unsigned bits = improved_neighbours(dist + i, stride, lim); bits != 0;
+               bits &= bits - 1) {
+            const int b = std::countr_zero(bits);
+            const int j = i + around[b];
+            const int nd = b < 4 ? d + kOrtho : d + kDiag;
+            if (dist[j] == kUnreached && j >= first && j < last) g.reached.push_back(j);
+            dist[j] = static_cast<std::uint16_t>(nd);
+            owner[j] = own;
+            ring[nd % ring.size()].push_back({j, own});
+          }
+        }
+      }
+    } else
+#endif
+    {
+      for (std::size_t k = 0; k < bucket.size(); ++k) {
+        const auto [i, own] = bucket[k];
+        if (dist[i] != d) continue;  // a stale entry
+        if (d + kOrtho > limit) continue;
+        for (int s : ortho) relax(i + s, d + kOrtho, own);
+        if (d + kDiag > limit) continue;
+        for (int s : diag) relax(i + s, d + kDiag, own);
+      }
     }
     bucket.clear();
     pending = 0;  // entries still waiting in any bucket

@@ -441,6 +441,39 @@ TEST(FillBands, WideRowsFillLikeNarrowOnes) {
   }
 }
 
+// The growth with `wide` compares a pixel's eight neighbours at once and
+// relaxes only those improved: the same distances, owners and ties as one
+// compare after another, at reaches where corners stop before edges (limit
+// − 7 < d ≤ limit − 5), on strand maps and on noise (many ties), in bands.
+TEST(FillBands, NeighboursComparedAtOnceGrowLikeOneByOne) {
+  std::mt19937 rng(29);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int w = 3 + static_cast<int>(rng() % 160), h = 3 + static_cast<int>(rng() % 100);
+    LabelMap m = strand_map(w, h, 900 + trial, 1 + trial % 5);
+    if (trial % 5 == 4) {
+      const int kinds[] = {0, 0, 0, 0, 1, 2, 3};
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) m.at(x, y) = kinds[rng() % 7];
+    }
+    const double reach = trial % 4 == 0 ? 0.0 : 0.2 * static_cast<double>(1 + rng() % 40);
+    for (const int bands : {1, 4}) {
+      detail::LabelBox wide_box, narrow_box;
+      const OutlineFill wide = detail::fill_outlines_in_bands(m, {.max_distance = reach}, bands, 1,
+                                                              true, nullptr, &wide_box);
+      const OutlineFill narrow = detail::fill_outlines_in_bands(m, {.max_distance = reach}, bands,
+                                                                1, false, nullptr, &narrow_box);
+      const std::string where = "trial " + std::to_string(trial) + ", reach " +
+                                std::to_string(reach) + ", " + std::to_string(bands) + " bands";
+      EXPECT_EQ(wide.line_width, narrow.line_width) << where;
+      EXPECT_EQ(wide.radius, narrow.radius) << where;
+      EXPECT_TRUE(wide.labels == narrow.labels) << where;
+      EXPECT_EQ(wide_box.any, narrow_box.any) << where;
+      EXPECT_EQ(wide_box.x0, narrow_box.x0) << where;
+      EXPECT_EQ(wide_box.y1, narrow_box.y1) << where;
+    }
+  }
+}
+
 // The box the fill gives is label_box's answer on the filled map (which the
 // early blur would otherwise look for): generated maps, lines beyond the
 // regions' box, and maps with no regions.
