@@ -18,6 +18,7 @@
 #include <random>
 #include <vector>
 
+#include "hair25d/core/adam.h"
 #include "patch_model.h"
 
 namespace hair25d::layering_training {
@@ -127,23 +128,13 @@ inline void train_patch_member(const RowMatrix& x, const RowMatrix& xs, const st
       };
       backward(bx, t1, tg1, ds);
       backward(bs, t2, tg2, o.symmetric ? Eigen::VectorXf(ds) : Eigen::VectorXf(-ds));
-      ++step;
-      const float b1c = 1.0f - std::pow(0.9f, static_cast<float>(step));
-      const float b2c = 1.0f - std::pow(0.999f, static_cast<float>(step));
       const double progress = (epoch + static_cast<double>(start) / n) / o.epochs;
       const float lr =
-          static_cast<float>(o.rate * (o.anneal ? 1.0 - progress : 1.0)) * std::sqrt(b2c) / b1c;
-      auto adam = [&](auto& p, auto& mm, auto& vv, const auto& g) {
-        mm = 0.9f * mm + 0.1f * g;
-        vv = 0.999f * vv + 0.001f * g.cwiseProduct(g);
-        p -= (lr * mm.array() / (vv.array().sqrt() + 1e-8f)).matrix();
-      };
-      adam(w1, m1, v1, gw1);
-      adam(b1, mb1, vb1, gb1);
-      adam(w2, m2, v2, gw2);
-      mb2 = 0.9f * mb2 + 0.1f * gb2;
-      vb2 = 0.999f * vb2 + 0.001f * gb2 * gb2;
-      b2 -= lr * mb2 / (std::sqrt(vb2) + 1e-8f);
+          adam_rate(static_cast<float>(o.rate * (o.anneal ? 1.0 - progress : 1.0)), ++step);
+      adam_step(w1, m1, v1, gw1, lr);
+      adam_step(b1, mb1, vb1, gb1, lr);
+      adam_step(w2, m2, v2, gw2, lr);
+      adam_step(b2, mb2, vb2, gb2, lr);
     }
     std::printf("  epoch %d: loss %.4f\n", epoch + 1, loss_sum / std::max(weight_sum, 1e-12));
     std::fflush(stdout);

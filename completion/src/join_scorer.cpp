@@ -8,6 +8,7 @@
 #include <random>
 #include <sstream>
 
+#include "hair25d/core/adam.h"
 #include "hair25d/core/error.h"
 
 namespace hair25d::completion {
@@ -176,21 +177,11 @@ JoinTrainingResult train_join_scorer(const std::vector<JoinFeatures>& rows,
           ((dout * w2.transpose()).array() * (1.0f - t.array().square())).matrix();
       const Eigen::MatrixXf gw1 = bx.transpose() * dpre + static_cast<float>(options.decay) * w1;
       const Eigen::RowVectorXf gb1 = dpre.colwise().sum();
-      ++step;
-      const float c1 = 1.0f - std::pow(0.9f, static_cast<float>(step));
-      const float c2 = 1.0f - std::pow(0.999f, static_cast<float>(step));
-      const float lr = static_cast<float>(options.rate) * std::sqrt(c2) / c1;
-      auto adam = [&](auto& p, auto& mm, auto& vv, const auto& g) {
-        mm = 0.9f * mm + 0.1f * g;
-        vv = 0.999f * vv + 0.001f * g.cwiseProduct(g);
-        p -= (lr * mm.array() / (vv.array().sqrt() + 1e-8f)).matrix();
-      };
-      adam(w1, m1, v1, gw1);
-      adam(b1, mb1, vb1, gb1);
-      adam(w2, m2, v2, gw2);
-      mb2 = 0.9f * mb2 + 0.1f * gb2;
-      vb2 = 0.999f * vb2 + 0.001f * gb2 * gb2;
-      b2 -= lr * mb2 / (std::sqrt(vb2) + 1e-8f);
+      const float lr = adam_rate(static_cast<float>(options.rate), ++step);
+      adam_step(w1, m1, v1, gw1, lr);
+      adam_step(b1, mb1, vb1, gb1, lr);
+      adam_step(w2, m2, v2, gw2, lr);
+      adam_step(b2, mb2, vb2, gb2, lr);
     }
     result.final_loss = loss / std::max(total, 1e-12);
     result.epochs = epoch + 1;
