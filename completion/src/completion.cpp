@@ -267,11 +267,12 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   std::vector<detail::Growth> growths(open_edges.size());
   {
     std::atomic<std::size_t> next_edge{0}, grown{0};
-    const auto grow = [&](bool reports) {
+    const auto grow = [&](bool reports_progress) {
       for (std::size_t k = next_edge++; k < open_edges.size(); k = next_edge++) {
         growths[k] = detail::grow_edge(ctx, open_edges[k]);
         const std::size_t n = ++grown;
-        if (reports) report(progress, "completion", 0.2 + 0.4 * n / open_edges.size(), "growing");
+        if (reports_progress)
+          report(progress, "completion", 0.2 + 0.4 * n / open_edges.size(), "growing");
       }
     };
     std::future<void> other;

@@ -175,12 +175,12 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
   // the same as over the nine cells at once; uncounted cells never win).
   for (int j = 0; j < kPatchCells; ++j) {
     const float* m = mean.data() + j * kPatchCells;
-    float* a = across.data() + j * kPatchCells;
+    float* row_max = across.data() + j * kPatchCells;
     for (int i = 0; i < kPatchCells; ++i) {
-      float v = m[i];
-      if (i > 0) v = std::max(v, m[i - 1]);
-      if (i + 1 < kPatchCells) v = std::max(v, m[i + 1]);
-      a[i] = v;
+      float best = m[i];
+      if (i > 0) best = std::max(best, m[i - 1]);
+      if (i + 1 < kPatchCells) best = std::max(best, m[i + 1]);
+      row_max[i] = best;
     }
   }
   const float scale = static_cast<float>(1.0 / drawing.contrast);
