@@ -1,6 +1,7 @@
 #include "hair25d/layering/layering.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -296,13 +297,15 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                                        detail::patch_contrast(out.line_threshold)};
   detail::ParallelLoop patch_loop(&pool, use_patches ? nb : 0, [&](int i) {
     if (!patched(i)) return;
-    for (const detail::Patch& p :
-         detail::boundary_patches(out.labels, patch_image, graph, bs[i], leave_start[i].near,
-                                  leave_end[i].near, patch_size)) {
-      const detail::PatchScores scores =
-          detail::patch_scores(order_net, order_inputs, same_net.net, p);
-      patch_sums[i].order += scores.order;
-      patch_sums[i].same += scores.same;
+    const std::vector<detail::Patch> patches = detail::boundary_patches(
+        out.labels, patch_image, graph, bs[i], leave_start[i].near, leave_end[i].near, patch_size);
+    // Both ends scored at once (the networks' weights read once for both).
+    std::array<detail::PatchScores, 2> scores;
+    detail::patch_scores(order_net, order_inputs, same_net.net, patches.data(),
+                         static_cast<int>(patches.size()), scores.data());
+    for (std::size_t e = 0; e < patches.size(); ++e) {
+      patch_sums[i].order += scores[e].order;
+      patch_sums[i].same += scores[e].same;
     }
   });
   for (int i = 0; i < nb; ++i) {

@@ -10,6 +10,11 @@
 
 #include "hair25d/core/error.h"
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define HAIR25D_PATCH_AVX512 1
+#endif
+
 namespace hair25d::layering::detail {
 
 namespace {
@@ -240,10 +245,12 @@ double net_output(const PatchNet& net, const std::array<float, kPatchHidden>& su
 // rows of the label scales (kPatchCells × kPatchChannels inputs each), then
 // those of the grey channel (kPatchCells each).
 constexpr int kPatchRows = kPatchScales * kPatchCells + kPatchCells;
+// (Sixteen entries of room at the end: the AVX-512 path writes sixteen at
+// a time past the last one.)
 struct NonZeroInputs {
   int n = 0;
-  std::array<std::uint16_t, kPatchInputs> k;
-  std::array<float, kPatchInputs> x;
+  std::array<std::uint16_t, kPatchInputs + 16> k;
+  std::array<float, kPatchInputs + 16> x;
   std::array<int, kPatchRows + 1> row_start;
 };
 
@@ -278,7 +285,9 @@ void non_zero_inputs(const Patch& patch, NonZeroInputs& out) {
 }
 
 // The non-zero inputs of swapped(patch) from those of the patch: rows in
-// reverse order within each block, the A − B channel negated.
+// reverse order within each block, the A − B channel negated: its sign bit
+// flipped (what negation does) without a branch, which mispredicted on the
+// channels' mix of non-zero values.
 void swapped_inputs(const NonZeroInputs& in, NonZeroInputs& out) {
   out.n = 0;
   for (int r = 0; r < kPatchRows; ++r) {
@@ -286,39 +295,104 @@ void swapped_inputs(const NonZeroInputs& in, NonZeroInputs& out) {
     const int block = r / kPatchCells, j = r % kPatchCells;
     const int from = block * kPatchCells + (kPatchCells - 1 - j);
     const int shift = row_begin(r) - row_begin(from);
-    const bool labels = block < kPatchScales;
+    const std::uint32_t sign = block < kPatchScales ? 0x80000000u : 0u;
     for (int e = in.row_start[from]; e < in.row_start[from + 1]; ++e) {
       const int k = in.k[e];
+      const std::uint32_t flip = sign & (0u - static_cast<std::uint32_t>(k % kPatchChannels == 0));
       out.k[out.n] = static_cast<std::uint16_t>(k + shift);
-      out.x[out.n++] = labels && k % kPatchChannels == 0 ? -in.x[e] : in.x[e];
+      out.x[out.n++] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(in.x[e]) ^ flip);
     }
   }
   out.row_start[kPatchRows] = out.n;
 }
 
-// The hidden sums of two networks on the same non-zero inputs, the first
-// reading those below `first_inputs`: each the same sums in the same order
-// as patch_net's, without scanning the zeros.
+#if defined(HAIR25D_PATCH_AVX512)
+bool inputs_avx512_available() { return __builtin_cpu_supports("avx512f"); }
+
+// The non-zero ones of the sixteen inputs `x` (indices k, k + 1, ...) to
+// the end of `list`, which then holds `n` entries: `x != 0` unordered,
+// so NaN counts and −0 does not, as above.
+__attribute__((target("avx512f"))) inline void pack_avx512(NonZeroInputs& list, int& n, __m512 x,
+                                                           int k) {
+  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  const __mmask16 m = _mm512_cmp_ps_mask(x, _mm512_setzero_ps(), _CMP_NEQ_UQ);
+  _mm512_storeu_ps(list.x.data() + n, _mm512_maskz_compress_ps(m, x));
+  const __m512i at = _mm512_maskz_compress_epi32(m, _mm512_add_epi32(_mm512_set1_epi32(k), lanes));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(list.k.data() + n),
+                      _mm512_maskz_cvtepi32_epi16(0xffff, at));
+  n += std::popcount(static_cast<unsigned>(m));
+}
+
+// non_zero_inputs and swapped_inputs at once, sixteen inputs a compare
+// (AVX-512F): the non-zero ones and their indices are packed to the lists'
+// ends. The swapped list reads each row of the patch as the row it becomes,
+// the A − B channel (the even inputs of the label rows) with its sign bit
+// flipped: the same entries as swapped_inputs makes from the first list.
+__attribute__((target("avx512f"))) void both_inputs_avx512(const Patch& patch, NonZeroInputs& in,
+                                                           NonZeroInputs& swapped) {
+  const __m512i even_signs = _mm512_set1_epi64(0x80000000);  // bit 31 of the even lanes
+  int n = 0, ns = 0;
+  for (int r = 0; r < kPatchRows; ++r) {
+    in.row_start[r] = n;
+    swapped.row_start[r] = ns;
+    const int block = r / kPatchCells, j = r % kPatchCells;
+    const int from = block * kPatchCells + (kPatchCells - 1 - j);
+    const int k0 = row_begin(r), k1 = row_begin(r + 1), from0 = row_begin(from);
+    const __m512i flip = block < kPatchScales ? even_signs : _mm512_setzero_si512();
+    for (int k = k0; k < k1; k += 16) {
+      pack_avx512(in, n, _mm512_loadu_ps(patch.data() + k), k);
+      const __m512i other = _mm512_loadu_si512(patch.data() + from0 + (k - k0));
+      pack_avx512(swapped, ns, _mm512_castsi512_ps(_mm512_xor_si512(other, flip)), k);
+    }
+  }
+  in.n = in.row_start[kPatchRows] = n;
+  swapped.n = swapped.row_start[kPatchRows] = ns;
+}
+#else
+bool inputs_avx512_available() { return false; }
+void both_inputs_avx512(const Patch&, NonZeroInputs&, NonZeroInputs&) {}
+#endif
+
+// The hidden sums of two networks on the non-zero inputs of `lists` patches
+// (at most kMaxLists), the first network reading those below `first_inputs`:
+// for each patch the same sums in the same order as patch_net's, without
+// scanning the zeros. The patches are taken a row of cells at a time, all of
+// them before the next row: a row's weights (8 KB of the 320 KB of both
+// networks) are read from the second-level cache once for all the patches
+// and then from the first level, where one patch after another read them all
+// from the second level each.
+constexpr int kMaxLists = 4;
 __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
 sparse_sums(const PatchNet& first, int first_inputs, const PatchNet& second,
-            const NonZeroInputs& in, std::array<float, kPatchHidden>& first_sum,
-            std::array<float, kPatchHidden>& second_sum) {
-  std::array<float, kPatchHidden> s1 = first.b1, s2 = second.b1;
-  int e = 0;
-  for (; e < in.n && in.k[e] < first_inputs; ++e) {
-    const float x = in.x[e];
-    const std::array<float, kPatchHidden>& w1 = first.w1[in.k[e]];
-    const std::array<float, kPatchHidden>& w2 = second.w1[in.k[e]];
-    for (int h = 0; h < kPatchHidden; ++h) s1[h] += w1[h] * x;
-    for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
+            const NonZeroInputs* const* in, int lists, std::array<float, kPatchHidden>* first_sum,
+            std::array<float, kPatchHidden>* second_sum) {
+  for (int l = 0; l < lists; ++l) {
+    first_sum[l] = first.b1;
+    second_sum[l] = second.b1;
   }
-  for (; e < in.n; ++e) {
-    const float x = in.x[e];
-    const std::array<float, kPatchHidden>& w2 = second.w1[in.k[e]];
-    for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
+  for (int r = 0; r < kPatchRows; ++r) {
+    for (int l = 0; l < lists; ++l) {
+      const NonZeroInputs& list = *in[l];
+      int e = list.row_start[r];
+      const int end = list.row_start[r + 1];
+      if (e == end) continue;
+      std::array<float, kPatchHidden> s1 = first_sum[l], s2 = second_sum[l];
+      for (; e < end && list.k[e] < first_inputs; ++e) {
+        const float x = list.x[e];
+        const std::array<float, kPatchHidden>& w1 = first.w1[list.k[e]];
+        const std::array<float, kPatchHidden>& w2 = second.w1[list.k[e]];
+        for (int h = 0; h < kPatchHidden; ++h) s1[h] += w1[h] * x;
+        for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
+      }
+      for (; e < end; ++e) {
+        const float x = list.x[e];
+        const std::array<float, kPatchHidden>& w2 = second.w1[list.k[e]];
+        for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
+      }
+      first_sum[l] = s1;
+      second_sum[l] = s2;
+    }
   }
-  first_sum = s1;
-  second_sum = s2;
 }
 
 }  // namespace
@@ -358,16 +432,38 @@ int patch_inputs_used(const PatchNet& net) {
 
 PatchScores patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
                          const Patch& patch) {
-  // The zeros are found once and the swapped patch's inputs taken from the
-  // patch's: two passes over the non-zero inputs, each for both networks.
-  NonZeroInputs in, other;
-  non_zero_inputs(patch, in);
-  swapped_inputs(in, other);
-  std::array<float, kPatchHidden> order_in, same_in, order_other, same_other;
-  sparse_sums(order, order_inputs, same, in, order_in, same_in);
-  sparse_sums(order, order_inputs, same, other, order_other, same_other);
-  return {net_output(order, order_in) - net_output(order, order_other),
-          net_output(same, same_in) + net_output(same, same_other)};
+  PatchScores out;
+  patch_scores(order, order_inputs, same, &patch, 1, &out);
+  return out;
+}
+
+void patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
+                  const Patch* patches, int count, PatchScores* out, bool widest) {
+  const bool avx512 = widest && inputs_avx512_available();
+  // The zeros are found once per patch and the swapped patch's inputs taken
+  // from the patch's; the sums of both networks over two patches (four
+  // lists of inputs) at a time.
+  constexpr int kAtOnce = kMaxLists / 2;
+  std::array<NonZeroInputs, kMaxLists> lists;
+  std::array<const NonZeroInputs*, kMaxLists> in;
+  std::array<std::array<float, kPatchHidden>, kMaxLists> order_sum, same_sum;
+  for (int p0 = 0; p0 < count; p0 += kAtOnce) {
+    const int n = std::min(kAtOnce, count - p0);
+    for (int p = 0; p < n; ++p) {
+      if (avx512) {
+        both_inputs_avx512(patches[p0 + p], lists[2 * p], lists[2 * p + 1]);
+      } else {
+        non_zero_inputs(patches[p0 + p], lists[2 * p]);
+        swapped_inputs(lists[2 * p], lists[2 * p + 1]);
+      }
+      in[2 * p] = &lists[2 * p];
+      in[2 * p + 1] = &lists[2 * p + 1];
+    }
+    sparse_sums(order, order_inputs, same, in.data(), 2 * n, order_sum.data(), same_sum.data());
+    for (int p = 0; p < n; ++p)
+      out[p0 + p] = {net_output(order, order_sum[2 * p]) - net_output(order, order_sum[2 * p + 1]),
+                     net_output(same, same_sum[2 * p]) + net_output(same, same_sum[2 * p + 1])};
+  }
 }
 
 std::vector<Patch> boundary_patches(const LabelMap& labels, const PatchImage& drawing,

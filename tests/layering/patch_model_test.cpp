@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "hair25d/core/error.h"
 #include "hair25d/layering/boundary_graph.h"
@@ -296,6 +297,44 @@ TEST(PatchScore, BothScoresAtOnceOnSparsePatches) {
   const PatchScores s = patch_scores(order, patch_inputs_used(order), same, t);
   EXPECT_EQ(s.order, patch_score(order, t));
   EXPECT_EQ(s.same, patch_same_score(same, t));
+}
+
+TEST(PatchScore, ManyPatchesAtOnceScoreAsEachAlone) {
+  // patch_scores over several patches (two at a time, the weights read once
+  // for both) and with the non-zero inputs found sixteen at a time
+  // (AVX-512F, where the processor has it) or one by one: every score the
+  // same to the bit as the patch's own. Patches as the layering makes them,
+  // with −0 and odd values, and counts that leave one patch over.
+  const PatchNet& order = patch_weights();
+  const PatchNet& same = patch_same_weights().net;
+  std::mt19937 rng(41);
+  std::uniform_int_distribution<int> quarter(-4, 4), pick(0, 9);
+  std::uniform_real_distribution<float> grey(0, 2);
+  std::vector<Patch> patches(7);
+  for (Patch& p : patches) {
+    p = Patch{};
+    for (int i = 0; i < kPatchLabelInputs; ++i) {
+      const int c = pick(rng);
+      p[i] = c < 6 ? 0.0f : c == 6 ? -0.0f : 0.25f * static_cast<float>(quarter(rng));
+    }
+    for (int i = kPatchLabelInputs; i < kPatchInputs; ++i) p[i] = pick(rng) < 5 ? 0.0f : grey(rng);
+  }
+  patches[3] = Patch{};     // no input at all
+  patches[4].fill(-0.75f);  // every input
+  for (int used : {kPatchInputs, kPatchLabelInputs, kPatchScaleInputs + 7, 0})
+    for (int count = 1; count <= static_cast<int>(patches.size()); ++count)
+      for (bool widest : {false, true}) {
+        std::vector<PatchScores> out(count);
+        patch_scores(order, used, same, patches.data(), count, out.data(), widest);
+        for (int p = 0; p < count; ++p) {
+          const Patch& one = patches[p];
+          EXPECT_EQ(out[p].order,
+                    patch_net(order, one, used) - patch_net(order, swapped(one), used))
+              << used << " " << count << " " << widest << " " << p;
+          EXPECT_EQ(out[p].same, patch_same_score(same, one))
+              << used << " " << count << " " << widest << " " << p;
+        }
+      }
 }
 
 TEST(PatchScore, WalkingTheBoundaryBackwardsFlipsTheSignExactly) {
