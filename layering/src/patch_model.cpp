@@ -58,6 +58,67 @@ sample_row(const int* labels, const Rgba* pixels, int w, const double* ax, const
   }
 }
 
+#if defined(HAIR25D_PATCH_AVX512)
+// GCC 12's AVX-512 intrinsics start many results from an "undefined"
+// register, which its uninitialised-use check reports wherever they are
+// inlined.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+// Sixteen doubles (two registers) truncated to ints.
+__attribute__((target("avx512f"))) inline __m512i truncated(__m512d lo, __m512d hi) {
+  const __mmask8 all = 0xff;
+  return _mm512_maskz_inserti64x4(all, _mm512_zextsi256_si512(_mm512_maskz_cvttpd_epi32(all, lo)),
+                                  _mm512_maskz_cvttpd_epi32(all, hi), 1);
+}
+
+// sample_row with the processor's gathers (AVX-512F), sixteen samples a
+// load: where the compiler's clones extract each index and insert each label
+// one at a time. The same indices (truncated sums of the same doubles), the
+// same integer counts and the grey levels' products and sums in the same
+// order, each apart (no fused multiply-adds), so the same values.
+__attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_avx512(
+    const int* labels, const Rgba* pixels, int w, const double* ax, const double* ay, double bx,
+    double by, int a, int b, int* a_minus_b, int* other, float* grey) {
+  const __m512d vbx = _mm512_set1_pd(bx), vby = _mm512_set1_pd(by);
+  const __m512i vw = _mm512_set1_epi32(w), va = _mm512_set1_epi32(a), vb = _mm512_set1_epi32(b);
+  const __m512i one = _mm512_set1_epi32(1), zero = _mm512_setzero_si512();
+  const __m512i bytes = _mm512_set1_epi32(0xff);
+  for (int i = 0; i < kSamples; i += 16) {
+    const __m512i x = truncated(_mm512_add_pd(_mm512_loadu_pd(ax + i), vbx),
+                                _mm512_add_pd(_mm512_loadu_pd(ax + i + 8), vbx));
+    const __m512i y = truncated(_mm512_add_pd(_mm512_loadu_pd(ay + i), vby),
+                                _mm512_add_pd(_mm512_loadu_pd(ay + i + 8), vby));
+    const __m512i at = _mm512_add_epi32(_mm512_mullo_epi32(y, vw), x);
+    const __m512i l = _mm512_mask_i32gather_epi32(zero, 0xffff, at, labels, 4);
+    const __mmask16 is_a = _mm512_cmpeq_epi32_mask(l, va);
+    const __mmask16 is_b = _mm512_mask_cmpeq_epi32_mask(static_cast<__mmask16>(~is_a), l, vb);
+    const __mmask16 is_other =
+        _mm512_mask_cmpgt_epi32_mask(static_cast<__mmask16>(~(is_a | is_b)), l, zero);
+    __m512i d = _mm512_loadu_si512(a_minus_b + i);
+    d = _mm512_mask_sub_epi32(_mm512_mask_add_epi32(d, is_a, d, one), is_b, d, one);
+    _mm512_storeu_si512(a_minus_b + i, d);
+    const __m512i o = _mm512_loadu_si512(other + i);
+    _mm512_storeu_si512(other + i, _mm512_mask_add_epi32(o, is_other, o, one));
+    if (pixels == nullptr) continue;
+    const __m512i px = _mm512_mask_i32gather_epi32(zero, 0xffff, at, pixels, 4);
+    const __m512 r = _mm512_cvtepi32_ps(_mm512_and_si512(px, bytes));
+    const __m512 g = _mm512_cvtepi32_ps(_mm512_and_si512(_mm512_srli_epi32(px, 8), bytes));
+    const __m512 bl = _mm512_cvtepi32_ps(_mm512_and_si512(_mm512_srli_epi32(px, 16), bytes));
+    _mm512_storeu_ps(grey + i,
+                     _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(_mm512_set1_ps(0.299f), r),
+                                                 _mm512_mul_ps(_mm512_set1_ps(0.587f), g)),
+                                   _mm512_mul_ps(_mm512_set1_ps(0.114f), bl)));
+  }
+}
+bool gathers_avx512_available() { return __builtin_cpu_supports("avx512f"); }
+#pragma GCC diagnostic pop
+#else
+bool gathers_avx512_available() { return false; }
+void sample_row_avx512(const int*, const Rgba*, int, const double*, const double*, double, double,
+                       int, int, int*, int*, float*) {}
+#endif
+
 }  // namespace
 
 Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Vec2& centre,
@@ -129,13 +190,15 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
       const int* label_data = labels.data();
       const Rgba* pixels = with_grey ? image->data() : nullptr;
       const int w = labels.width();
+      const bool gathers = drawing.widest && gathers_avx512_available();
       for (int sj = 0; sj < kSamples; sj += 2) {
         std::array<int, kSamples> diff{}, other{};
         std::array<float, kSamples> g;
         float* grey_row = grey.data() + (sj / 2) * kPatchCells;
         for (int half = 0; half < 2; ++half) {
-          sample_row(label_data, pixels, w, ax.data(), ay.data(), bx[sj + half], by[sj + half], a,
-                     b, diff.data(), other.data(), g.data());
+          (gathers ? sample_row_avx512 : sample_row)(label_data, pixels, w, ax.data(), ay.data(),
+                                                     bx[sj + half], by[sj + half], a, b,
+                                                     diff.data(), other.data(), g.data());
           if (pixels == nullptr) continue;
           for (int i = 0; i < kPatchCells; ++i)
             grey_row[i] = (grey_row[i] + g[2 * i]) + g[2 * i + 1];

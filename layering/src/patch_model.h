@@ -41,6 +41,9 @@ using Patch = std::array<float, kPatchInputs>;
 struct PatchImage {
   const Image* image = nullptr;
   double contrast = 1.0;
+  // Samples read with the processor's gathers where it has AVX-512F (the
+  // same patch as without).
+  bool widest = true;
 };
 
 // The cells of the first scale cover [−radius, radius]² about `centre`

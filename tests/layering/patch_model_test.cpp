@@ -151,6 +151,39 @@ TEST(JunctionPatch, EqualsTheSampleBySampleDefinition) {
             reference_patch(m, Vec2(20, 15), Vec2(0, 3), 3, 4, true, 8.0));
 }
 
+TEST(JunctionPatch, GatheredSamplesEqualTheLoopsSamples) {
+  // Patches wholly inside the map are read a row of samples at a time, with
+  // the processor's gathers where it has AVX-512F (`widest`) or by the
+  // compiler's loops: the same patches, labels and grey channel, to the bit,
+  // and the same as the sample-by-sample definition.
+  std::mt19937 rng(8);
+  std::uniform_int_distribution<int> label(0, 6), level(0, 255);
+  LabelMap m(211, 157, 0);
+  Image image(211, 157);
+  for (int y = 0; y < 157; ++y)
+    for (int x = 0; x < 211; ++x) {
+      m.at(x, y) = (x / 11 + 3 * (y / 9)) % 7 == 0 ? label(rng) : (x / 13 + y / 8) % 6;
+      image.at(x, y) =
+          Rgba{static_cast<std::uint8_t>(level(rng)), static_cast<std::uint8_t>(level(rng)),
+               static_cast<std::uint8_t>(level(rng)), 255};
+    }
+  std::uniform_real_distribution<double> px(70, 141), py(60, 97), angle(0, 6.3), radius(2, 12);
+  for (int k = 0; k < 40; ++k) {
+    const Vec2 c(px(rng), py(rng));
+    const double t = angle(rng);
+    const Vec2 d(std::cos(t), std::sin(t));
+    const double r = radius(rng);
+    const bool left = k % 2 == 0;
+    for (const Image* drawing :
+         {static_cast<const Image*>(nullptr), static_cast<const Image*>(&image)}) {
+      const Patch wide = junction_patch(m, PatchImage{drawing, 25.0, true}, c, d, 2, 3, left, r);
+      EXPECT_EQ(wide, junction_patch(m, PatchImage{drawing, 25.0, false}, c, d, 2, 3, left, r))
+          << k;
+      EXPECT_EQ(wide, reference_patch(m, c, d, 2, 3, left, r, drawing, 25.0)) << k;
+    }
+  }
+}
+
 TEST(JunctionPatch, MixedCellsHoldShares) {
   // Radius 16: two pixels per cell, 2 × 2 samples, so the cell across x = 20
   // still falls on one side; a diagonal direction gives shares in quarters.
