@@ -4,6 +4,10 @@
 // with the two regions tinted (a red, b blue) and their boundaries marked.
 //
 //   train_layering_diag CASES_DIR OUT_DIR
+//
+// --widths prints each case's line width and threshold; --couplings tallies
+// the couplings of Eq. (2) against the truth (--couplings-verbose lists the
+// states they moved off their unary, with the couplings of each).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -15,6 +19,7 @@
 #include "hair25d/core/image_io.h"
 #include "hair25d/layering/evaluation.h"
 #include "hair25d/layering/layering.h"
+#include "hair25d/layering/metrics.h"
 
 namespace {
 namespace layering = hair25d::layering;
@@ -63,6 +68,139 @@ Image close_up(const hair25d::AnnotatedCase& c, const layering::Result& r, int a
   return out;
 }
 
+// Truth of a boundary's state (+1 left above, -1 right above, 0 unknown):
+// from the judged pair for two hair regions, hair above the background
+// (which is wrong for back hair behind a face or body: label 0 too).
+int true_state(const std::map<std::pair<int, int>, Relation>& truth, int left, int right) {
+  if (left < 0 || right < 0) return 0;
+  if (left == 0) return right > 0 ? -1 : 0;
+  if (right == 0) return 1;
+  auto it = truth.find({left, right});
+  if (it == truth.end() || it->second == Relation::kEqual) return 0;
+  return it->second == Relation::kAbove ? 1 : -1;
+}
+
+// Tallies, over a set, of the smoothest-pair couplings of Eq. (2) against
+// the truth (recomputed from the Result as layer_regions builds them).
+struct CouplingTally {
+  int coupled = 0, known = 0, violated = 0, violated_changed = 0;
+  int states = 0, states_known = 0, unary_right = 0, state_right = 0, overturned = 0, rescued = 0;
+  std::map<int, std::pair<int, int>> by_angle;  // degrees / 5 → (known, violated)
+  // The shorter boundary's length / fit reach, in quarters → (known, violated).
+  std::map<int, std::pair<int, int>> by_short;
+};
+
+void tally_couplings(const hair25d::AnnotatedCase& c, const layering::Result& r,
+                     const layering::Options& o, CouplingTally* t, bool verbose, bool hair_only) {
+  std::map<std::pair<int, int>, Relation> truth;
+  for (const auto& p : c.pairs) {
+    truth[{p.a, p.b}] = p.relation;
+    truth[{p.b, p.a}] = hair25d::reversed(p.relation);
+  }
+  const auto& bs = r.graph.boundaries;
+  const double reach = std::max(o.fit_reach_min, o.fit_reach_widths * r.line_width);
+  struct Ray {
+    int b;
+    hair25d::Vec2 dir;
+  };
+  std::vector<std::vector<Ray>> rays(r.graph.junctions.size());
+  for (std::size_t i = 0; i < bs.size(); ++i) {
+    if (bs[i].closed()) continue;
+    rays[bs[i].start].push_back(
+        {static_cast<int>(i), layering::leaving_direction(bs[i].points, reach)});
+    const hair25d::Polyline back(bs[i].points.rbegin(), bs[i].points.rend());
+    rays[bs[i].end].push_back({static_cast<int>(i), layering::leaving_direction(back, reach)});
+  }
+  std::vector<double> unary(bs.size(), 0.0);
+  for (std::size_t i = 0; i < bs.size(); ++i) {
+    const layering::BoundaryReport& b = r.boundaries[i];
+    unary[i] = o.learned_scale * (o.junction_patches ? b.patch_log_odds : b.learned);
+    if (b.state == 0) continue;
+    const int ts = true_state(truth, b.left, b.right);
+    ++t->states;
+    if (ts == 0) continue;
+    ++t->states_known;
+    const bool ur = unary[i] * ts > 0, sr = b.state == ts;
+    t->unary_right += ur;
+    t->state_right += sr;
+    t->overturned += ur && !sr;
+    t->rescued += !ur && sr;
+  }
+  struct Coupled {
+    int j, bi, bj;
+    double theta;
+    bool same;
+  };
+  std::vector<Coupled> coupled;
+  for (std::size_t j = 0; j < rays.size(); ++j) {
+    const auto& rs = rays[j];
+    double best = -1;
+    int bi = -1, bj = -1;
+    bool same = false;
+    for (std::size_t p = 0; p < rs.size(); ++p)
+      for (std::size_t q = p + 1; q < rs.size(); ++q) {
+        const int u = rs[p].b, v = rs[q].b;
+        if (u == v || r.boundaries[u].state == 0 || r.boundaries[v].state == 0) continue;
+        int shared = 0, count = 0;
+        for (int l : {bs[u].left, bs[u].right})
+          if (l == bs[v].left || l == bs[v].right) shared = l, ++count;
+        if (count != 1) continue;
+        const double theta = std::acos(std::clamp(rs[p].dir.dot(rs[q].dir), -1.0, 1.0));
+        if (theta > best)
+          best = theta, bi = u, bj = v, same = (shared == bs[u].left) == (shared == bs[v].left);
+      }
+    if (bi < 0 || best < o.smooth_angle || o.coupling == layering::Coupling::kNone) continue;
+    coupled.push_back({static_cast<int>(j), bi, bj, best, same});
+    ++t->coupled;
+    const int ti = true_state(truth, bs[bi].left, bs[bi].right);
+    const int tj = true_state(truth, bs[bj].left, bs[bj].right);
+    if (ti == 0 || tj == 0) continue;
+    if (hair_only &&
+        (bs[bi].left == 0 || bs[bi].right == 0 || bs[bj].left == 0 || bs[bj].right == 0))
+      continue;
+    ++t->known;
+    const bool bad = ti * tj * (same ? 1 : -1) < 0;
+    auto& a = t->by_angle[static_cast<int>(best * 57.2958 / 5)];
+    ++a.first;
+    a.second += bad;
+    const double shorter = std::min(r.boundaries[bi].length, r.boundaries[bj].length) / reach;
+    auto& sh = t->by_short[std::min(8, static_cast<int>(shorter * 4))];
+    ++sh.first;
+    sh.second += bad;
+    if (!bad) continue;
+    ++t->violated;
+    // Did it change a state away from its unary?
+    const bool changed =
+        r.boundaries[bi].state * unary[bi] < 0 || r.boundaries[bj].state * unary[bj] < 0;
+    t->violated_changed += changed;
+  }
+  if (!verbose) return;
+  for (std::size_t i = 0; i < bs.size(); ++i) {
+    const layering::BoundaryReport& b = r.boundaries[i];
+    if (b.state == 0 || b.state * unary[i] > 0) continue;
+    const int ts = true_state(truth, b.left, b.right);
+    std::printf("%s %s %d/%d len %.0f unary %+.2f state %+d truth %+d lw %.2f reach %.0f\n",
+                ts == 0         ? "FLIP?"
+                : ts == b.state ? "RESCUED"
+                                : "OVERTURNED",
+                c.name.c_str(), b.left, b.right, b.length, unary[i], b.state, ts, r.line_width,
+                reach);
+    for (const Coupled& k : coupled) {
+      if (k.bi != static_cast<int>(i) && k.bj != static_cast<int>(i)) continue;
+      const int o2 = k.bi == static_cast<int>(i) ? k.bj : k.bi;
+      const layering::BoundaryReport& p = r.boundaries[o2];
+      const int tp = true_state(truth, p.left, p.right);
+      const bool pull = p.state * b.state * (k.same ? 1 : -1) > 0;
+      std::printf(
+          "    via junction %d (%.0f,%.0f) theta %.0f rays %zu: %d/%d len %.0f unary %+.2f state "
+          "%+d truth %+d%s\n",
+          k.j, r.graph.junctions[k.j].position.x(), r.graph.junctions[k.j].position.y(),
+          k.theta * 57.2958, rays[k.j].size(), p.left, p.right, p.length, unary[o2], p.state, tp,
+          pull ? "" : " (against)");
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -78,6 +216,9 @@ int main(int argc, char** argv) {
   app.add_option("--coupling", coupling, "smooth, all or none");
   app.add_option("--learned-scale", options.learned_scale);
   app.add_option("--cap", options.coupling_cap);
+  app.add_option("--line-width", options.line_width, "fixed line width (default: estimated)");
+  app.add_option("--fit-min", options.fit_reach_min, "fit_reach_min, pixels");
+  app.add_option("--fit-widths", options.fit_reach_widths, "fit_reach_widths");
   app.add_option("--smooth-angle", options.smooth_angle);
   app.add_flag("--no-equal", no_equal);
   app.add_option("--equal-log-odds", options.equal_log_odds);
@@ -86,6 +227,13 @@ int main(int argc, char** argv) {
   bool no_patches = false;
   app.add_flag("--no-patches", no_patches, "without the junction patch model");
   app.add_flag("--quiet", quiet, "totals only");
+  bool widths = false;
+  app.add_flag("--widths", widths, "line width and threshold per case");
+  bool couplings = false, couplings_verbose = false, hair_only = false;
+  app.add_flag("--hair-only", hair_only, "tally only couplings of two hair-hair boundaries");
+  app.add_flag("--couplings", couplings, "tally Eq. (2)'s couplings against the truth");
+  app.add_flag("--couplings-verbose", couplings_verbose,
+               "... and list the states they moved off their unary");
   CLI11_PARSE(app, argc, argv);
   options.coupling = coupling == "all"    ? layering::Coupling::kAllPairs
                      : coupling == "none" ? layering::Coupling::kNone
@@ -94,6 +242,7 @@ int main(int argc, char** argv) {
   options.junction_patches = !no_patches;
   if (paper) options.metric = layering::Metric::kPaper;
   int total = 0, right = 0;
+  CouplingTally tally;
   std::filesystem::create_directories(out_dir);
   for (const auto& folder : hair25d::find_annotated_cases(cases_dir)) {
     const hair25d::AnnotatedCase c = hair25d::read_annotated_case(folder);
@@ -101,6 +250,11 @@ int main(int argc, char** argv) {
     const layering::CaseScore s = layering::evaluate_case(c, options, &r);
     total += s.pairs;
     right += s.correct;
+    if (widths)
+      std::printf("%s line width %.2f threshold %.1f: %d / %d\n", c.name.c_str(), r.line_width,
+                  r.line_threshold, s.correct, s.pairs);
+    if (couplings || couplings_verbose)
+      tally_couplings(c, r, options, &tally, couplings_verbose, hair_only);
     if (quiet) continue;
     std::map<int, int> strand;
     for (const auto& reg : c.region_list) strand[reg.id] = reg.strand;
@@ -135,6 +289,22 @@ int main(int argc, char** argv) {
                                                             "_" + std::to_string(o.b) + ".png"),
                           close_up(c, r, o.a, o.b, scale));
     }
+  }
+  if (couplings || couplings_verbose) {
+    std::printf(
+        "couplings %d, truth known %d, violated by the truth %d (%.1f%%), of those moving a state "
+        "off its unary %d\n",
+        tally.coupled, tally.known, tally.violated,
+        100.0 * tally.violated / std::max(tally.known, 1), tally.violated_changed);
+    std::printf("states %d, known %d: unary right %d, state right %d, overturned %d, rescued %d\n",
+                tally.states, tally.states_known, tally.unary_right, tally.state_right,
+                tally.overturned, tally.rescued);
+    for (const auto& [q, kv] : tally.by_short)
+      std::printf("  shorter / reach %.2f-%.2f: %d known, %d violated (%.0f%%)\n", q / 4.0,
+                  (q + 1) / 4.0, kv.first, kv.second, 100.0 * kv.second / std::max(kv.first, 1));
+    for (const auto& [deg, kv] : tally.by_angle)
+      std::printf("  theta %3d-%3d: %d known, %d violated\n", deg * 5, deg * 5 + 5, kv.first,
+                  kv.second);
   }
   std::printf("total %d / %d = %.1f%%\n", right, total, 100.0 * right / std::max(total, 1));
   return 0;

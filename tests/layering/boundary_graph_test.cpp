@@ -110,6 +110,34 @@ TEST(OutlineFill, SplitsALineBetweenTwoRegionsInTheMiddle) {
   }
 }
 
+// Lines one pixel wide, as a drawing with 1.2-px lines leaves them in its
+// region map, plus a few blots where lines pile up (5 px across): the lines
+// are 1 px wide. Fronts never meet inside a 1-px line, so the median of the
+// meeting fronts alone measured the blots (5 px here; the generated 1.2-px
+// drawings read 1 to 5 px, drawing by drawing).
+TEST(OutlineFill, MeasuresLinesOnePixelWideBesideBlots) {
+  LabelMap m(64, 48, 0);
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x)
+      if (x % 16 != 15) m.at(x, y) = 1 + x / 16 + 4 * (y / 24);
+  for (int x = 0; x < 64; ++x) m.at(x, 23) = 0;  // a horizontal line, too
+  // Blots: 5 × 5 squares of 0 where the lines cross.
+  for (int cx : {15, 31, 47})
+    for (int y = 21; y < 26; ++y)
+      for (int x = cx - 2; x <= cx + 2; ++x) m.at(x, y) = 0;
+  const OutlineFill f = fill_outlines(m);
+  EXPECT_NEAR(f.line_width, 1.0, 0.5);
+  EXPECT_NE(f.labels.at(15, 5), 0);  // the lines are given away
+  EXPECT_NE(f.labels.at(5, 23), 0);
+  // Wide lines keep their measure beside a few one-pixel pinches.
+  LabelMap w(40, 30, 0);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) w.at(x, y) = x < 17 ? 1 : (x >= 22 ? 2 : 0);
+  for (int y = 10; y < 13; ++y)
+    for (int x = 17; x < 21; ++x) w.at(x, y) = 1;  // a tip of 1 reaching within a pixel of 2
+  EXPECT_NEAR(fill_outlines(w).line_width, 5.0, 1.0);
+}
+
 TEST(OutlineFill, FarBackgroundStaysBackground) {
   LabelMap m(40, 12, 0);
   for (int y = 0; y < 12; ++y)

@@ -53,7 +53,9 @@ struct Options {
   double fit_reach_widths = 6.0;
   // ... and never under this many pixels: the raster's steps are a pixel
   // whatever the line width, so thin lines need a longer fit than 6 widths.
-  double fit_reach_min = 12.0;
+  // 18 (12 before session 11) is the reach of 3-px lines, the scale at which
+  // lines of 1.5–2.5 px were always read (their maps measure 3 px wide).
+  double fit_reach_min = 18.0;
   // A pair of regions is "equal" when less than this share of their common
   // boundary length is occluding.
   double equal_fraction = 0.5;
