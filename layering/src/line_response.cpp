@@ -141,22 +141,33 @@ double noise_of(const cv::Mat& grey) {
 }
 
 // Whether each row of `image` holds a pixel with alpha below 255.
-std::vector<std::uint8_t> translucent_rows_of(const Image& image) {
+// Whether each row of the image has a pixel that is not opaque. The rows
+// y0 <= y < y1 between x0 and x1 have been read already (`known`, one per
+// row, from grey_into): only the rest of them is scanned.
+std::vector<std::uint8_t> translucent_rows_of(const Image& image, int x0 = 0, int y0 = 0,
+                                              int x1 = 0, int y1 = 0,
+                                              const std::uint8_t* known = nullptr) {
   std::vector<std::uint8_t> out(image.height(), 0);
-  for (int y = 0; y < image.height(); ++y) {
-    const Rgba* src = image.data() + static_cast<std::size_t>(y) * image.width();
+  auto alpha_of = [](const Rgba* src, int n) {
     unsigned alpha = 255;
     int x = 0;
 #if defined(__SSE2__)
     __m128i all = _mm_set1_epi32(-1);
-    for (; x + 4 <= image.width(); x += 4)
+    for (; x + 4 <= n; x += 4)
       all = _mm_and_si128(all, _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + x)));
     alignas(16) std::uint32_t lanes[4];
     _mm_store_si128(reinterpret_cast<__m128i*>(lanes), all);
     for (std::uint32_t v : lanes) alpha &= v >> 24;
 #endif
-    for (; x < image.width(); ++x) alpha &= src[x].a;
-    out[y] = alpha != 255;
+    for (; x < n; ++x) alpha &= src[x].a;
+    return alpha;
+  };
+  for (int y = 0; y < image.height(); ++y) {
+    const Rgba* src = image.data() + static_cast<std::size_t>(y) * image.width();
+    if (known != nullptr && y >= y0 && y < y1)
+      out[y] = known[y - y0] || (alpha_of(src, x0) & alpha_of(src + x1, image.width() - x1)) != 255;
+    else
+      out[y] = alpha_of(src, image.width()) != 255;
   }
   return out;
 }
@@ -250,9 +261,13 @@ LineResponse::LineResponse(const Image& image, const LabelMap* regions) : image_
       x0 = std::max(0, bx0 - kNear), y0 = std::max(0, by0 - kNear);
       x1 = std::min(w, bx1 + 1 + kNear), y1 = std::min(h, by1 + 1 + kNear);
     }
-    image_translucent_ = translucent_rows_of(*image_);
     cv::Mat raw(h, w, CV_32F, raw_.get());
-    grey_into(*image_, 0, 0, cv::Rect(x0, y0, x1 - x0, y1 - y0), raw, nullptr, wide, widest);
+    // The conversion reads the box's pixels' alphas too: the rest of the
+    // image is scanned for translucent pixels after it.
+    std::vector<std::uint8_t> box_translucent(y1 - y0);
+    grey_into(*image_, 0, 0, cv::Rect(x0, y0, x1 - x0, y1 - y0), raw, box_translucent.data(), wide,
+              widest);
+    image_translucent_ = translucent_rows_of(*image_, x0, y0, x1, y1, box_translucent.data());
     raw_x0_ = x0, raw_y0_ = y0, raw_x1_ = x1, raw_y1_ = y1;
   };
   converting_ = worker_.submit(convert);

@@ -748,5 +748,33 @@ TEST(GreyLevels, ConvertedNearTheRegionsMeasureLikeTheWholeImage) {
   }
 }
 
+// Which rows hold translucent pixels is read beside the grey levels in the
+// box converted near the regions, and from the image elsewhere: a row whose
+// only translucent pixels lie left or right of that box, or a row above it,
+// is still smoothed as translucent (as when the whole image is converted).
+TEST(GreyLevels, TranslucentPixelsBesideTheConvertedBoxCount) {
+  Image image = test_image(420, 333, 6, false);
+  LabelMap labels(image.width(), image.height(), 0);
+  for (int y = 120; y < 210; ++y)
+    for (int x = 150 + y / 9; x < 260; ++x) labels.at(x, y) = 1 + (x / 31 + y / 27) % 4;
+  // Left and right of the box (56 px about the regions) in rows through it,
+  // and in rows above it.
+  for (int y = 125; y < 200; y += 5) {
+    image.at(20 + y % 11, y).a = 90;
+    image.at(400 - y % 7, y + 2).a = 0;
+  }
+  for (int y = 20; y < 40; y += 3) image.at(60 + y, y).a = 140;
+  const double lw = 3.0;
+  LineResponse whole(image);
+  whole.smooth(lw, 0, 0, image.width(), image.height());
+  LineResponse near(image, &labels);
+  near.smooth(lw, 0, 0, image.width(), image.height());
+  int differ = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      differ += whole.smoothed_colour(x, y) != near.smoothed_colour(x, y);
+  EXPECT_EQ(differ, 0);
+}
+
 }  // namespace
 }  // namespace hair25d::layering
