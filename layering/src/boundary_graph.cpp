@@ -216,7 +216,8 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels) {
 
 namespace detail {
 
-BoundaryGraph build_boundary_graph(const LabelMap& labels, bool wide_rows, bool widest_rows) {
+BoundaryGraph build_boundary_graph(const LabelMap& labels, bool wide_rows, bool widest_rows,
+                                   const LabelBox* box) {
   if (labels.empty())
     throw Error("layering: label map is empty (" + std::to_string(labels.width()) + "x" +
                 std::to_string(labels.height()) + "); need at least one pixel");
@@ -255,6 +256,13 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels, bool wide_rows, bool 
   const bool wide = wide_rows && trace_avx2_available();
   const bool widest = wide && widest_rows && trace_avx512_available();
   long long horizontal = 0;
+  // Outside the box of the non-zero labels every label is 0: a row pair
+  // there changes nowhere, and within the box's rows the labels change only
+  // at corners x0 <= x <= x1 + 1 (the corners at x = 0 and x = w are
+  // visited apart). Without a box, the whole row.
+  const bool boxed = box != nullptr && box->any;
+  const int row0 = boxed ? box->y0 : 0, row1 = boxed ? box->y1 + 1 : h;  // rows y of corners
+  const int xs = boxed ? std::max(1, box->x0) : 1, xe = boxed ? std::min(w, box->x1 + 2) : w;
   for (int y = 0; y <= h; ++y) {
     if (y == 0 || y == h) {
       for (int x = 0; x <= w; ++x) visit_corner(x, y);
@@ -267,12 +275,18 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels, bool wide_rows, bool 
 #if defined(HAIR25D_TRACE_AVX2)
     if (wide) {
       const int* above = below - w;
-      auto visit = [&](int x) { visit_corner(x, y); };
-      int x = widest ? corner_row_avx512(above, below, w, visit, &horizontal) : 1;
-      x = corner_row_avx2(above, below, w, visit, &horizontal, x);
-      for (; x < w; ++x) {
-        if (above[x - 1] != above[x] || below[x - 1] != below[x]) visit_corner(x, y);
-        horizontal += above[x] != below[x];
+      if (y >= row0 && y <= row1 && xs < xe) {
+        // The scans run over x in [1, n) of rows starting at xs − 1.
+        const int* a = above + (xs - 1);
+        const int* b = below + (xs - 1);
+        const int n = xe - xs + 1;
+        auto visit = [&](int x) { visit_corner(x + xs - 1, y); };
+        int x = widest ? corner_row_avx512(a, b, n, visit, &horizontal) : 1;
+        x = corner_row_avx2(a, b, n, visit, &horizontal, x);
+        for (; x < n; ++x) {
+          if (a[x - 1] != a[x] || b[x - 1] != b[x]) visit_corner(x + xs - 1, y);
+          horizontal += a[x] != b[x];
+        }
       }
       horizontal += above[0] != below[0];
       visit_corner(w, y);

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "boundary_trace.h"
 #include "colour_line.h"
 #include "hair25d/core/error.h"
 #include "hair25d/layering/depth_order.h"
@@ -134,7 +135,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                                           : detail::LineResponse::estimate_line_width(image);
   // The grey levels are smoothed on a second core while the boundaries are traced.
   lines.prepare(out.line_width, out.labels, options.fill_outlines ? &filled_box : nullptr);
-  out.graph = build_boundary_graph(out.labels);
+  out.graph = detail::build_boundary_graph(out.labels, true, true,
+                                           options.fill_outlines ? &filled_box : nullptr);
   const BoundaryGraph& graph = out.graph;
   const auto& bs = graph.boundaries;
   const int nb = static_cast<int>(bs.size());

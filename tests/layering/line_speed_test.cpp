@@ -604,6 +604,62 @@ TEST(TraceRows, WideRowsTraceLikeNarrowOnes) {
   EXPECT_GT(loops, 3);  // the closed-loop scan had work to do
 }
 
+// The layering gives the trace the outline fill's box of the non-zero
+// labels: the rows are scanned only across it, to the same graph as the
+// whole rows give (strand maps with islands set in a larger map of zeros at
+// random places, touching its sides or not; the tight box and a looser one;
+// eight and sixteen corners at a time).
+TEST(TraceRows, RowsScannedAcrossTheBoxTraceLikeWholeRows) {
+  std::mt19937 rng(31);
+  for (int trial = 0; trial < 24; ++trial) {
+    const int iw = 1 + static_cast<int>(rng() % 120), ih = 1 + static_cast<int>(rng() % 80);
+    const LabelMap inner = strand_map(iw, ih, 900 + trial, 1 + trial % 4);
+    const int left = trial % 4 == 0 ? 0 : static_cast<int>(rng() % 40);
+    const int top = trial % 5 == 0 ? 0 : static_cast<int>(rng() % 30);
+    const int w = left + iw + (trial % 3 == 0 ? 0 : static_cast<int>(rng() % 50));
+    const int h = top + ih + (trial % 4 == 1 ? 0 : static_cast<int>(rng() % 30));
+    LabelMap m(w, h, 0);
+    for (int y = 0; y < ih; ++y)
+      for (int x = 0; x < iw; ++x) m.at(left + x, top + y) = inner.at(x, y);
+    // Labels that change along the box's sides: junctions on its edges.
+    if (trial % 3 != 2) {
+      for (int y = 0; y < ih; ++y) {
+        m.at(left, top + y) = 40 + (y / 3) % 2;
+        m.at(left + iw - 1, top + y) = 42 + (y / 2) % 2;
+      }
+      for (int x = 0; x < iw; ++x) {
+        m.at(left + x, top) = 44 + (x / 4) % 2;
+        m.at(left + x, top + ih - 1) = 46 + (x / 3) % 2;
+      }
+    }
+    if (trial % 2 == 1)  // an island: a rectangle inside a rectangle
+      for (int y = top + ih / 4; y < top + ih / 2; ++y)
+        for (int x = left + iw / 4; x < left + iw / 2; ++x) m.at(x, y) = 30;
+    detail::LabelBox tight;
+    tight.any = detail::label_box(m, &tight.x0, &tight.y0, &tight.x1, &tight.y1);
+    detail::LabelBox loose = tight;
+    loose.x0 = std::max(0, loose.x0 - 3), loose.y0 = std::max(0, loose.y0 - 2);
+    loose.x1 = std::min(w - 1, loose.x1 + 5), loose.y1 = std::min(h - 1, loose.y1 + 1);
+    const BoundaryGraph want = detail::build_boundary_graph(m, false);
+    for (const detail::LabelBox* box : {&tight, &loose})
+      for (const bool widest : {false, true}) {
+        const BoundaryGraph got = detail::build_boundary_graph(m, true, widest, box);
+        ASSERT_EQ(got.junctions.size(), want.junctions.size()) << "trial " << trial;
+        for (std::size_t j = 0; j < got.junctions.size(); ++j) {
+          EXPECT_EQ(got.junctions[j].position, want.junctions[j].position) << "trial " << trial;
+          EXPECT_EQ(got.junctions[j].boundaries, want.junctions[j].boundaries);
+        }
+        ASSERT_EQ(got.boundaries.size(), want.boundaries.size()) << "trial " << trial;
+        for (std::size_t i = 0; i < got.boundaries.size(); ++i) {
+          EXPECT_EQ(got.boundaries[i].left, want.boundaries[i].left);
+          EXPECT_EQ(got.boundaries[i].right, want.boundaries[i].right);
+          EXPECT_TRUE(got.boundaries[i].points == want.boundaries[i].points)
+              << "trial " << trial << ", boundary " << i;
+        }
+      }
+  }
+}
+
 // The region ids the layering reads off the input map (skipping runs of one
 // label, a cache of labels met before) are LabelMap::labels: on strand maps,
 // noise, negative and large labels, more labels than the cache has slots,
