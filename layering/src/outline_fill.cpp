@@ -479,18 +479,26 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
           }
           // A line one pixel wide has no two fronts meeting inside it: the
           // front of one region steps straight onto the other region's own
-          // pixels. Such crossings are counted apart (once, from the label-0
-          // pixel; the frame lies outside the map's regions).
+          // pixels. Such crossings — a label-0 pixel between the pixels of
+          // two regions across it, along a row or a column — are counted
+          // apart (the frame, also 0 in `dist`, lies outside the map's
+          // regions).
           if (dist[i] != kOrtho) continue;
-          const std::pair<int, int> sides[4] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
-          for (const auto& [nx, ny] : sides) {
+          auto label_at = [&](int nx, int ny) {
             if (nx < g.box.x0 || nx >= g.box.x0 + g.box.w || ny < 0 || ny >= labels.height())
-              continue;
-            const int l = map[static_cast<std::size_t>(ny) * map_w + nx];
-            if (l != 0 && l != owner[i]) {
+              return 0;
+            return map[static_cast<std::size_t>(ny) * map_w + nx];
+          };
+          if (dist[i - 1] == 0 && dist[i + 1] == 0) {
+            const int l = label_at(x - 1, y), r = label_at(x + 1, y);
+            if (l != 0 && r != 0 && l != r) {
               ++one_pixel[b];
-              break;
+              continue;
             }
+          }
+          if (dist[i - stride] == 0 && dist[i + stride] == 0) {
+            const int u = label_at(x, y - 1), d = label_at(x, y + 1);
+            if (u != 0 && d != 0 && u != d) ++one_pixel[b];
           }
         }
       },
