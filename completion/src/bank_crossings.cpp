@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "join_paint.h"
+
 namespace hair25d::completion::detail {
 namespace {
 
@@ -121,6 +123,11 @@ constexpr int kMinMassRays = 3;
 // with a colour step <= 10 mostly 0.02–0.26 (strand tips on the face), two
 // 0.32 and 0.43 (a bang lying on the face, in the back hair's colour).
 constexpr double kMinMassDepthRatio = 0.3;
+// Or the pieces are painted by one linear field (RegionFields::step, RGB):
+// a gradient over the whole back hair steps across the fan by its slope
+// times the crossed width (gradient seeds 101-116: right candidates over
+// the 10 RGB limit 0-0.75 (two 1.75, 2.13), wrong ones 1.45 and up).
+constexpr double kMaxMassFieldStep = 1.0;
 
 struct MassRay {
   int index = 0;  // along the outline
@@ -324,6 +331,8 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
     }
   }
   std::vector<MassJoin> out;
+  RegionTones tones(ctx);
+  RegionFields fields(ctx);
   for (const auto& [a, targets] : rays)
     for (const auto& [b, ab] : targets) {
       if (b <= a) continue;
@@ -335,7 +344,12 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
       double j_colour = 0.0;
       j_colour = std::max(median_colour_step(ab), median_colour_step(ba));
       const double spread = std::max(median_spread(ab), median_spread(ba));
-      if (j_colour > kMaxMassColourStep + kMassSpreadShare * std::max(0.0, spread - kTextureFloor))
+      // A gradient over the back hair steps across the fan; one linear field
+      // painting both pieces explains the step (not on screentone, where
+      // the tone decides).
+      if (j_colour >
+              kMaxMassColourStep + kMassSpreadShare * std::max(0.0, spread - kTextureFloor) &&
+          (tones.screentone() || fields.step(a, b) > kMaxMassFieldStep))
         continue;
       // Both pieces wide behind the cut, compared with the strands crossed.
       auto wide = [](const std::vector<MassRay>& list) {

@@ -70,3 +70,39 @@ PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const Ed
                      const RegionPaint& ra, const RegionPaint& rb, const Eigen::Vector3d& shadow);
 
 }  // namespace hair25d::completion::detail
+
+namespace hair25d::completion::detail {
+
+// Whether two pieces are painted by one linear colour field (a gradient
+// running on under the occluders), judged over the pieces' whole
+// interiors: least-squares fits colour = c + S (x − m) per piece and over
+// both together, from sums kept per region (drawn pixels 2 px inside it —
+// 1 px or all for a sliver — ink left out). A field fitted over a whole
+// back-hair piece predicts its gradient far from the cut; the 11 x 11
+// windows at a path's or ray's ends do not (the gradient across the
+// crossed strands is the step they measure).
+class RegionFields {
+ public:
+  explicit RegionFields(const Context& ctx) : ctx_(&ctx) {}
+  // The RGB the joint fit misses by on each piece beyond that piece's own
+  // fit (root of the excess mean square), summed over both pieces.
+  // Infinity — nothing said — when either piece has too few pixels or is
+  // not linear itself, or when the joint field is no gradient (too
+  // shallow, or predicting little change between the pieces): pieces of
+  // one flat paint fit one field whichever strands they belong to.
+  double step(int a, int b);
+
+  struct Sums {
+    double n = 0;
+    Eigen::Matrix3d xx = Eigen::Matrix3d::Zero();  // [1 x y]^T [1 x y]
+    Eigen::Matrix3d xc = Eigen::Matrix3d::Zero();  // [1 x y]^T rgb, rows = design
+    double cc = 0;                                 // sum |rgb|^2
+  };
+
+ private:
+  const Sums& sums(int region);
+  const Context* ctx_;
+  std::map<int, Sums> sums_;
+};
+
+}  // namespace hair25d::completion::detail

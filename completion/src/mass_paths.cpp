@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 #include <set>
 
 #include "bank_crossings.h"
+#include "join_paint.h"
 
 namespace hair25d::completion::detail {
 namespace {
@@ -30,6 +32,12 @@ constexpr int kBands = 48;
 constexpr double kMinStraightCover = 0.9;
 // Largest median RGB step between the windows at a path's two ends.
 constexpr double kMaxPathColourStep = 0.8;
+// Or the pieces are painted by one linear field (RegionFields::step, RGB):
+// on gradient seeds 101-116 path candidates of one strand measured 0-0.45
+// (a few 0.67-3.6), of two strands one 0.09 (a bang and the cap), then 0.51
+// and up. Gradient 101-116: 0.3 gave 0.967 / 0.749, 0.4 0.968 / 0.771, 0.5
+// 0.968 / 0.793, 0.7 0.885 / 0.793 (a wrong back-hair join).
+constexpr double kMaxPathFieldStep = 0.5;
 // A piece whose outline runs this close to the face (within 3 px) all round
 // but for a sliver lies on the face: back hair is hidden by the face, so
 // part of its outline runs along other things (generated 1000 x 800 seed 14:
@@ -318,6 +326,7 @@ double tone_join_cost(RegionTones& tones, int a, int b) {
 std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& face) {
   if (!ctx.options->path_joins) return {};
   RegionTones tones(ctx);
+  RegionFields fields(ctx);
   cv::Mat near_face;
   if (!face.empty())
     cv::dilate(face, near_face, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(7, 7)));
@@ -382,12 +391,18 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         return v[v.size() / 2];
       };
       const double step = median(colour_steps);
-      if (step > kMaxPathColourStep && match != RegionTones::Match::kSame) continue;
+      // Or one linear field paints both pieces (a gradient over the back
+      // hair steps across the strand between the windows).
+      const double field =
+          tones.screentone() ? std::numeric_limits<double>::infinity() : fields.step(a, b);
+      if (step > kMaxPathColourStep && match != RegionTones::Match::kSame &&
+          field > kMaxPathFieldStep)
+        continue;
       MassJoin j;
       j.region_a = a;
       j.region_b = b;
       j.rays = n;
-      j.colour = step;
+      j.colour = std::min(step, field);
       j.bands = path_bands(landings);
       out.push_back(std::move(j));
     }

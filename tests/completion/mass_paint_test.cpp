@@ -1,0 +1,132 @@
+// The paint of back-hair pieces joined region to region (mass and path
+// joins, bank_crossings.cpp and mass_paths.cpp): a gradient over the whole
+// back hair continues under the strands lying on it, so the colour step the
+// windows at the cuts measure is no reason to keep the pieces apart when
+// one linear field paints both (RegionFields, join_paint.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "hair25d/completion/completion.h"
+#include "synthetic.h"
+
+namespace hair25d::completion {
+namespace {
+
+using test::below;
+using test::blank;
+using test::Drawing;
+using test::paint;
+
+constexpr Rgba kBack{120, 80, 50, 255};
+constexpr Rgba kFan{200, 150, 110, 255};
+
+// Repaints the drawn pixels of `region` with colour(x, y).
+void repaint(Drawing& d, int region, const std::function<Rgba(int, int)>& colour) {
+  for (int y = 0; y < d.image.height(); ++y)
+    for (int x = 0; x < d.image.width(); ++x)
+      if (d.regions.at(x, y) == region) d.image.at(x, y) = colour(x, y);
+}
+
+// The back hair's gradient: lighter to the right and down (0.46 RGB a px
+// along x), plus `offset` a channel.
+Rgba gradient(int x, int y, int offset) {
+  const auto c = [&](double base, double sx, double sy) {
+    return static_cast<std::uint8_t>(std::lround(base + sx * x + sy * y + offset));
+  };
+  return Rgba{c(60, 0.35, 0.1), c(40, 0.25, 0.08), c(30, 0.15, 0.05), 255};
+}
+
+// Back hair (regions 1 left, 2 right) behind a fan of three overlapping
+// vertical strands 3 < 4 < 5 across x 112..205 (as in mass_joins_test.cpp).
+Drawing back_hair_under_fan() {
+  Drawing d = blank(340, 200);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 120 && y > 60 && y < 130; }, kBack, 1);
+  paint(
+      d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, kBack, 2);
+  paint(
+      d, [](double x, double y) { return x > 112 && x < 145 && y > 10 && y < 190; }, kFan, 3);
+  paint(
+      d, [](double x, double y) { return x > 140 && x < 172 && y > 5 && y < 185; }, kFan, 4);
+  paint(
+      d, [](double x, double y) { return x > 168 && x < 205 && y > 15 && y < 195; }, kFan, 5);
+  d.relations = {below(1, 3), below(2, 5), below(3, 4), below(4, 5)};
+  return d;
+}
+
+// Back hair (1) and a sliver of it (2, 4 px wide between its outlines)
+// under strand 3 lying on both, strand 4 on the sliver only.
+Drawing back_hair_and_sliver() {
+  Drawing d = blank(300, 210);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 150 && y > 40 && y < 170; }, kBack, 1);
+  paint(
+      d, [](double x, double y) { return x > 150 && x < 200 && y > 40 && y < 170; }, kBack, 2);
+  paint(
+      d, [](double x, double y) { return x > 135 && x < 177 && y > 10 && y < 200; }, kFan, 3);
+  paint(
+      d, [](double x, double y) { return x > 185 && x < 230 && y > 15 && y < 195; }, kFan, 4);
+  d.relations = {below(1, 3), below(2, 3), below(2, 4)};
+  return d;
+}
+
+Result run(const Drawing& d) {
+  const Input in = test::input_of(d, Vec2(170, 20));
+  Options o;
+  // Strand joins ruled out: only the region-level joins can join.
+  o.max_join_angle_deg = 0.5;
+  o.min_width_ratio = 0.99;
+  o.inpaint_background = false;
+  o.face_joins = false;
+  return complete_strands(in, o);
+}
+
+TEST(MassPaint, BackHairInOneGradientIsJoinedAcrossTheFan) {
+  // The windows 6 px inside the two cuts, ~87 px apart, step ~39 RGB (over
+  // the 10 RGB limit: the old rule kept them apart); one linear field
+  // paints both pieces.
+  Drawing d = back_hair_under_fan();
+  repaint(d, 1, [](int x, int y) { return gradient(x, y, 0); });
+  repaint(d, 2, [](int x, int y) { return gradient(x, y, 0); });
+  const Result r = run(d);
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
+  for (int id : {3, 4, 5}) EXPECT_EQ(test::regions_with(r, id), (std::vector<int>{id}));
+}
+
+TEST(MassPaint, BackHairOffTheGradientIsNotJoined) {
+  // The right piece 14 levels a channel lighter than the left one's
+  // gradient carried on: a lock of another paint.
+  Drawing d = back_hair_under_fan();
+  repaint(d, 1, [](int x, int y) { return gradient(x, y, 0); });
+  repaint(d, 2, [](int x, int y) { return gradient(x, y, 14); });
+  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1}));
+}
+
+TEST(MassPaint, FlatPiecesOfOnePaintStayApartWhereNoGradientRuns) {
+  // Without a gradient the field says nothing the colour step does not:
+  // two flat pieces 24 levels a channel apart stay apart (a linear field
+  // through them would need a slope neither piece shows).
+  Drawing d = back_hair_under_fan();
+  repaint(d, 2, [](int, int) { return Rgba{144, 104, 74, 255}; });
+  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1}));
+}
+
+TEST(PathPaint, GradientSliverIsJoinedUnderTheStrandLyingOnBoth) {
+  // The windows at the paths' ends, ~44 px apart across strand 3, step ~20
+  // RGB (over the 0.8 RGB limit); the sliver has only 1-px-inside pixels.
+  Drawing d = back_hair_and_sliver();
+  repaint(d, 1, [](int x, int y) { return gradient(x, y, 0); });
+  repaint(d, 2, [](int x, int y) { return gradient(x, y, 0); });
+  const Result r = run(d);
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(r, 3), (std::vector<int>{3}));
+  Drawing off = back_hair_and_sliver();
+  repaint(off, 1, [](int x, int y) { return gradient(x, y, 0); });
+  repaint(off, 2, [](int x, int y) { return gradient(x, y, 14); });
+  EXPECT_EQ(test::regions_with(run(off), 1), (std::vector<int>{1}));
+}
+
+}  // namespace
+}  // namespace hair25d::completion
