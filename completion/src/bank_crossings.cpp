@@ -125,8 +125,8 @@ constexpr int kMinMassRays = 3;
 constexpr double kMinMassDepthRatio = 0.3;
 // Or the pieces are painted by one linear field (RegionFields::step, RGB):
 // a gradient over the whole back hair steps across the fan by its slope
-// times the crossed width (gradient seeds 101-116: right candidates over
-// the 10 RGB limit 0-0.75 (two 1.75, 2.13), wrong ones 1.45 and up).
+// times the crossed width (gradient seeds 101-116, the field without its
+// gates: right candidates 0-0.75 (two 1.75, 2.13), wrong ones 1.45 and up).
 constexpr double kMaxMassFieldStep = 1.0;
 
 struct MassRay {

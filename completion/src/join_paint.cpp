@@ -346,7 +346,11 @@ double RegionFields::step(int a, int b) {
   const Eigen::Matrix<double, 2, 3> slope = joint.bottomRows<2>() / kFieldScale;
   const Eigen::RowVector2d between((sb.xx(0, 1) / sb.n - sa.xx(0, 1) / sa.n) * kFieldScale,
                                    (sb.xx(0, 2) / sb.n - sa.xx(0, 2) / sa.n) * kFieldScale);
-  if (slope.norm() < kMinFieldSlope || (between * slope).norm() < kMinFieldChange)
+  // The gradient must be seen inside a piece: between two flat pieces of
+  // slightly different colours the joint fit itself slopes.
+  const auto own_slope = [](const Sums& s) { return fit(s).bottomRows<2>().norm() / kFieldScale; };
+  if (slope.norm() < kMinFieldSlope || std::max(own_slope(sa), own_slope(sb)) < kMinFieldSlope ||
+      (between * slope).norm() < kMinFieldChange)
     return std::numeric_limits<double>::infinity();
   const auto excess = [&](const Sums& s) {
     return std::sqrt(std::max(0.0, mean_square(s, joint) - mean_square(s, fit(s))));

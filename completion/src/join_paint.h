@@ -88,8 +88,10 @@ class RegionFields {
   // fit (root of the excess mean square), summed over both pieces.
   // Infinity — nothing said — when either piece has too few pixels or is
   // not linear itself, or when the joint field is no gradient (too
-  // shallow, or predicting little change between the pieces): pieces of
-  // one flat paint fit one field whichever strands they belong to.
+  // shallow, or predicting little change between the pieces, or no piece
+  // sloping on its own): pieces of one flat paint fit one field whichever
+  // strands they belong to, and two flat pieces of nearly one colour fit
+  // one sloping between them.
   double step(int a, int b);
 
   struct Sums {

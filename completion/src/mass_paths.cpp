@@ -33,10 +33,10 @@ constexpr double kMinStraightCover = 0.9;
 // Largest median RGB step between the windows at a path's two ends.
 constexpr double kMaxPathColourStep = 0.8;
 // Or the pieces are painted by one linear field (RegionFields::step, RGB):
-// on gradient seeds 101-116 path candidates of one strand measured 0-0.45
-// (a few 0.67-3.6), of two strands one 0.09 (a bang and the cap), then 0.51
-// and up. Gradient 101-116: 0.3 gave 0.967 / 0.749, 0.4 0.968 / 0.771, 0.5
-// 0.968 / 0.793, 0.7 0.885 / 0.793 (a wrong back-hair join).
+// on gradient seeds 101-116 path candidates (the field without its gates) of one strand measured
+// 0-0.45 (a few 0.67-2.13), of two strands one 0.09 (a bang and the cap), then 0.51 and up.
+// Gradient 101-116: 0.3 gave 0.967 / 0.749, 0.4 0.968 / 0.771, 0.5 0.968 / 0.793, 0.7 0.885 / 0.793
+// (a wrong back-hair join).
 constexpr double kMaxPathFieldStep = 0.5;
 // A piece whose outline runs this close to the face (within 3 px) all round
 // but for a sliver lies on the face: back hair is hidden by the face, so

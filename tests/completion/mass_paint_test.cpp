@@ -93,24 +93,17 @@ TEST(MassPaint, BackHairInOneGradientIsJoinedAcrossTheFan) {
   const Result r = run(d);
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
   for (int id : {3, 4, 5}) EXPECT_EQ(test::regions_with(r, id), (std::vector<int>{id}));
-}
-
-TEST(MassPaint, BackHairOffTheGradientIsNotJoined) {
   // The right piece 14 levels a channel lighter than the left one's
   // gradient carried on: a lock of another paint.
-  Drawing d = back_hair_under_fan();
-  repaint(d, 1, [](int x, int y) { return gradient(x, y, 0); });
-  repaint(d, 2, [](int x, int y) { return gradient(x, y, 14); });
-  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1}));
-}
-
-TEST(MassPaint, FlatPiecesOfOnePaintStayApartWhereNoGradientRuns) {
-  // Without a gradient the field says nothing the colour step does not:
-  // two flat pieces 24 levels a channel apart stay apart (a linear field
-  // through them would need a slope neither piece shows).
-  Drawing d = back_hair_under_fan();
-  repaint(d, 2, [](int, int) { return Rgba{144, 104, 74, 255}; });
-  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1}));
+  Drawing off = back_hair_under_fan();
+  repaint(off, 1, [](int x, int y) { return gradient(x, y, 0); });
+  repaint(off, 2, [](int x, int y) { return gradient(x, y, 14); });
+  EXPECT_EQ(test::regions_with(run(off), 1), (std::vector<int>{1}));
+  // Without a gradient the field says nothing the colour step does not: two
+  // flat pieces 24 levels a channel apart stay apart.
+  Drawing flat = back_hair_under_fan();
+  repaint(flat, 2, [](int, int) { return Rgba{144, 104, 74, 255}; });
+  EXPECT_EQ(test::regions_with(run(flat), 1), (std::vector<int>{1}));
 }
 
 TEST(PathPaint, GradientSliverIsJoinedUnderTheStrandLyingOnBoth) {
@@ -126,6 +119,11 @@ TEST(PathPaint, GradientSliverIsJoinedUnderTheStrandLyingOnBoth) {
   repaint(off, 1, [](int x, int y) { return gradient(x, y, 0); });
   repaint(off, 2, [](int x, int y) { return gradient(x, y, 14); });
   EXPECT_EQ(test::regions_with(run(off), 1), (std::vector<int>{1}));
+  // Both pieces flat, the sliver 10 levels a channel lighter: no piece shows
+  // a gradient of its own.
+  Drawing flat = back_hair_and_sliver();
+  repaint(flat, 2, [](int, int) { return Rgba{130, 90, 60, 255}; });
+  EXPECT_EQ(test::regions_with(run(flat), 1), (std::vector<int>{1}));
 }
 
 }  // namespace
