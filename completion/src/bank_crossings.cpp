@@ -267,7 +267,8 @@ TailedHair tailed_hair(const Context& ctx, const std::set<int>& front) {
   return out;
 }
 
-std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
+std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tones,
+                                           RegionFields& fields) {
   std::set<int> front;
   for (const auto& [id, ups] : ctx.above) front.insert(ups.begin(), ups.end());
   const TailedHair tailed = tailed_hair(ctx, front);
@@ -331,8 +332,6 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx) {
     }
   }
   std::vector<MassJoin> out;
-  RegionTones tones(ctx);
-  RegionFields fields(ctx);
   for (const auto& [a, targets] : rays)
     for (const auto& [b, ab] : targets) {
       if (b <= a) continue;

@@ -180,7 +180,11 @@ struct TailedHair {
 };
 TailedHair tailed_hair(const Context& ctx, const std::set<int>& front);
 // Candidates, surest (most rays both ways) first.
-std::vector<MassJoin> mass_join_candidates(const Context& ctx);
+// `tones` and `fields` (join_paint.h) are the drawing's, shared by the
+// join passes (each measures a region once).
+class RegionFields;
+std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tones,
+                                           RegionFields& fields);
 
 // Back-hair pieces linked through the regions lying above both of them
 // (mass_paths.cpp), after the mass and face joins: a piece facing another
@@ -192,7 +196,8 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx);
 // Pieces lying wholly along the `face` (CV_8U mask, may be empty) are strands
 // lying on it, not back hair. Textured pieces (RegionTones) compare colours
 // at the light percentile and must share their tone.
-std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& face);
+std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& face,
+                                           RegionTones& tones, RegionFields& fields);
 
 // Mean colour of a region's drawn pixels (not outlines) within 5 px of the
 // point 6 px from `at` along `inward`; `spread` (if given) gets their RGB

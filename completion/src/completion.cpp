@@ -13,6 +13,7 @@
 #include "context.h"
 #include "face_joins.h"
 #include "hair25d/core/error.h"
+#include "join_paint.h"
 #include "raster.h"
 #include "strand_assembly.h"
 
@@ -183,7 +184,11 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // joins of back hair may run behind it, and face joins (below) join pieces
   // seen on opposite sides of it.
   const detail::Face face = options.face_joins ? drawn_face : detail::Face{};
-  const std::vector<detail::Join> joins = detail::match_edges(ctx, candidates, face.mask, try_join);
+  // The drawing's tones and paint fields, measured once for all join passes.
+  detail::RegionTones tones(ctx);
+  detail::RegionFields fields(ctx);
+  const std::vector<detail::Join> joins =
+      detail::match_edges(ctx, candidates, face.mask, tones, try_join);
   std::set<int> joined_atoms;
   for (const detail::Join& j : joins) {
     const detail::Edge& a = candidates[j.edge_a];
@@ -219,7 +224,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       pieces.areas.push_back({j.region_a, band, false, static_cast<int>(reports.size()) - 2});
     ++result.joins;
   };
-  for (const detail::MassJoin& j : detail::mass_join_candidates(ctx)) join_by_bands(j, true);
+  for (const detail::MassJoin& j : detail::mass_join_candidates(ctx, tones, fields))
+    join_by_bands(j, true);
   std::set<int> front;
   for (const auto& [id, ups] : ctx.above)
     for (int up : ups) front.insert(strands.find(up));
@@ -251,7 +257,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     ++result.joins;
   }
   // Back-hair pieces linked under the regions above both (mass_paths.cpp).
-  for (const detail::MassJoin& j : detail::path_join_candidates(ctx, face.mask))
+  for (const detail::MassJoin& j : detail::path_join_candidates(ctx, face.mask, tones, fields))
     join_by_bands(j, false);
   // Cases 2 and 3: every open edge grows on its own (grow_edge reads the
   // context only), most of completion's serial time: two workers take the

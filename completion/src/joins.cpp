@@ -167,7 +167,8 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
 }  // namespace
 
 std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
-                              const cv::Mat& face, const std::function<bool(int, int)>& try_join) {
+                              const cv::Mat& face, RegionTones& tones,
+                              const std::function<bool(int, int)>& try_join) {
   const Options& o = *ctx.options;
   // Back hair: regions above no region. Only the face hides back hair; a
   // strand lying on the face is drawn over it, so the face between two of
@@ -176,7 +177,6 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   for (const auto& [id, ups] : ctx.above) front.insert(ups.begin(), ups.end());
   const cv::Mat no_face;
   const double max_angle = o.max_join_angle_deg * M_PI / 180.0;
-  RegionTones tones(ctx);
   std::vector<BankCrossings> crossings(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i)
     if (edges[i].atoms.size() == 1) crossings[i] = cross_occluders(ctx, edges[i]);

@@ -323,10 +323,9 @@ double tone_join_cost(RegionTones& tones, int a, int b) {
   return 0.0;
 }
 
-std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& face) {
+std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& face,
+                                           RegionTones& tones, RegionFields& fields) {
   if (!ctx.options->path_joins) return {};
-  RegionTones tones(ctx);
-  RegionFields fields(ctx);
   cv::Mat near_face;
   if (!face.empty())
     cv::dilate(face, near_face, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(7, 7)));
