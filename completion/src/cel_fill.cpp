@@ -59,13 +59,12 @@ InpaintOptions source_ink_options(const Image& image, const LabelMap& fill, cons
 }
 
 Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& source,
-                  const InpaintOptions& options) {
+                  const std::vector<std::uint8_t>& ink) {
   // A source colour is a flat one when at least this share of the sources
   // is painted in it (hair a segmentation gave a few pixels of the face,
   // the dress or a highlight's rim does not fill its hidden part with them).
   constexpr double kCommonShare = 0.01;
   const int w = image.width(), h = image.height();
-  const std::vector<std::uint8_t> ink = ink_mask(image, options);
   auto idx = [w](int x, int y) { return static_cast<std::size_t>(y) * w + x; };
   auto usable = [&](int x, int y) { return usable_source(fill, source, x, y); };
   CommonColours colours(kCommonShare);

@@ -68,7 +68,7 @@ class SummedArea {
 class Filler {
  public:
   Filler(Image& image, const LabelMap& fill, const LabelMap& source, const InpaintOptions& o,
-         const Image* guide)
+         const Image* guide, const std::vector<std::uint8_t>* ink)
       : image_(image), o_(o), guide_(guide), w_(image.width()), h_(image.height()) {
     const std::size_t n = static_cast<std::size_t>(w_) * h_;
     known_.assign(n, 1);
@@ -122,7 +122,7 @@ class Filler {
       grey_[i] = 0.299f * c.r + 0.587f * c.g + 0.114f * c.b;
     }
     if (guide_ != nullptr) {
-      ink_ = detail::ink_mask(image_, o_);
+      ink_ = ink != nullptr ? *ink : detail::ink_mask(image_, o_);
       for (std::size_t i = 0; i < n; ++i)
         if (!known_[i]) ink_[i] = 0;
       ink_area_.build(ink_, w_, h_);
@@ -660,8 +660,9 @@ std::vector<std::uint8_t> ink_mask(const Image& image, const InpaintOptions& o) 
 }
 
 InpaintResult run_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
-                           const InpaintOptions& options, const Image* guide) {
-  Filler filler(image, fill, source, options, guide);
+                           const InpaintOptions& options, const Image* guide,
+                           const std::vector<std::uint8_t>* ink) {
+  Filler filler(image, fill, source, options, guide, ink);
   return filler.run();
 }
 
@@ -679,8 +680,10 @@ InpaintResult inpaint_cel(Image& image, const LabelMap& fill, const LabelMap& so
   check_inputs(image, fill, source, options);
   if (image.empty()) return {};
   const InpaintOptions o = detail::source_ink_options(image, fill, source, options);
-  const Image guide = detail::coarse_fill(image, fill, source, o);
-  return detail::run_exemplar(image, fill, source, o, &guide);
+  // The ink mask serves the coarse fill and the exemplar pass alike.
+  const std::vector<std::uint8_t> ink = detail::ink_mask(image, o);
+  const Image guide = detail::coarse_fill(image, fill, source, ink);
+  return detail::run_exemplar(image, fill, source, o, &guide, &ink);
 }
 
 }  // namespace hair25d::completion

@@ -42,12 +42,15 @@ InpaintOptions source_ink_options(const Image& image, const LabelMap& fill, cons
                                   const InpaintOptions& options);
 
 // The coarse fill of inpaint_cel: `image` with every `fill` pixel set to the
-// colour of the nearest known, ink-free source pixel.
+// colour of the nearest known, ink-free source pixel; `ink` is the image's
+// ink_mask.
 Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& source,
-                  const InpaintOptions& options);
+                  const std::vector<std::uint8_t>& ink);
 
-// Criminisi fill; with a guide, in cel mode (see inpaint_cel).
+// Criminisi fill; with a guide, in cel mode (see inpaint_cel). `ink`, when
+// the caller has it, is ink_mask(image, options) (else it is computed).
 InpaintResult run_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
-                           const InpaintOptions& options, const Image* guide);
+                           const InpaintOptions& options, const Image* guide,
+                           const std::vector<std::uint8_t>* ink = nullptr);
 
 }  // namespace hair25d::completion::detail
