@@ -20,24 +20,10 @@ using test::strand_with;
 constexpr Rgba kBack{120, 80, 50, 255};
 constexpr Rgba kFan{200, 150, 110, 255};
 
-// Back hair (regions 1 left, 2 right) behind a fan of three overlapping
-// vertical strands 3 < 4 < 5 that covers x 112..205: 90 px across, more than
-// the 0.6 edge lengths (~40 px) a single edge's bank rays reach.
+// Back hair in kBack (the right piece in `right_colour`) behind a fan of
+// three strands (test::back_hair_under_fan).
 Drawing back_hair_under_fan(Rgba right_colour) {
-  Drawing d = blank(340, 200);
-  paint(
-      d, [](double x, double y) { return x > 20 && x < 120 && y > 60 && y < 130; }, kBack, 1);
-  paint(
-      d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, right_colour,
-      2);
-  paint(
-      d, [](double x, double y) { return x > 112 && x < 145 && y > 10 && y < 190; }, kFan, 3);
-  paint(
-      d, [](double x, double y) { return x > 140 && x < 172 && y > 5 && y < 185; }, kFan, 4);
-  paint(
-      d, [](double x, double y) { return x > 168 && x < 205 && y > 15 && y < 195; }, kFan, 5);
-  d.relations = {below(1, 3), below(2, 5), below(3, 4), below(4, 5)};
-  return d;
+  return test::back_hair_under_fan(kBack, right_colour, kFan);
 }
 
 Result run(const Drawing& d) {

@@ -39,22 +39,8 @@ Rgba gradient(int x, int y, int offset) {
 }
 
 // Back hair (regions 1 left, 2 right) behind a fan of three overlapping
-// vertical strands 3 < 4 < 5 across x 112..205 (as in mass_joins_test.cpp).
-Drawing back_hair_under_fan() {
-  Drawing d = blank(340, 200);
-  paint(
-      d, [](double x, double y) { return x > 20 && x < 120 && y > 60 && y < 130; }, kBack, 1);
-  paint(
-      d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, kBack, 2);
-  paint(
-      d, [](double x, double y) { return x > 112 && x < 145 && y > 10 && y < 190; }, kFan, 3);
-  paint(
-      d, [](double x, double y) { return x > 140 && x < 172 && y > 5 && y < 185; }, kFan, 4);
-  paint(
-      d, [](double x, double y) { return x > 168 && x < 205 && y > 15 && y < 195; }, kFan, 5);
-  d.relations = {below(1, 3), below(2, 5), below(3, 4), below(4, 5)};
-  return d;
-}
+// vertical strands 3 < 4 < 5 across x 112..205 (test::back_hair_under_fan).
+Drawing back_hair_under_fan() { return test::back_hair_under_fan(kBack, kBack, kFan); }
 
 // Back hair (1) and a sliver of it (2, 4 px wide between its outlines)
 // under strand 3 lying on both, strand 4 on the sliver only.

@@ -67,6 +67,25 @@ inline Drawing strand_under_band(Rgba back, Rgba strand) {
   return d;
 }
 
+// Back hair (regions 1 left, 2 right) behind a fan of three overlapping
+// vertical strands 3 < 4 < 5 that covers x 112..205: 90 px across, more than
+// the 0.6 edge lengths (~40 px) a single edge's bank rays reach.
+inline Drawing back_hair_under_fan(Rgba left, Rgba right, Rgba fan) {
+  Drawing d = blank(340, 200);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 120 && y > 60 && y < 130; }, left, 1);
+  paint(
+      d, [](double x, double y) { return x > 195 && x < 320 && y > 66 && y < 128; }, right, 2);
+  paint(
+      d, [](double x, double y) { return x > 112 && x < 145 && y > 10 && y < 190; }, fan, 3);
+  paint(
+      d, [](double x, double y) { return x > 140 && x < 172 && y > 5 && y < 185; }, fan, 4);
+  paint(
+      d, [](double x, double y) { return x > 168 && x < 205 && y > 15 && y < 195; }, fan, 5);
+  d.relations = {below(1, 3), below(2, 5), below(3, 4), below(4, 5)};
+  return d;
+}
+
 // The completion input for drawing `d` (which must outlive it).
 inline Input input_of(const Drawing& d, std::optional<Vec2> head_center) {
   Input in;
