@@ -58,6 +58,14 @@ Drawing back_hair_and_sliver() {
   return d;
 }
 
+// `d` with pieces 1 and 2 in the back hair's gradient, 2 lifted by
+// `offset` a channel.
+Drawing in_gradient(Drawing d, int offset) {
+  repaint(d, 1, [](int x, int y) { return gradient(x, y, 0); });
+  repaint(d, 2, [offset](int x, int y) { return gradient(x, y, offset); });
+  return d;
+}
+
 Result run(const Drawing& d) {
   const Input in = test::input_of(d, Vec2(170, 20));
   Options o;
@@ -73,18 +81,13 @@ TEST(MassPaint, BackHairInOneGradientIsJoinedAcrossTheFan) {
   // The windows 6 px inside the two cuts, ~87 px apart, step ~39 RGB (over
   // the 10 RGB limit: the old rule kept them apart); one linear field
   // paints both pieces.
-  Drawing d = back_hair_under_fan();
-  repaint(d, 1, [](int x, int y) { return gradient(x, y, 0); });
-  repaint(d, 2, [](int x, int y) { return gradient(x, y, 0); });
-  const Result r = run(d);
+  const Result r = run(in_gradient(back_hair_under_fan(), 0));
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
   for (int id : {3, 4, 5}) EXPECT_EQ(test::regions_with(r, id), (std::vector<int>{id}));
   // The right piece 14 levels a channel lighter than the left one's
   // gradient carried on: a lock of another paint.
-  Drawing off = back_hair_under_fan();
-  repaint(off, 1, [](int x, int y) { return gradient(x, y, 0); });
-  repaint(off, 2, [](int x, int y) { return gradient(x, y, 14); });
-  EXPECT_EQ(test::regions_with(run(off), 1), (std::vector<int>{1}));
+  EXPECT_EQ(test::regions_with(run(in_gradient(back_hair_under_fan(), 14)), 1),
+            (std::vector<int>{1}));
   // Without a gradient the field says nothing the colour step does not: two
   // flat pieces 24 levels a channel apart stay apart.
   Drawing flat = back_hair_under_fan();
@@ -95,16 +98,11 @@ TEST(MassPaint, BackHairInOneGradientIsJoinedAcrossTheFan) {
 TEST(PathPaint, GradientSliverIsJoinedUnderTheStrandLyingOnBoth) {
   // The windows at the paths' ends, ~44 px apart across strand 3, step ~20
   // RGB (over the 0.8 RGB limit); the sliver has only 1-px-inside pixels.
-  Drawing d = back_hair_and_sliver();
-  repaint(d, 1, [](int x, int y) { return gradient(x, y, 0); });
-  repaint(d, 2, [](int x, int y) { return gradient(x, y, 0); });
-  const Result r = run(d);
+  const Result r = run(in_gradient(back_hair_and_sliver(), 0));
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
   EXPECT_EQ(test::regions_with(r, 3), (std::vector<int>{3}));
-  Drawing off = back_hair_and_sliver();
-  repaint(off, 1, [](int x, int y) { return gradient(x, y, 0); });
-  repaint(off, 2, [](int x, int y) { return gradient(x, y, 14); });
-  EXPECT_EQ(test::regions_with(run(off), 1), (std::vector<int>{1}));
+  EXPECT_EQ(test::regions_with(run(in_gradient(back_hair_and_sliver(), 14)), 1),
+            (std::vector<int>{1}));
   // Both pieces flat, the sliver 10 levels a channel lighter: no piece shows
   // a gradient of its own.
   Drawing flat = back_hair_and_sliver();

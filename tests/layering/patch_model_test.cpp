@@ -221,7 +221,9 @@ TEST(JunctionPatch, TheGreyChannelShowsLinesNotTones) {
     // Flat paint two rows away reads 0, dark or light (but for region 2's
     // cells beside region 3, below).
     EXPECT_FLOAT_EQ(dark(i, 5), 0.0f) << i;
-    if (i != 7) EXPECT_FLOAT_EQ(dark(i, 11), 0.0f) << i;
+    if (i != 7) {
+      EXPECT_FLOAT_EQ(dark(i, 11), 0.0f) << i;
+    }
   }
   // A paint row next to a lighter row reads their difference: row 9 (the
   // first row of 2 and 3) borders the line only, so its brightest neighbour
@@ -296,6 +298,20 @@ TEST(PatchScore, BothScoresAtOnceAreTheSameScores) {
   }
 }
 
+// A patch as the layering makes them: label inputs mostly zero, else −0 or
+// a quarter step; grey inputs zero or in [0, 2).
+Patch sparse_patch(std::mt19937& rng) {
+  std::uniform_int_distribution<int> quarter(-4, 4), pick(0, 9);
+  std::uniform_real_distribution<float> grey(0, 2);
+  Patch p{};
+  for (int i = 0; i < kPatchLabelInputs; ++i) {
+    const int c = pick(rng);
+    p[i] = c < 6 ? 0.0f : c == 6 ? -0.0f : 0.25f * static_cast<float>(quarter(rng));
+  }
+  for (int i = kPatchLabelInputs; i < kPatchInputs; ++i) p[i] = pick(rng) < 5 ? 0.0f : grey(rng);
+  return p;
+}
+
 TEST(PatchScore, BothScoresAtOnceOnSparsePatches) {
   // Patches as the layering makes them (mostly zeros, quarters, a grey
   // channel), plus −0, NaN-free odd values and a network reading fewer
@@ -304,15 +320,8 @@ TEST(PatchScore, BothScoresAtOnceOnSparsePatches) {
   const PatchNet& order = patch_weights();
   const PatchNet& same = patch_same_weights().net;
   std::mt19937 rng(29);
-  std::uniform_int_distribution<int> quarter(-4, 4), pick(0, 9);
-  std::uniform_real_distribution<float> grey(0, 2);
   for (int k = 0; k < 20; ++k) {
-    Patch p{};
-    for (int i = 0; i < kPatchLabelInputs; ++i) {
-      const int c = pick(rng);
-      p[i] = c < 6 ? 0.0f : c == 6 ? -0.0f : 0.25f * static_cast<float>(quarter(rng));
-    }
-    for (int i = kPatchLabelInputs; i < kPatchInputs; ++i) p[i] = pick(rng) < 5 ? 0.0f : grey(rng);
+    const Patch p = sparse_patch(rng);
     for (int used : {kPatchInputs, kPatchLabelInputs, kPatchScaleInputs + 7}) {
       const PatchScores s = patch_scores(order, used, same, p);
       EXPECT_EQ(s.order, patch_net(order, p, used) - patch_net(order, swapped(p), used));
@@ -341,17 +350,8 @@ TEST(PatchScore, ManyPatchesAtOnceScoreAsEachAlone) {
   const PatchNet& order = patch_weights();
   const PatchNet& same = patch_same_weights().net;
   std::mt19937 rng(41);
-  std::uniform_int_distribution<int> quarter(-4, 4), pick(0, 9);
-  std::uniform_real_distribution<float> grey(0, 2);
   std::vector<Patch> patches(7);
-  for (Patch& p : patches) {
-    p = Patch{};
-    for (int i = 0; i < kPatchLabelInputs; ++i) {
-      const int c = pick(rng);
-      p[i] = c < 6 ? 0.0f : c == 6 ? -0.0f : 0.25f * static_cast<float>(quarter(rng));
-    }
-    for (int i = kPatchLabelInputs; i < kPatchInputs; ++i) p[i] = pick(rng) < 5 ? 0.0f : grey(rng);
-  }
+  for (Patch& p : patches) p = sparse_patch(rng);
   patches[3] = Patch{};     // no input at all
   patches[4].fill(-0.75f);  // every input
   for (int used : {kPatchInputs, kPatchLabelInputs, kPatchScaleInputs + 7, 0})
