@@ -17,8 +17,8 @@ using test::Drawing;
 using test::paint;
 using test::strand_with;
 
-constexpr Rgba kBack{120, 80, 50, 255};
-constexpr Rgba kFan{200, 150, 110, 255};
+using test::kBack;
+using test::kFan;
 
 // Back hair in kBack (the right piece in `right_colour`) behind a fan of
 // three strands (test::back_hair_under_fan).
@@ -26,17 +26,9 @@ Drawing back_hair_under_fan(Rgba right_colour) {
   return test::back_hair_under_fan(kBack, right_colour, kFan);
 }
 
-Result run(const Drawing& d) {
-  const Input in = test::input_of(d, Vec2(170, 20));
-  Options o;
-  // Strand joins ruled out (tangents along the chords, cut widths within 1 %;
-  // the right piece is narrower): only the region-level banks can join.
-  o.max_join_angle_deg = 0.5;
-  o.min_width_ratio = 0.99;
-  o.inpaint_background = false;
-  o.face_joins = false;  // no face here; the paper near the head would pass for one
-  return complete_strands(in, o);
-}
+// Only the region-level joins can join (the tests' pieces are cut along
+// chords; the right piece is narrower).
+Result run(const Drawing& d) { return test::run_region_joins(d); }
 
 TEST(MassJoins, BackHairUnderAFanOfStrandsIsJoinedAcrossIt) {
   const Drawing d = back_hair_under_fan(kBack);

@@ -19,8 +19,8 @@ using test::blank;
 using test::Drawing;
 using test::paint;
 
-constexpr Rgba kBack{120, 80, 50, 255};
-constexpr Rgba kFan{200, 150, 110, 255};
+using test::kBack;
+using test::kFan;
 
 // Repaints the drawn pixels of `region` with colour(x, y).
 void repaint(Drawing& d, int region, const std::function<Rgba(int, int)>& colour) {
@@ -66,16 +66,8 @@ Drawing in_gradient(Drawing d, int offset) {
   return d;
 }
 
-Result run(const Drawing& d) {
-  const Input in = test::input_of(d, Vec2(170, 20));
-  Options o;
-  // Strand joins ruled out: only the region-level joins can join.
-  o.max_join_angle_deg = 0.5;
-  o.min_width_ratio = 0.99;
-  o.inpaint_background = false;
-  o.face_joins = false;
-  return complete_strands(in, o);
-}
+// Only the region-level joins can join.
+Result run(const Drawing& d) { return test::run_region_joins(d); }
 
 TEST(MassPaint, BackHairInOneGradientIsJoinedAcrossTheFan) {
   // The windows 6 px inside the two cuts, ~87 px apart, step ~39 RGB (over

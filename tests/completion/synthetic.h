@@ -67,6 +67,10 @@ inline Drawing strand_under_band(Rgba back, Rgba strand) {
   return d;
 }
 
+// The back hair's and the fan's paint of back_hair_under_fan's tests.
+inline constexpr Rgba kBack{120, 80, 50, 255};
+inline constexpr Rgba kFan{200, 150, 110, 255};
+
 // Back hair (regions 1 left, 2 right) behind a fan of three overlapping
 // vertical strands 3 < 4 < 5 that covers x 112..205: 90 px across, more than
 // the 0.6 edge lengths (~40 px) a single edge's bank rays reach.
@@ -94,6 +98,19 @@ inline Input input_of(const Drawing& d, std::optional<Vec2> head_center) {
   in.relations = d.relations;
   in.head_center = head_center;
   return in;
+}
+
+// Completion where only the region-level joins (mass and path joins) can
+// join: strand joins ruled out (tangents within 0.5°, cut widths within
+// 1 %), no background fill, no face (the paper near the head would pass for
+// one); the head at (170, 20).
+inline Result run_region_joins(const Drawing& d) {
+  Options o;
+  o.max_join_angle_deg = 0.5;
+  o.min_width_ratio = 0.99;
+  o.inpaint_background = false;
+  o.face_joins = false;
+  return complete_strands(input_of(d, Vec2(170, 20)), o);
 }
 
 // The completed strand that holds `region`, or null.
