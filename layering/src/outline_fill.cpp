@@ -58,6 +58,47 @@ struct Front {
   int owner;
 };
 
+// A bucket of the growth's ring: fronts in the order they were put there,
+// with room for four more past its end after reserve(), which the AVX-512
+// relaxation writes whole (an entry's improved neighbours compressed into
+// one store, the count moved on by those improved).
+class Bucket {
+ public:
+  std::size_t size() const { return static_cast<std::size_t>(end_ - data_.get()); }
+  const Front& operator[](std::size_t k) const { return data_[k]; }
+  const Front* data() const { return data_.get(); }
+  void clear() { end_ = data_.get(); }
+  // Room for n fronts and four more.
+  void reserve(std::size_t n) {
+    if (n + 4 > capacity_) [[unlikely]]
+      regrow(n);
+  }
+  void push_back(const Front& f) {
+    if (end_ + 4 >= room_) [[unlikely]]
+      regrow(2 * size() + 16);
+    *end_++ = f;
+  }
+  // The end, where up to four fronts may be written (after reserve(size() + 4)),
+  // and how many of them to keep.
+  Front* end() { return end_; }
+  void grow_by(std::size_t n) { end_ += n; }
+
+ private:
+  __attribute__((noinline)) void regrow(std::size_t n) {
+    const std::size_t grown = std::max(n + 4, 2 * capacity_), kept = size();
+    auto more = std::make_unique_for_overwrite<Front[]>(grown);
+    std::copy(data_.get(), end_, more.get());
+    data_ = std::move(more);
+    capacity_ = grown;
+    end_ = data_.get() + kept;
+    room_ = data_.get() + capacity_;
+  }
+  std::unique_ptr<Front[]> data_;
+  Front* end_ = nullptr;   // past the last front
+  Front* room_ = nullptr;  // past the room
+  std::size_t capacity_ = 0;
+};
+
 struct Growth {
   Window box;
   // Chamfer distance (fifths of a pixel) to the nearest region: 0 on region
@@ -68,8 +109,9 @@ struct Growth {
   // The region that reached a label-0 pixel; set only where dist was
   // lowered, so it needs no clearing.
   std::unique_ptr<int[]> owner;
-  // Every label-0 pixel reached in the band's own rows, once: the passes
-  // after the growth visit these rather than the whole window.
+  // Every label-0 pixel reached in the band's own rows, once, in the order
+  // reached (not with `widest`, where the passes after the growth scan the
+  // own rows for them instead).
   std::vector<int> reached;
   // The same pixels with their image position, final distance and owner,
   // listed on the band's core after its growth, so that the serial pass
@@ -203,6 +245,38 @@ void seed_row(const std::uint16_t* mid, int stride, int n, std::vector<int>& see
   }
 }
 
+#if defined(HAIR25D_FILL_AVX2)
+__attribute__((target("avx2,avx512f,avx512bw"))) int reached_masks_avx512(const std::uint16_t* row,
+                                                                          int n,
+                                                                          std::uint32_t* masks) {
+  const __m512i none = _mm512_set1_epi16(static_cast<short>(kUnreached));
+  int x = 0;
+  for (; x + 32 <= n; x += 32) {
+    const __m512i v = _mm512_loadu_si512(row + x);
+    masks[x / 32] = _mm512_test_epi16_mask(v, v) & _mm512_cmpneq_epi16_mask(v, none);
+  }
+  return x;
+}
+#endif
+
+// Bit k % 32 of masks[k / 32]: whether row[k] (k in [0, n)) is a distance
+// reached, neither 0 (a region or the frame) nor kUnreached; thirty-two a
+// compare with `widest` (AVX-512F and BW).
+void reached_masks(const std::uint16_t* row, int n, std::uint32_t* masks, bool widest) {
+  int x = 0;
+#if defined(HAIR25D_FILL_AVX2)
+  if (widest) x = reached_masks_avx512(row, n, masks);
+#else
+  (void)widest;
+#endif
+  for (; x < n; x += 32) {
+    std::uint32_t bits = 0;
+    for (int k = 0; k < 32 && x + k < n; ++k)
+      bits |= static_cast<std::uint32_t>(row[x + k] != 0 && row[x + k] != kUnreached) << k;
+    masks[x / 32] = bits;
+  }
+}
+
 // Whether start_row and seed_row may use AVX2, and AVX-512.
 bool wide_rows_available() {
 #if defined(HAIR25D_FILL_AVX2)
@@ -272,6 +346,87 @@ inline unsigned improved_neighbours(const std::uint16_t* at, int stride,
 }
 #endif
 
+#if defined(HAIR25D_FILL_AVX2)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+// The fronts of bucket d (`count` of them from `fronts`) relaxed without a
+// branch per neighbour (AVX-512F, BW and VL): a front's eight compares as in
+// improved_neighbours (none for a stale entry), then the improved
+// neighbours' distances and owners written by masked stores of the three
+// rows, and their fronts compressed in relax order (right, left, down, up;
+// then down right, up right, down left, up left) and stored whole at the
+// ends of the edge bucket (d + kOrtho) and the corner bucket (d + kDiag),
+// which are moved on by the counts improved. The same distances, owners and
+// bucket order as the relaxations one neighbour after another, since a
+// relaxation changes only its own neighbour. `corner` is d + kDiag, or −1
+// past the limit.
+__attribute__((target("avx2,avx512f,avx512bw,avx512vl"))) void relax_bucket_avx512(
+    const Front* fronts, std::size_t count, int d, int corner, std::uint16_t* dist, int* owner,
+    int stride, Bucket& edges, Bucket& corners) {
+  edges.reserve(edges.size() + 4 * count);
+  corners.reserve(corners.size() + 4 * count);
+  const int edge = d + kOrtho;
+  const auto e = static_cast<short>(edge ^ 0x8000);
+  const auto c = static_cast<short>(corner < 0 ? 0x7FFF : corner ^ 0x8000);
+  constexpr short kNever = 0x7FFF;
+  const __m128i above_mid_limit = _mm_setr_epi16(c, e, c, kNever, e, kNever, e, kNever);
+  const __m128i below_limit = _mm_setr_epi16(c, e, c, kNever, kNever, kNever, kNever, kNever);
+  const __m128i bias = _mm_set1_epi16(static_cast<short>(0x8000));
+  // The distances written: a row above or below (corner, edge, corner), the
+  // own row (edge at the left and right lanes).
+  const auto cd = static_cast<short>(corner), ed = static_cast<short>(edge);
+  const __m128i row_values = _mm_setr_epi16(cd, ed, cd, 0, 0, 0, 0, 0);
+  const __m128i mid_values = _mm_setr_epi16(ed, 0, ed, 0, 0, 0, 0, 0);
+  const __m256i edge_offsets = _mm256_setr_epi64x(1, -1, stride, -stride);
+  const __m256i corner_offsets =
+      _mm256_setr_epi64x(stride + 1, -stride + 1, stride - 1, -stride - 1);
+  Front* edge_end = edges.end();
+  Front* corner_end = corners.end();
+  for (std::size_t k = 0; k < count; ++k) {
+    const int i = fronts[k].at;
+    const int own = fronts[k].owner;
+    // A stale entry (its pixel since lowered) relaxes nothing.
+    const unsigned live = -static_cast<unsigned>(dist[i] == d);
+    const std::uint16_t* at = dist + i;
+    const __m128i above_mid = _mm_xor_si128(
+        _mm_unpacklo_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(at - stride - 1)),
+                           _mm_loadl_epi64(reinterpret_cast<const __m128i*>(at - 1))),
+        bias);
+    const __m128i below =
+        _mm_xor_si128(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(at + stride - 1)), bias);
+    const unsigned am = _mm_cmpgt_epi16_mask(above_mid, above_mid_limit) & live;
+    const unsigned bm = _mm_cmpgt_epi16_mask(below, below_limit) & live;
+    const __mmask8 up_row = am & 7, mid_row = (am >> 4) & 5, down_row = bm & 7;
+    _mm_mask_storeu_epi16(dist + i - stride - 1, up_row, row_values);
+    _mm_mask_storeu_epi16(dist + i - 1, mid_row, mid_values);
+    _mm_mask_storeu_epi16(dist + i + stride - 1, down_row, row_values);
+    const __m128i owners = _mm_set1_epi32(own);
+    _mm_mask_storeu_epi32(owner + i - stride - 1, up_row, owners);
+    _mm_mask_storeu_epi32(owner + i - 1, mid_row, owners);
+    _mm_mask_storeu_epi32(owner + i + stride - 1, down_row, owners);
+    const unsigned order = kAboveMidOrder[am & 0xFF] | kBelowOrder[bm & 7];
+    const __m256i front = _mm256_set1_epi64x(
+        static_cast<long long>(static_cast<std::uint64_t>(static_cast<std::uint32_t>(i)) |
+                               static_cast<std::uint64_t>(static_cast<std::uint32_t>(own)) << 32));
+    // Neighbours lie inside the window (the frame), so i + offset ≥ 0 and
+    // the 64-bit sum keeps the owner in the high half.
+    const __mmask8 edge_bits = order & 0xF, corner_bits = order >> 4;
+    _mm256_storeu_si256(
+        reinterpret_cast<__m256i*>(edge_end),
+        _mm256_maskz_compress_epi64(edge_bits, _mm256_add_epi64(front, edge_offsets)));
+    edge_end += std::popcount(static_cast<unsigned>(edge_bits));
+    _mm256_storeu_si256(
+        reinterpret_cast<__m256i*>(corner_end),
+        _mm256_maskz_compress_epi64(corner_bits, _mm256_add_epi64(front, corner_offsets)));
+    corner_end += std::popcount(static_cast<unsigned>(corner_bits));
+  }
+  edges.grow_by(static_cast<std::size_t>(edge_end - edges.end()));
+  corners.grow_by(static_cast<std::size_t>(corner_end - corners.end()));
+}
+#pragma GCC diagnostic pop
+#endif
+
 // Dial's algorithm: a multi-source shortest path on the 8-neighbour grid with a
 // ring of buckets, linear in the pixel count. Fronts start from region pixels
 // next to label 0, in raster order; where two fronts reach a pixel at the same
@@ -322,7 +477,7 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
   // pixel's owner is read from the bucket, not from the map (a cache miss);
   // the map keeps the owners of the label-0 pixels reached, for the passes
   // after the growth.
-  std::array<std::vector<Front>, kDiag + 1> ring;
+  std::array<Bucket, kDiag + 1> ring;
   std::vector<int> seeds;
   for (int y = 0; y < win.h; ++y) {
     const int base = win.at(win.x0, win.y0 + y);
@@ -347,7 +502,7 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
     ring[nd % ring.size()].push_back({j, own});
   };
   // Each seed reaches a few pixels; reserving avoids most regrowth.
-  g.reached.reserve(4 * ring[0].size());
+  if (!widest) g.reached.reserve(4 * ring[0].size());
   std::size_t pending = ring[0].size();
 #if defined(HAIR25D_FILL_SSE2)
   // The neighbours in relax order (the bits of improved_neighbours).
@@ -363,7 +518,15 @@ Growth grow(const LabelMap& labels, const Window& box, int y0, int y1, int own0,
     // neighbours they improve are relaxed, in the same order (a relaxation
     // changes only its own neighbour, so the compares do not depend on each
     // other): the same distances, owners and bucket order.
-    if (wide) {
+#if defined(HAIR25D_FILL_AVX2)
+    if (widest) {
+      if (d + kOrtho <= limit)
+        relax_bucket_avx512(bucket.data(), bucket.size(), d, d + kDiag <= limit ? d + kDiag : -1,
+                            dist, owner, stride, ring[(d + kOrtho) % ring.size()],
+                            ring[(d + kDiag) % ring.size()]);
+    } else
+#endif
+        if (wide) {
       if (d + kOrtho <= limit) {
         const NeighbourLimits lim =
             neighbour_limits(d + kOrtho, d + kDiag <= limit ? d + kDiag : -1);
@@ -465,12 +628,10 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
         const int* owner = g.owner.get();
         const int stride = g.box.stride();
         std::vector<int>& meet = meets[b];
-        growth[b].given.resize(g.reached.size());
-        Growth::Given* given = growth[b].given.data();
+        Growth::Given* given = nullptr;  // the next to write
         const int* map = labels.data();
         const std::size_t map_w = static_cast<std::size_t>(labels.width());
-        for (int i : g.reached) {
-          const int x = g.box.x_of(i), y = g.box.y_of(i);
+        auto visit = [&](int i, int x, int y) __attribute__((always_inline)) {
           *given++ = {x, y, owner[i], dist[i]};
           for (int j : {i + 1, i + stride}) {
             // The frame and region pixels hold 0, unreached pixels kUnreached.
@@ -483,7 +644,7 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
           // two regions across it, along a row or a column — are counted
           // apart (the frame, also 0 in `dist`, lies outside the map's
           // regions).
-          if (dist[i] != kOrtho) continue;
+          if (dist[i] != kOrtho) return;
           auto label_at = [&](int nx, int ny) {
             if (nx < g.box.x0 || nx >= g.box.x0 + g.box.w || ny < 0 || ny >= labels.height())
               return 0;
@@ -493,12 +654,43 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
             const int l = label_at(x - 1, y), r = label_at(x + 1, y);
             if (l != 0 && r != 0 && l != r) {
               ++one_pixel[b];
-              continue;
+              return;
             }
           }
           if (dist[i - stride] == 0 && dist[i + stride] == 0) {
             const int u = label_at(x, y - 1), d = label_at(x, y + 1);
             if (u != 0 && d != 0 && u != d) ++one_pixel[b];
+          }
+        };
+        // The pixels reached in the own rows: in the order reached (the
+        // growth's list), or with `widest` in raster order, found by a scan
+        // of the distances thirty-two at a time (every pass below adds up or
+        // takes the median of what it finds, and writes each pixel once, so
+        // the order changes nothing); the scan needs no division for a
+        // pixel's place and reads the maps in order.
+        if (!widest) {
+          growth[b].given.resize(g.reached.size());
+          given = growth[b].given.data();
+          for (int i : g.reached) visit(i, g.box.x_of(i), g.box.y_of(i));
+        } else {
+          const std::size_t words = (g.box.w + 31) / 32;
+          std::vector<std::uint32_t> masks(words * (own1 - own0));
+          std::size_t count = 0;
+          for (int y = own0; y < own1; ++y) {
+            std::uint32_t* row = masks.data() + words * (y - own0);
+            reached_masks(dist + g.box.at(g.box.x0, y), g.box.w, row, widest);
+            for (std::size_t m = 0; m < words; ++m) count += std::popcount(row[m]);
+          }
+          growth[b].given.resize(count);
+          given = growth[b].given.data();
+          for (int y = own0; y < own1; ++y) {
+            const int base = g.box.at(g.box.x0, y);
+            const std::uint32_t* row = masks.data() + words * (y - own0);
+            for (std::size_t m = 0; m < words; ++m)
+              for (std::uint32_t bits = row[m]; bits != 0; bits &= bits - 1) {
+                const int k = static_cast<int>(32 * m) + std::countr_zero(bits);
+                visit(base + k, g.box.x0 + k, y);
+              }
           }
         }
       },

@@ -474,6 +474,45 @@ TEST(FillBands, NeighboursComparedAtOnceGrowLikeOneByOne) {
   }
 }
 
+// With AVX-512 the growth relaxes a bucket's fronts by masked stores and
+// compressed pushes, and the pass after it finds the pixels reached by a
+// scan of the rows: the same labels, line width, radius and box as the
+// growth one neighbour at a time with its list of pixels reached. Maps of
+// widths about the scan's 32-pixel blocks, thin lines (one-pixel crossings
+// decide the width), wide ones, noise (ties, buckets regrown many times)
+// and reaches where corners stop before edges, in bands.
+TEST(FillBands, MaskedRelaxationAndRowScanFillLikeOneByOne) {
+  std::mt19937 rng(31);
+  for (int trial = 0; trial < 36; ++trial) {
+    const int w = trial < 8 ? 30 + trial : 3 + static_cast<int>(rng() % 220);
+    const int h = 3 + static_cast<int>(rng() % 120);
+    LabelMap m = strand_map(w, h, 1300 + trial, 1 + trial % 6);
+    if (trial % 6 == 5) {
+      const int kinds[] = {0, 0, 0, 0, 0, 1, 2, 3, 4};
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) m.at(x, y) = kinds[rng() % 9];
+    }
+    const double reach = trial % 4 == 0 ? 0.0 : 0.2 * static_cast<double>(1 + rng() % 45);
+    for (const int bands : {1, 3}) {
+      detail::LabelBox widest_box, narrow_box;
+      const OutlineFill widest = detail::fill_outlines_in_bands(
+          m, {.max_distance = reach}, bands, 1, true, nullptr, &widest_box, true);
+      const OutlineFill narrow = detail::fill_outlines_in_bands(
+          m, {.max_distance = reach}, bands, 1, false, nullptr, &narrow_box, false);
+      const std::string where = "trial " + std::to_string(trial) + ", reach " +
+                                std::to_string(reach) + ", " + std::to_string(bands) + " bands";
+      EXPECT_EQ(widest.line_width, narrow.line_width) << where;
+      EXPECT_EQ(widest.radius, narrow.radius) << where;
+      EXPECT_TRUE(widest.labels == narrow.labels) << where;
+      EXPECT_EQ(widest_box.any, narrow_box.any) << where;
+      EXPECT_EQ(widest_box.x0, narrow_box.x0) << where;
+      EXPECT_EQ(widest_box.y0, narrow_box.y0) << where;
+      EXPECT_EQ(widest_box.x1, narrow_box.x1) << where;
+      EXPECT_EQ(widest_box.y1, narrow_box.y1) << where;
+    }
+  }
+}
+
 // The box the fill gives is label_box's answer on the filled map (which the
 // early blur would otherwise look for): generated maps, lines beyond the
 // regions' box, and maps with no regions.
