@@ -96,13 +96,14 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                 "; they must have the same size");
   // Helpers for every parallel step below, started once (parallel.h).
   detail::Pool pool;
-  // The region ids are read on the pool's helper while this thread fills
-  // the outlines (filling the moments the fill leaves a core idle), and
-  // checked before anything else is, so bad input is refused as before.
-  detail::DistinctLabels scan(regions, &pool);
+  // The region ids are read by the outline fill while it copies the map
+  // (else on the pool's helper while this thread goes on), and checked
+  // before anything else is, so bad input is refused as before.
+  std::optional<detail::DistinctLabels> scan;
+  if (!options.fill_outlines) scan.emplace(regions, &pool);
   std::vector<int> ids;
   auto check_ids = [&] {
-    ids = scan.get();
+    if (scan) ids = scan->get();
     if (ids.size() < 2)
       throw Error("layering: the region map has " + std::to_string(ids.size()) +
                   " hair region(s); layering needs at least two");
@@ -118,9 +119,18 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   detail::LineResponse lines(image, &regions);
   OutlineFill fill;
   detail::LabelBox filled_box;  // of out.labels' non-zero labels, with the fill
+  // The early blur of the grey levels (below) needs only the line width and
+  // the filled map's box: it starts on a second core as soon as the fill
+  // knows them, before it writes the pixels.
+  auto blur_early = [&](double fill_width, const detail::LabelBox& box) {
+    const double width = options.line_width > 0 ? options.line_width : fill_width;
+    if (width > 0) lines.prepare(width, regions, &box);  // (the box given: the map is not read)
+  };
   try {
-    if (options.fill_outlines) fill = detail::fill_outlines(regions, &pool, &filled_box);
+    if (options.fill_outlines)
+      fill = detail::fill_outlines(regions, &pool, &filled_box, &ids, blur_early);
   } catch (...) {
+    ids = detail::distinct_labels(regions);
     check_ids();
     throw;
   }
@@ -188,13 +198,19 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     }
   }
   const int margin = detail::LineResponse::window_margin(out.line_width);
-  lines.smooth(out.line_width, bx0 - margin, by0 - margin, bx1 + margin, by1 + margin);
+  lines.smooth(out.line_width, bx0 - margin, by0 - margin, bx1 + margin, by1 + margin, true);
   std::set<std::pair<int, int>> fixed_equal;
   for (const RegionRelation& r : options.fixed)
     if (r.relation == Relation::kEqual) fixed_equal.insert(key(r.a, r.b));
-  // Lines along the boundaries are measured on all cores (parallel.h).
+  // Lines along the boundaries are measured on all cores (parallel.h), and
+  // the grey levels' noise (for the threshold) is the first item.
   std::vector<detail::BoundaryLine> measured(nb);
-  detail::parallel_for(&pool, nb, [&](int i) {
+  detail::parallel_for(&pool, nb + 1, [&](int item) {
+    if (item == 0) {
+      lines.estimate_noise();
+      return;
+    }
+    const int i = item - 1;
     const Boundary& b = bs[i];
     if (b.left == kOutsideLabel || b.right == kOutsideLabel) return;
     Polyline curve = b.points;

@@ -354,7 +354,7 @@ void LineResponse::blur_early_bands() {
   }
 }
 
-void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
+void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1, bool noise_by_caller) {
   // Blur the early bands still left here, then rethrow what the conversion
   // or the early blur threw.
   if (smoothing_.valid()) {
@@ -406,7 +406,12 @@ void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
     if (early) {
       // Only the threshold needs the noise, after every line is measured: a
       // second core estimates it meanwhile (the measurements leave the
-      // grey levels unchanged).
+      // grey levels unchanged), or the caller does.
+      if (noise_by_caller) {
+        noise_x0_ = window.x, noise_y0_ = window.y, noise_w_ = window.width,
+        noise_h_ = window.height;
+        return;
+      }
       auto noise = [raw_window = raw(window)] {
         try {
           return noise_of(raw_window);
@@ -442,6 +447,17 @@ void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1) {
   } catch (const cv::Exception& e) {
     throw Error(std::string("layering: OpenCV failed while measuring lines: ") + e.what());
   }
+}
+
+void LineResponse::estimate_noise() {
+  if (noise_w_ == 0) return;
+  const cv::Mat raw(image_->height(), image_->width(), CV_32F, raw_.get());
+  try {
+    noise_sigma_ = noise_of(raw(cv::Rect(noise_x0_, noise_y0_, noise_w_, noise_h_)));
+  } catch (const cv::Exception& e) {
+    throw Error(std::string("layering: OpenCV failed while estimating noise: ") + e.what());
+  }
+  noise_w_ = 0;
 }
 
 Rgb3f LineResponse::smoothed_colour(int x, int y) const {

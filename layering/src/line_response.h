@@ -69,7 +69,14 @@ class LineResponse {
   // the part of the image near its non-zero labels is converted at first;
   // the rest is converted when a window reaches it.
   explicit LineResponse(const Image& image, const LabelMap* regions = nullptr);
-  void smooth(double line_width, int x0, int y0, int x1, int y1);
+  // With `noise_by_caller` the noise is not estimated on the second core
+  // after the early blur: the caller calls estimate_noise() (e.g. as one
+  // item of its parallel measurements), where the second core's thread, a
+  // third one, would wait for a core until they end.
+  void smooth(double line_width, int x0, int y0, int x1, int y1, bool noise_by_caller = false);
+  // The noise estimate smooth() left to the caller (nothing otherwise);
+  // measurements may run meanwhile on other threads.
+  void estimate_noise();
   // Optional, between the two: starts blurring, on a second core, the box of
   // the non-zero labels of `filled` (the map whose boundaries will be
   // measured) grown by window_margin(line_width); smooth() with the same
@@ -172,6 +179,8 @@ class LineResponse {
   void blur_early_bands();
   std::future<void> smoothing_;
   std::shared_future<double> noise_;  // noise_sigma() once the early blur was used
+  // The window of raw_ whose noise estimate_noise() is to read (w 0: none).
+  int noise_x0_ = 0, noise_y0_ = 0, noise_w_ = 0, noise_h_ = 0;
   // w_ × h_, row-major.
   std::unique_ptr<float[]> grey_;
   std::vector<float> colour_kernel_;

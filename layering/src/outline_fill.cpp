@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ constexpr int kOrtho = 5;
 constexpr int kDiag = 7;
 constexpr int kUnit = 5;
 constexpr double kMaxReach = 7.0;  // pixels grown at most: outlines up to ~14 px wide
+// Growth limits (fifths of a pixel) up to which the filled box is kept per
+// distance reached (a box per distance and band).
+constexpr int kBoxedLimit = 1000;
 
 // The part of the image a growth runs on: columns of the box of all regions
 // grown by the growth limit, rows of one band of it, with a one-pixel frame so
@@ -570,7 +574,8 @@ namespace detail {
 
 OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
                                    int max_bands, int min_band_rows, bool wide_rows, Pool* pool,
-                                   LabelBox* filled_box, bool widest_rows) {
+                                   LabelBox* filled_box, bool widest_rows, std::vector<int>* ids,
+                                   const BeforeWrites& before_writes) {
   std::string why;
   if (!options.is_valid(&why)) throw Error("layering: " + why);
   if (labels.empty()) throw Error("layering: label map is empty; need at least one pixel");
@@ -581,8 +586,9 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   OutlineFill out;
   int bx0, by0, bx1, by1;
   if (filled_box != nullptr) *filled_box = LabelBox{};
+  if (ids != nullptr) ids->clear();
   if (!detail::label_box(labels, &bx0, &by0, &bx1, &by1)) {
-    out.labels = labels;
+    out.labels = labels;  // no non-zero label: no ids
     out.radius = options.max_distance > 0 ? options.max_distance : 0.0;
     out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
     return out;
@@ -603,14 +609,38 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   std::vector<Growth> growth(bands);
   std::vector<std::vector<int>> meets(bands);
   std::vector<std::size_t> one_pixel(bands, 0);  // crossings of lines one pixel wide
+  // Per band, the box of the pixels reached at each distance (up to a limit
+  // of kBoxedLimit): the filled map's box is known from them once the
+  // radius is, before the pixels are written.
+  const bool boxed = limit <= kBoxedLimit;
+  std::vector<std::vector<LabelBox>> by_distance(bands);
   // The copy of the map the pixels are written into is one more item, on
-  // whichever core is free (alone on small maps).
-  if (bands == 1) out.labels = labels;
+  // whichever core is free (alone on small maps), and so are the ids (in
+  // two halves of the label box's rows: outside it the map is 0).
+  constexpr int kIdParts = 2;
+  std::array<std::set<int>, kIdParts> seen;
+  auto read_ids = [&](int part) {
+    const std::size_t w = static_cast<std::size_t>(labels.width());
+    const int rows = by1 + 1 - by0;
+    const int y0 = by0 + static_cast<int>(static_cast<long long>(rows) * part / kIdParts);
+    const int y1 = by0 + static_cast<int>(static_cast<long long>(rows) * (part + 1) / kIdParts);
+    for (int y = y0; y < y1; ++y)
+      distinct_labels_into(labels.data(), y * w + bx0, y * w + bx1 + 1, seen[part]);
+  };
+  const int id_items = ids != nullptr ? kIdParts : 0;
+  if (bands == 1) {
+    out.labels = labels;
+    for (int part = 0; part < id_items; ++part) read_ids(part);
+  }
   detail::parallel_for(
-      pool, bands == 1 ? 1 : bands + 1,
+      pool, bands == 1 ? 1 : bands + 1 + id_items,
       [&](int b) {
         if (b == bands) {
           out.labels = labels;
+          return;
+        }
+        if (b > bands) {
+          read_ids(b - bands - 1);
           return;
         }
         const int own0 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * b / bands);
@@ -631,8 +661,17 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
         Growth::Given* given = nullptr;  // the next to write
         const int* map = labels.data();
         const std::size_t map_w = static_cast<std::size_t>(labels.width());
+        std::vector<LabelBox>& boxes = by_distance[b];
+        const LabelBox none{false, std::numeric_limits<int>::max(), std::numeric_limits<int>::max(),
+                            -1, -1};
+        if (boxed) boxes.assign(limit + 1, none);
         auto visit = [&](int i, int x, int y) __attribute__((always_inline)) {
           *given++ = {x, y, owner[i], dist[i]};
+          if (boxed) {
+            LabelBox& r = boxes[dist[i]];
+            r.x0 = std::min(r.x0, x), r.x1 = std::max(r.x1, x);
+            r.y0 = std::min(r.y0, y), r.y1 = std::max(r.y1, y);
+          }
           for (int j : {i + 1, i + stride}) {
             // The frame and region pixels hold 0, unreached pixels kUnreached.
             if (dist[j] == 0 || dist[j] == kUnreached || owner[j] == owner[i]) continue;
@@ -720,17 +759,31 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   const int radius = static_cast<int>(std::floor(out.radius * kUnit));
   // The filled map's non-zero labels: the regions' and the pixels given to them.
   LabelBox filled{true, bx0, by0, bx1, by1};
+  auto add = [&filled](int x0, int y0, int x1, int y1) {
+    filled.x0 = std::min(filled.x0, x0), filled.x1 = std::max(filled.x1, x1);
+    filled.y0 = std::min(filled.y0, y0), filled.y1 = std::max(filled.y1, y1);
+  };
+  if (boxed) {
+    for (const std::vector<LabelBox>& boxes : by_distance)
+      for (int d = 0; d <= std::min(radius, limit); ++d)
+        if (boxes[d].x1 >= 0) add(boxes[d].x0, boxes[d].y0, boxes[d].x1, boxes[d].y1);
+    if (before_writes) before_writes(out.line_width, filled);
+  }
   int* map = out.labels.data();
   const std::size_t map_w = static_cast<std::size_t>(out.labels.width());
   for (const Growth& g : growth) {
     for (const Growth::Given& p : g.given) {
       if (p.dist > radius) continue;
       map[static_cast<std::size_t>(p.y) * map_w + p.x] = p.owner;
-      filled.x0 = std::min(filled.x0, p.x), filled.x1 = std::max(filled.x1, p.x);
-      filled.y0 = std::min(filled.y0, p.y), filled.y1 = std::max(filled.y1, p.y);
+      if (!boxed) add(p.x, p.y, p.x, p.y);
     }
   }
   if (filled_box != nullptr) *filled_box = filled;
+  if (ids != nullptr) {
+    for (int part = 1; part < kIdParts; ++part)
+      seen[0].insert(seen[part].begin(), seen[part].end());
+    ids->assign(seen[0].begin(), seen[0].end());
+  }
   return out;
 }
 

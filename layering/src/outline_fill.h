@@ -3,6 +3,9 @@
 // the layering; fill_outlines (boundary_graph.h) is the public entry.
 #pragma once
 
+#include <functional>
+#include <vector>
+
 #include "hair25d/layering/boundary_graph.h"
 #include "parallel.h"
 #include "raster_scan.h"
@@ -24,16 +27,26 @@ inline constexpr int kMinFillBandRows = 96;
 // AVX-512F and BW); the result is the same (for tests). The bands run on
 // `pool`'s helpers where one is given. With `filled_box`, the box of the
 // filled map's non-zero labels is written there (label_box's answer on it,
-// without reading the map again).
+// without reading the map again). With `ids`, the distinct non-zero labels
+// of `labels`, sorted (distinct_labels' answer), are written there, read
+// while the map is copied. `before_writes`, where given, is called with the
+// line width and the filled map's box once they are known, before the
+// pixels are written into the map (at the growth limits of drawings: up to
+// 200 px), so that work which needs only those can start early.
+using BeforeWrites = std::function<void(double line_width, const LabelBox& filled_box)>;
 OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOptions& options,
                                    int max_bands, int min_band_rows, bool wide_rows = true,
                                    Pool* pool = nullptr, LabelBox* filled_box = nullptr,
-                                   bool widest_rows = true);
+                                   bool widest_rows = true, std::vector<int>* ids = nullptr,
+                                   const BeforeWrites& before_writes = {});
 
-// fill_outlines with its bands on `pool`'s helpers, and the filled map's box.
-inline OutlineFill fill_outlines(const LabelMap& labels, Pool* pool,
-                                 LabelBox* filled_box = nullptr) {
-  return fill_outlines_in_bands(labels, {}, kFillBands, kMinFillBandRows, true, pool, filled_box);
+// fill_outlines with its bands on `pool`'s helpers, the filled map's box,
+// the map's ids and a call before the writes.
+inline OutlineFill fill_outlines(const LabelMap& labels, Pool* pool, LabelBox* filled_box = nullptr,
+                                 std::vector<int>* ids = nullptr,
+                                 const BeforeWrites& before_writes = {}) {
+  return fill_outlines_in_bands(labels, {}, kFillBands, kMinFillBandRows, true, pool, filled_box,
+                                true, ids, before_writes);
 }
 
 }  // namespace hair25d::layering::detail

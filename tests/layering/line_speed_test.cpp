@@ -166,6 +166,39 @@ TEST(LineSpeed, EarlyBlurMeasuresLikeTheWindowBlur) {
   }
 }
 
+// The noise left to the caller (smooth(…, true), then estimate_noise(), as
+// the layering does beside its measurements) is the one the second core
+// estimates, and the one a window blurred without prepare() gives; the
+// measurements meanwhile are the same.
+TEST(LineSpeed, NoiseEstimatedByTheCallerEqualsTheSecondCores) {
+  const Image image = test_image(283, 219, 12, true);
+  LabelMap labels(image.width(), image.height(), 0);
+  for (int y = 14; y < 205; ++y)
+    for (int x = 10 + y / 7; x < 270; ++x) labels.at(x, y) = 1 + (x / 29 + y / 43) % 5;
+  const BoundaryGraph graph = build_boundary_graph(labels);
+  for (const double lw : {1.0, 2.5, 4.6, 9.0}) {
+    const int m = LineResponse::window_margin(lw);
+    const auto [x0, y0, x1, y1] = test::inner_boundary_box(graph, image.width(), image.height());
+    const LineResponse plain(image, lw, x0 - m, y0 - m, x1 + m, y1 + m);
+    LineResponse worker(image, &labels), caller(image, &labels);
+    worker.prepare(lw, labels);
+    worker.smooth(lw, x0 - m, y0 - m, x1 + m, y1 + m);
+    caller.prepare(lw, labels);
+    caller.smooth(lw, x0 - m, y0 - m, x1 + m, y1 + m, true);
+    for (const Boundary& b : graph.boundaries) {
+      if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+      EXPECT_EQ(worker.measure(b.points, 1.5 * lw, labels, b.left, b.right).contrast,
+                caller.measure(b.points, 1.5 * lw, labels, b.left, b.right).contrast);
+    }
+    caller.estimate_noise();
+    EXPECT_GT(worker.noise_sigma(), 0.0) << "line width " << lw;
+    EXPECT_EQ(caller.noise_sigma(), worker.noise_sigma()) << "line width " << lw;
+    EXPECT_EQ(caller.noise_sigma(), plain.noise_sigma()) << "line width " << lw;
+    caller.estimate_noise();  // once is enough: nothing left
+    EXPECT_EQ(caller.noise_sigma(), worker.noise_sigma()) << "line width " << lw;
+  }
+}
+
 // A second prepare() and smooth() on one LineResponse blur again (every
 // band) and measure like the first.
 TEST(LineSpeed, PreparedTwiceMeasuresLikeOnce) {
@@ -509,6 +542,59 @@ TEST(FillBands, MaskedRelaxationAndRowScanFillLikeOneByOne) {
       EXPECT_EQ(widest_box.y0, narrow_box.y0) << where;
       EXPECT_EQ(widest_box.x1, narrow_box.x1) << where;
       EXPECT_EQ(widest_box.y1, narrow_box.y1) << where;
+    }
+  }
+}
+
+// The ids the fill reads while it copies the map (its label box's rows, in
+// two parts) are the map's distinct non-zero labels, and the line width and
+// box it gives before writing the pixels are those of its result: strand
+// maps with labels up to the map's edges and below 0, one label, none.
+TEST(FillBands, IdsAndEarlyBoxAreTheFilledMapsOwn) {
+  std::mt19937 rng(37);
+  for (int trial = 0; trial < 24; ++trial) {
+    const int w = 4 + static_cast<int>(rng() % 190), h = 3 + static_cast<int>(rng() % 130);
+    LabelMap m = strand_map(w, h, 1700 + trial, 1 + trial % 5);
+    if (trial % 6 == 1)
+      for (int y = 0; y < h; ++y) m.at(w - 1, y) = y % 3 == 0 ? -1 : 40 + y % 2;
+    if (trial % 6 == 2)
+      for (int x = 0; x < w; ++x) m.at(x, 0) = m.at(x, h - 1) = 1000 + x % 7;
+    if (trial % 6 == 3) m = LabelMap(w, h, 0);
+    if (trial % 6 == 4) {
+      m = LabelMap(w, h, 0);
+      m.at(static_cast<int>(rng() % w), static_cast<int>(rng() % h)) = 5;
+    }
+    const double reach = trial % 3 == 0 ? 0.0 : 0.5 + (rng() % 90) / 10.0;
+    for (const int bands : {1, 4}) {
+      std::vector<int> ids = {-7};
+      detail::LabelBox box, early;
+      double early_width = -1;
+      int calls = 0;
+      const OutlineFill f =
+          detail::fill_outlines_in_bands(m, {.max_distance = reach}, bands, 1, true, nullptr, &box,
+                                         true, &ids, [&](double width, const detail::LabelBox& b) {
+                                           early_width = width, early = b;
+                                           ++calls;
+                                         });
+      const std::string where = "trial " + std::to_string(trial) + ", " + std::to_string(bands);
+      EXPECT_EQ(ids, m.labels()) << where;
+      if (!box.any) {
+        EXPECT_EQ(calls, 0) << where;
+        continue;
+      }
+      ASSERT_EQ(calls, 1) << where;
+      EXPECT_EQ(early_width, f.line_width) << where;
+      EXPECT_TRUE(early.any) << where;
+      EXPECT_EQ(early.x0, box.x0) << where;
+      EXPECT_EQ(early.y0, box.y0) << where;
+      EXPECT_EQ(early.x1, box.x1) << where;
+      EXPECT_EQ(early.y1, box.y1) << where;
+      int x0, y0, x1, y1;
+      ASSERT_TRUE(detail::label_box(f.labels, &x0, &y0, &x1, &y1)) << where;
+      EXPECT_EQ(early.x0, x0) << where;
+      EXPECT_EQ(early.y0, y0) << where;
+      EXPECT_EQ(early.x1, x1) << where;
+      EXPECT_EQ(early.y1, y1) << where;
     }
   }
 }
