@@ -115,8 +115,10 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   };
 
   Result out;
-  // Grey levels are made on a second core meanwhile (line_response.h).
-  detail::LineResponse lines(image, &regions);
+  // Grey levels are made on a second core (line_response.h) from when the
+  // fill knows its box (prepare below), near it: until then the fill has
+  // both cores.
+  detail::LineResponse lines(image, &regions, true);
   OutlineFill fill;
   detail::LabelBox filled_box;  // of out.labels' non-zero labels, with the fill
   // The early blur of the grey levels (below) needs only the line width and

@@ -239,27 +239,39 @@ int LineResponse::window_margin(double line_width) {
   return static_cast<int>(std::ceil(std::max(grey, colour)));
 }
 
-LineResponse::LineResponse(const Image& image, const LabelMap* regions) : image_(&image) {
+LineResponse::LineResponse(const Image& image, const LabelMap* regions, bool convert_later)
+    : image_(&image), regions_(regions) {
   wide_vectors_ = wide_vectors_available();
   widest_vectors_ = widest_vectors_available();
   const int w = image.width(), h = image.height();
   raw_ = std::make_unique_for_overwrite<float[]>(static_cast<std::size_t>(w) * h);
+  if (!convert_later) start_converting(nullptr);
+}
+
+void LineResponse::start_converting(const LabelBox* near) {
+  if (conversion_started_) return;
+  conversion_started_ = true;
+  const int w = image_->width(), h = image_->height();
   // The grey levels need nothing but the image: a second core converts them
   // while the caller fills outlines and traces boundaries. It writes only
   // raw_, its box and image_translucent_, which nothing reads before
   // prepare()'s blur or smooth() waits.
-  auto convert = [this, regions, w, h, wide = wide_vectors_, widest = widest_vectors_] {
+  auto convert = [this, regions = regions_, known = near != nullptr,
+                  given = near != nullptr ? *near : LabelBox{}, w, h, wide = wide_vectors_,
+                  widest = widest_vectors_] {
     // Grey levels are needed in the window of the filled boundaries and a
     // kernel's reach around it: near the regions, within the outline fill's
     // reach and the window's margin at the line widths of most drawings
     // (wider lines, or no regions, convert the rest when a window needs it).
+    // The rest converts to the same values when a window needs it.
     int x0 = 0, y0 = 0, x1 = w, y1 = h;
-    int bx0, by0, bx1, by1;
-    if (regions && regions->width() == w && regions->height() == h &&
-        detail::label_box(*regions, &bx0, &by0, &bx1, &by1)) {
+    int bx0 = given.x0, by0 = given.y0, bx1 = given.x1, by1 = given.y1;
+    if (known ? given.any
+              : regions && regions->width() == w && regions->height() == h &&
+                    detail::label_box(*regions, &bx0, &by0, &bx1, &by1)) {
       constexpr int kNear = 56;  // outline fill 7 + margin 28 + kernel 6 at 4.6 px lines, and more
-      x0 = std::max(0, bx0 - kNear), y0 = std::max(0, by0 - kNear);
-      x1 = std::min(w, bx1 + 1 + kNear), y1 = std::min(h, by1 + 1 + kNear);
+      x0 = std::clamp(bx0 - kNear, 0, w), y0 = std::clamp(by0 - kNear, 0, h);
+      x1 = std::clamp(bx1 + 1 + kNear, x0, w), y1 = std::clamp(by1 + 1 + kNear, y0, h);
     }
     cv::Mat raw(h, w, CV_32F, raw_.get());
     // The conversion reads the box's pixels' alphas too: the rest of the
@@ -310,6 +322,7 @@ void LineResponse::prepare(double line_width, const LabelMap& filled, const Labe
   // window's blur reads the pixels beyond it from the image.
   // No blur is under way (smoothing_ is not valid): a new one starts from
   // its first band.
+  start_converting(box);
   next_early_band_ = 0;
   early_ready_ = false;
   auto blur = [this, lw = std::max(1.0, line_width), &filled, known = box != nullptr,
@@ -361,6 +374,7 @@ void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1, boo
     if (early_ready_.load(std::memory_order_acquire)) blur_early_bands();
     smoothing_.get();
   }
+  start_converting(nullptr);
   if (converting_.valid()) converting_.get();
   const Image& image = *image_;
   line_width_ = std::max(1.0, line_width);

@@ -68,7 +68,11 @@ class LineResponse {
   // boundaries will be measured; unchanged until prepare() or smooth()) only
   // the part of the image near its non-zero labels is converted at first;
   // the rest is converted when a window reaches it.
-  explicit LineResponse(const Image& image, const LabelMap* regions = nullptr);
+  // With `convert_later`, the conversion starts only at prepare() (near the
+  // box it is given) or smooth(): then the second core is free for the
+  // caller's other work until then.
+  explicit LineResponse(const Image& image, const LabelMap* regions = nullptr,
+                        bool convert_later = false);
   // With `noise_by_caller` the noise is not estimated on the second core
   // after the early blur: the caller calls estimate_noise() (e.g. as one
   // item of its parallel measurements), where the second core's thread, a
@@ -162,6 +166,11 @@ class LineResponse {
   int raw_x0_ = 0, raw_y0_ = 0, raw_x1_ = 0, raw_y1_ = 0;
   // Converts the whole image unless raw_ holds [x0, x1) × [y0, y1) (clipped).
   void ensure_raw(int x0, int y0, int x1, int y1);
+  // Starts the conversion on the second core (once): first the part near
+  // `near` (a box of non-zero labels) where given, else near `regions_`'s.
+  void start_converting(const LabelBox* near);
+  const LabelMap* regions_ = nullptr;
+  bool conversion_started_ = false;
   std::future<void> converting_;
   // The early blur (prepare): its window and line width, and its result.
   struct EarlyWindow {

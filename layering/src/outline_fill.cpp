@@ -587,8 +587,16 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   int bx0, by0, bx1, by1;
   if (filled_box != nullptr) *filled_box = LabelBox{};
   if (ids != nullptr) ids->clear();
+  // The copy of the map the pixels are written into starts on the pool's
+  // helper at once (on a large map, where bands run on two cores), while
+  // this thread looks for the label box: the helper, busy from the start,
+  // then goes on to the bands. Small maps are copied here.
+  const bool copy_early = pool != nullptr && pool->helpers() > 0 &&
+                          labels.height() >= 2 * min_band_rows && max_bands > 1;
+  auto copy_map = [&out, &labels] { out.labels = labels; };
+  BackgroundTask copy_task(copy_early ? pool : nullptr, copy_map);
   if (!detail::label_box(labels, &bx0, &by0, &bx1, &by1)) {
-    out.labels = labels;  // no non-zero label: no ids
+    copy_task.finish();  // no non-zero label: no ids
     out.radius = options.max_distance > 0 ? options.max_distance : 0.0;
     out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
     return out;
@@ -614,9 +622,8 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   // radius is, before the pixels are written.
   const bool boxed = limit <= kBoxedLimit;
   std::vector<std::vector<LabelBox>> by_distance(bands);
-  // The copy of the map the pixels are written into is one more item, on
-  // whichever core is free (alone on small maps), and so are the ids (in
-  // two halves of the label box's rows: outside it the map is 0).
+  // The ids are two more items (halves of the label box's rows: outside it
+  // the map is 0), on whichever core is free (here on small maps).
   constexpr int kIdParts = 2;
   std::array<std::set<int>, kIdParts> seen;
   auto read_ids = [&](int part) {
@@ -629,18 +636,23 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
   };
   const int id_items = ids != nullptr ? kIdParts : 0;
   if (bands == 1) {
-    out.labels = labels;
+    copy_task.finish();
     for (int part = 0; part < id_items; ++part) read_ids(part);
   }
+  // Without the early copy, the copy is the first item (the longest items
+  // first, so that the cores end the loop about together), then the bands,
+  // then the ids.
+  const int copy_items = bands > 1 && !copy_early ? 1 : 0;
   detail::parallel_for(
-      pool, bands == 1 ? 1 : bands + 1 + id_items,
-      [&](int b) {
-        if (b == bands) {
-          out.labels = labels;
+      pool, bands == 1 ? 1 : copy_items + bands + id_items,
+      [&](int item) {
+        if (item < copy_items) {
+          copy_task.finish();
           return;
         }
-        if (b > bands) {
-          read_ids(b - bands - 1);
+        const int b = item - copy_items;
+        if (b >= bands) {
+          read_ids(b - bands);
           return;
         }
         const int own0 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * b / bands);
@@ -757,6 +769,7 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
                                         : (out.line_width > 0 ? out.line_width + 1.5 : 0.0);
   out.radius = std::min(out.radius, static_cast<double>(limit) / kUnit);
   const int radius = static_cast<int>(std::floor(out.radius * kUnit));
+  copy_task.finish();
   // The filled map's non-zero labels: the regions' and the pixels given to them.
   LabelBox filled{true, bx0, by0, bx1, by1};
   auto add = [&filled](int x0, int y0, int x1, int y1) {

@@ -199,6 +199,47 @@ TEST(LineSpeed, NoiseEstimatedByTheCallerEqualsTheSecondCores) {
   }
 }
 
+// The grey conversion started late (convert_later: at prepare(), near the
+// box it is given, which may be wider than the labels', or at smooth()
+// without prepare()) measures like the one started at construction.
+TEST(LineSpeed, ConversionStartedLateMeasuresLikeAtConstruction) {
+  const Image image = test_image(301, 263, 14, true);
+  LabelMap labels(image.width(), image.height(), 0);
+  for (int y = 70; y < 240; ++y)
+    for (int x = 90 + y / 8; x < 230; ++x) labels.at(x, y) = 1 + (x / 31 + y / 27) % 4;
+  const BoundaryGraph graph = build_boundary_graph(labels);
+  int x0, y0, x1, y1;
+  ASSERT_TRUE(detail::label_box(labels, &x0, &y0, &x1, &y1));
+  for (const double lw : {1.0, 3.0, 4.6}) {
+    const int m = LineResponse::window_margin(lw);
+    const auto [wx0, wy0, wx1, wy1] =
+        test::inner_boundary_box(graph, image.width(), image.height());
+    LineResponse first(image, &labels);
+    first.prepare(lw, labels);
+    first.smooth(lw, wx0 - m, wy0 - m, wx1 + m, wy1 + m);
+    LineResponse at_prepare(image, &labels, true);
+    const detail::LabelBox wider{true, std::max(0, x0 - 5), y0, x1, std::min(262, y1 + 9)};
+    at_prepare.prepare(lw, labels, &wider);
+    at_prepare.smooth(lw, wx0 - m, wy0 - m, wx1 + m, wy1 + m);
+    LineResponse at_smooth(image, &labels, true);
+    at_smooth.smooth(lw, wx0 - m, wy0 - m, wx1 + m, wy1 + m);
+    EXPECT_EQ(first.noise_sigma(), at_prepare.noise_sigma()) << "line width " << lw;
+    EXPECT_EQ(first.noise_sigma(), at_smooth.noise_sigma()) << "line width " << lw;
+    int compared = 0;
+    for (const Boundary& b : graph.boundaries) {
+      if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
+      const auto want = first.measure(b.points, 1.5 * lw, labels, b.left, b.right);
+      for (const LineResponse* got : {&at_prepare, &at_smooth}) {
+        const auto m2 = got->measure(b.points, 1.5 * lw, labels, b.left, b.right);
+        EXPECT_EQ(want.contrast, m2.contrast) << "line width " << lw;
+        EXPECT_EQ(want.colour_difference, m2.colour_difference) << "line width " << lw;
+      }
+      compared += want.contrast != 0.0;
+    }
+    EXPECT_GT(compared, 5) << "line width " << lw;
+  }
+}
+
 // A second prepare() and smooth() on one LineResponse blur again (every
 // band) and measure like the first.
 TEST(LineSpeed, PreparedTwiceMeasuresLikeOnce) {
