@@ -325,6 +325,17 @@ BoundaryGraph build_boundary_graph(const LabelMap& labels, bool wide_rows, bool 
       if (visited.test_and_set(grid.edge_index(x, y, d))) walked_horizontal += (d & 1) == 0;
       x += kDx[d];
       y += kDy[d];
+      // A walk down or up reads a new row of the map at each step (the
+      // next corner's pixels), from the cache's far levels once the map is
+      // larger than the near ones: the rows two and three steps ahead are
+      // asked for now (the walk mostly keeps its direction), so that the
+      // reads of the steps meanwhile overlap with their fetch.
+      if ((d & 1) != 0) {
+        const int ahead = d == 1 ? y + 1 : y - 3;
+        for (const int r : {ahead, ahead + 1})
+          if (r >= 0 && r < h && x > 0)
+            __builtin_prefetch(labels.data() + static_cast<std::size_t>(r) * w + (x - 1));
+      }
       const int j = junction_at(x, y);
       if (j >= 0) {
         chain.emplace_back(x, y);
