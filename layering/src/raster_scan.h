@@ -148,25 +148,44 @@ inline bool label_box(const LabelMap& labels, int* x0, int* y0, int* x1, int* y1
 }
 
 // The distinct non-zero labels of labels[from, to) into `seen`, in one pass.
-#if defined(HAIR25D_SCAN_AVX512)
-// From i on, the first block of sixteen labels (i + 16k) not all equal to
-// `last`, or the last block start before n: one compare a block (AVX-512F).
-__attribute__((target("avx512f"))) inline std::size_t skip_same_avx512(const int* data,
-                                                                       std::size_t i, std::size_t n,
-                                                                       int last) {
-  const __m512i same = _mm512_set1_epi32(last);
-  for (; i + 16 <= n; i += 16)
-    if (_mm512_cmpneq_epi32_mask(_mm512_loadu_si512(data + i), same) != 0) break;
-  return i;
-}
-#endif
-
 // Runs of one label are long: blocks of sixteen pixels equal to the last
 // label are skipped by one compare each (four with SSE2), and a label met
 // again (across a line, the same few regions alternate) is found in a small
 // cache before the set is asked.
 inline void distinct_labels_into(const int* data, std::size_t from, std::size_t to,
-                                 std::set<int>& seen, bool widest_blocks = true) {
+                                 std::set<int>& seen, bool widest_blocks = true);
+
+#if defined(HAIR25D_SCAN_AVX512)
+// distinct_labels_into with AVX-512F: every label that differs from the one
+// before it (and the first), found sixteen at a time by one compare of a
+// block with the block a pixel to its left, is looked up in the cache and
+// the set; the others are labels met just before. The same set.
+__attribute__((target("avx512f"))) inline void distinct_changes_avx512(const int* data,
+                                                                       std::size_t from,
+                                                                       std::size_t to,
+                                                                       std::set<int>& seen,
+                                                                       std::array<int, 64>& cache) {
+  auto look_up = [&](int v) {
+    int& slot = cache[static_cast<unsigned>(v) & 63];
+    if (v == 0 || slot == v) return;
+    slot = v;
+    seen.insert(v);
+  };
+  if (from >= to) return;
+  look_up(data[from]);
+  std::size_t i = from + 1;
+  for (; i + 16 <= to; i += 16) {
+    unsigned changes =
+        _mm512_cmpneq_epi32_mask(_mm512_loadu_si512(data + i), _mm512_loadu_si512(data + i - 1));
+    for (; changes != 0; changes &= changes - 1) look_up(data[i + __builtin_ctz(changes)]);
+  }
+  for (; i < to; ++i)
+    if (data[i] != data[i - 1]) look_up(data[i]);
+}
+#endif
+
+inline void distinct_labels_into(const int* data, std::size_t from, std::size_t to,
+                                 std::set<int>& seen, bool widest_blocks) {
   std::array<int, 64> cache;  // cache[v & 63] == v: v is in `seen` (or 0)
   cache.fill(0);
   int last = 0;
@@ -174,14 +193,15 @@ inline void distinct_labels_into(const int* data, std::size_t from, std::size_t 
   constexpr std::size_t kBlock = 16;
 #if defined(HAIR25D_SCAN_AVX512)
   const bool widest = widest_blocks && __builtin_cpu_supports("avx512f");
+  if (widest) {
+    distinct_changes_avx512(data, from, to, seen, cache);
+    return;
+  }
 #else
   constexpr bool widest = false;
   (void)widest_blocks;
 #endif
   for (std::size_t i = from; i < n;) {
-#if defined(HAIR25D_SCAN_AVX512)
-    if (widest) i = skip_same_avx512(data, i, n, last);
-#endif
 #if defined(__SSE2__)
     const __m128i same = _mm_set1_epi32(last);
     auto equal = [&](std::size_t at) {

@@ -868,6 +868,36 @@ TEST(DistinctLabels, EqualLabelMapLabels) {
   }
 }
 
+// The labels that change, found sixteen at a time (AVX-512: a block against
+// the block a pixel to its left) over parts of rows, as the fill reads its
+// label box, are those of the plain pass and of a set of every label:
+// ranges from 0 to 70 labels starting anywhere, runs, noise with negative
+// labels and labels sharing a cache slot, a label first met at a block's
+// last lane.
+TEST(DistinctLabels, ChangesFoundSixteenAtOnceEqualThePlainPass) {
+  std::mt19937 rng(41);
+  std::vector<int> data(4000);
+  for (int trial = 0; trial < 400; ++trial) {
+    const int kind = trial % 4;
+    for (std::size_t i = 0; i < data.size(); ++i) {
+      if (kind == 0) data[i] = static_cast<int>(rng() % 7);
+      if (kind == 1) data[i] = i % 23 < 11 ? 64 * static_cast<int>(rng() % 4) + 5 : 0;
+      if (kind == 2) data[i] = static_cast<int>(rng() % 300) - 100;
+      if (kind == 3)
+        data[i] = rng() % 40 == 0 ? static_cast<int>(rng() % 9) : (i > 0 ? data[i - 1] : 0);
+    }
+    const std::size_t from = rng() % 3000, to = from + rng() % 71;
+    data[from + 16 < to ? from + 16 : from] = 1 << 30;
+    std::set<int> widest, plain, every;
+    detail::distinct_labels_into(data.data(), from, to, widest, true);
+    detail::distinct_labels_into(data.data(), from, to, plain, false);
+    for (std::size_t i = from; i < to; ++i)
+      if (data[i] != 0) every.insert(data[i]);
+    EXPECT_EQ(widest, every) << "trial " << trial;
+    EXPECT_EQ(plain, every) << "trial " << trial;
+  }
+}
+
 // Sixteen, eight or four pixels at a time (AVX-512, AVX2, SSE2)
 // against the formula pixel by pixel, to the bit: odd widths (the tails),
 // windows, translucent rows.
