@@ -281,7 +281,8 @@ void reached_masks(const std::uint16_t* row, int n, std::uint32_t* masks, bool w
   }
 }
 
-// Whether start_row and seed_row may use AVX2, and AVX-512.
+// Whether start_row and seed_row may use AVX2, and AVX-512 (F, BW and VL:
+// the growth's masked relaxation too).
 bool wide_rows_available() {
 #if defined(HAIR25D_FILL_AVX2)
   return __builtin_cpu_supports("avx2");
@@ -292,7 +293,7 @@ bool wide_rows_available() {
 bool widest_rows_available() {
 #if defined(HAIR25D_FILL_AVX2)
   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("avx512f") &&
-         __builtin_cpu_supports("avx512bw");
+         __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl");
 #else
   return false;
 #endif

@@ -24,7 +24,9 @@ inline constexpr int kMinFillBandRows = 96;
 // whole map (max_bands = 1) in every pixel, the line width and the radius.
 // With `wide_rows` (where the processor has AVX2) the rows are prepared
 // sixteen pixels at a time (thirty-two with `widest_rows` where it has
-// AVX-512F and BW); the result is the same (for tests). The bands run on
+// AVX-512F, BW and VL, which also relaxes a bucket of fronts by masked
+// stores and finds the pixels reached by a scan of the rows); the result is
+// the same (for tests). The bands run on
 // `pool`'s helpers where one is given. With `filled_box`, the box of the
 // filled map's non-zero labels is written there (label_box's answer on it,
 // without reading the map again). With `ids`, the distinct non-zero labels
