@@ -640,20 +640,17 @@ OutlineFill fill_outlines_in_bands(const LabelMap& labels, const OutlineFillOpti
     copy_task.finish();
     for (int part = 0; part < id_items; ++part) read_ids(part);
   }
-  // Without the early copy, the copy is the first item (the longest items
-  // first, so that the cores end the loop about together), then the bands,
-  // then the ids.
+  // Without the early copy (no pool: the threads started for the call
+  // start late), the copy is the item after the bands, then the ids.
   const int copy_items = bands > 1 && !copy_early ? 1 : 0;
   detail::parallel_for(
-      pool, bands == 1 ? 1 : copy_items + bands + id_items,
-      [&](int item) {
-        if (item < copy_items) {
-          copy_task.finish();
-          return;
-        }
-        const int b = item - copy_items;
+      pool, bands == 1 ? 1 : bands + copy_items + id_items,
+      [&](int b) {
         if (b >= bands) {
-          read_ids(b - bands);
+          if (b < bands + copy_items)
+            copy_task.finish();
+          else
+            read_ids(b - bands - copy_items);
           return;
         }
         const int own0 = box.y0 + static_cast<int>(static_cast<long long>(box.h) * b / bands);
