@@ -51,7 +51,8 @@ using BankRay = std::tuple<int, Vec2, Vec2>;
 struct BankCrossings {
   int rays = 0;
   std::map<int, std::vector<BankRay>> hits;  // landed region -> rays that reached it
-  double depth = 0.0;  // mean distance the piece reaches behind the edge, inwards
+  double depth = 0.0;   // mean distance the piece reaches behind the edge, inwards
+  double window = 0.0;  // share of the rays whose inward run ends under an occluder of the piece
 };
 
 // Rays from every other pixel of `edge` along the outline's outward normal,

@@ -1,6 +1,8 @@
-// Strand joins of pieces whose own outline gives no direction (joins.cpp):
-// a nub — a strand's rounded root peeking out from under an occluder — is
-// joined by the other piece's tangents.
+// Joins of strand pieces whose own outline says too little: a nub — a
+// strand's rounded root peeking out from under an occluder — is joined by the
+// other piece's tangents (joins.cpp); a window — a piece of a wide region
+// seen between two strands lying over it — across the banks of either strand
+// (bank_crossings.cpp).
 #include <gtest/gtest.h>
 
 #include "hair25d/completion/completion.h"
@@ -16,6 +18,7 @@ using test::paint;
 
 constexpr Rgba kBack{120, 90, 70, 255};
 constexpr Rgba kStrand{200, 150, 110, 255};
+constexpr Rgba kBang{150, 110, 80, 255};
 
 // A vertical strand (x 100..140) over a wide lowest region 4, its rounded
 // root (half an ellipse `top` px tall, ending at y 140) peeking out above a
@@ -62,6 +65,63 @@ TEST(StrandJoins, NubIsJoinedByTheOtherPiecesTangents) {
   for (double top : {30.0, 33.0}) {
     EXPECT_EQ(joined_with_1(nub_over_band(top)), (std::vector<int>{1, 2})) << top;
     EXPECT_EQ(joined_with_1(nub_over_band(top, 40)), (std::vector<int>{1})) << top;
+  }
+}
+
+// Pieces of one wide region (the cap) in a strip cut by two bangs 2 (x
+// 100..140) and 3 (x 170..210) lying over it, over a lowest region 6: the
+// left piece 1 (x 15..100, y 24..`bottom` + 8), between the bangs the
+// window 4 (x 140..170, y 30..`bottom`), the right piece 5 (x 210..285);
+// without the second bang, 4 is the end of a strip lying under bang 2 only.
+Drawing cap_between_bangs(double bottom, bool second_bang) {
+  Drawing d = blank(300, 220);
+  paint(
+      d, [](double x, double y) { return x > 5 && x < 295 && y > 5 && y < 215; }, kBack, 6);
+  paint(
+      d, [bottom](double x, double y) { return x > 15 && x < 100 && y > 24 && y < bottom + 8; },
+      kStrand, 1);
+  paint(
+      d, [bottom](double x, double y) { return x > 140 && x < 170 && y > 30 && y < bottom; },
+      kStrand, 4);
+  paint(
+      d, [bottom](double x, double y) { return x > 210 && x < 285 && y > 24 && y < bottom + 8; },
+      kStrand, 5);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y > 10 && y < 200; }, kBang, 2);
+  d.relations = {below(1, 2), below(4, 2), below(6, 1), below(6, 2), below(6, 4), below(6, 5)};
+  if (second_bang) {
+    paint(
+        d, [](double x, double y) { return x > 170 && x < 210 && y > 10 && y < 200; }, kBang, 3);
+    d.relations.push_back(below(4, 3));
+    d.relations.push_back(below(5, 3));
+    d.relations.push_back(below(6, 3));
+  }
+  return d;
+}
+
+// Bank joins only: strand joins ruled out (tangents within 0.5°, cut widths
+// within 1 %: the pieces' cuts differ by 14 px).
+std::vector<int> bank_joined_with_4(const Drawing& d) {
+  Options o;
+  o.inpaint_background = false;
+  o.face_joins = false;
+  o.path_joins = false;
+  o.max_join_angle_deg = 0.5;
+  o.min_width_ratio = 0.99;
+  return test::regions_with(complete_strands(test::input_of(d, Vec2(150, 0)), o), 4);
+}
+
+TEST(StrandJoins, WindowBetweenTwoStrandsIsBankJoined) {
+  // The window reaches 30 px behind its cuts, less than the 1.5 crossed
+  // widths (~60 px) the banks ask of a piece, so it was joined to neither
+  // side; but every ray run inwards across it ends under bang 3: it is seen
+  // between two strands, not a strand end. The same piece without bang 3
+  // (its far side shows) stays apart.
+  for (double bottom : {90.0, 150.0}) {
+    EXPECT_EQ(bank_joined_with_4(cap_between_bangs(bottom, true)), (std::vector<int>{1, 4, 5}))
+        << bottom;
+    EXPECT_EQ(bank_joined_with_4(cap_between_bangs(bottom, false)), (std::vector<int>{4}))
+        << bottom;
   }
 }
 
