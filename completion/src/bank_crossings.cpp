@@ -108,6 +108,7 @@ BankCrossings cross_occluders(const Context& ctx, const Edge& edge) {
     out.depth /= out.rays;
     out.window /= out.rays;
   }
+
   return out;
 }
 
@@ -122,10 +123,12 @@ BankJoin bank_join(const BankCrossings& ca, const BankCrossings& cb, const Edge&
   double across = 0.0;
   for (const BankRay& r : from_a) across += (std::get<2>(r) - std::get<1>(r)).norm();
   across /= static_cast<double>(from_a.size());
-  auto deep = [&](const BankCrossings& c) {
-    return c.depth >= kMinDepthRatio * across || c.window >= kMinWindowShare;
+  const double depth = kMinDepthRatio * across;
+  auto window = [&](const BankCrossings& c) {
+    return c.depth < depth && c.window >= kMinWindowShare;
   };
-  if (!deep(ca) || !deep(cb)) return join;
+  if ((ca.depth < depth && !window(ca)) || (cb.depth < depth && !window(cb))) return join;
+  join.window = window(ca) || window(cb);
   join.share = std::min(static_cast<double>(from_a.size()) / ca.rays,
                         static_cast<double>(from_b.size()) / cb.rays);
   join.bands = ray_bands(from_a);

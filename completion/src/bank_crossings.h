@@ -64,6 +64,7 @@ BankCrossings cross_occluders(const Context& ctx, const Edge& edge);
 struct BankJoin {
   double share = 0.0;  // min over both edges of the share of rays landing next to the other
   std::vector<Polyline> bands;  // the hidden part: runs of consecutive rays from a
+  bool window = false;          // a piece passed as a window, not by its depth (bank_crossings.cpp)
 };
 
 // The bank join of edges a and b (their crossings ca, cb). Zero share when

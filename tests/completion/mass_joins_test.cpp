@@ -253,9 +253,12 @@ TEST(PathJoins, BackHairSliverIsJoinedUnderTheStrandLyingOnBoth) {
       completed += s->mask.contains(mx, my) && s->mask.at(mx, my) == 2;
     }
   EXPECT_GT(completed, 0.5 * inside);
-  // Without path joins no other rule joins them (the sliver is too shallow).
+  // Without path joins no other rule joins them under a limit no bank join
+  // passes (0.5 at least: since session 12 the sliver, seen between strands
+  // 3 and 4, is a window the banks take).
   const Input in = test::input_of(d, Vec2(170, 20));
   Options o;
+  o.max_join_cost = 0.4;
   o.max_join_angle_deg = 0.5;
   o.min_width_ratio = 0.99;
   o.inpaint_background = false;
