@@ -377,9 +377,14 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tone
       // A gradient over the back hair steps across the fan; one linear field
       // painting both pieces explains the step (not on screentone, where
       // the tone decides).
+      // On a cel drawing the pieces' paint decides first (RegionCels::judge):
+      // other flat colours are refused, a piece in the other's base or band
+      // (on its side of the band's level) passes whatever the windows step.
+      const RegionCels::Judgement cel = fields.cels().judge(a, b);
+      if (cel.other) continue;
       if (j_colour >
               kMaxMassColourStep + kMassSpreadShare * std::max(0.0, spread - kTextureFloor) &&
-          (tones.screentone() || fields.step(a, b) > kMaxMassFieldStep))
+          (tones.screentone() || fields.step(a, b) > kMaxMassFieldStep) && !cel.same)
         continue;
       // Both pieces wide behind the cut, compared with the strands crossed.
       auto wide = [](const std::vector<MassRay>& list) {

@@ -359,3 +359,159 @@ double RegionFields::step(int a, int b) {
 }
 
 }  // namespace hair25d::completion::detail
+
+namespace hair25d::completion::detail {
+namespace {
+
+// Cel paint: this share of a piece's inner pixels within kCelTolerance RGB
+// of its flat colours.
+constexpr double kCelShare = 0.9;
+constexpr double kCelTolerance = 6.0;
+// Fewest inner pixels a piece's paint is measured on.
+constexpr int kMinCelPixels = 12;
+// A cel drawing: this share of its regions with at least
+// kMinCelDrawingPixels inner pixels are cel paint.
+constexpr double kCelDrawingShare = 0.75;
+constexpr int kMinCelDrawingPixels = 200;
+// RegionCels::judge. Mass and path candidates of generated seeds 101-116
+// (a temporary print, labelled by the generator's strands): flat, one
+// strand 120 all at 0-1.0 RGB, two strands 122: 1 at 1.0, 2 at 1.4, the
+// rest 3 and up; two-tone, one strand 90: 86 at 0-1.0, 3 at 1.4-2.7; two
+// strands 115: 4 at 0.3-0.9 (all on the wrong side of the level), 15 at
+// 1-3. Two-tone 101-116 with (refuse, join) at (2, 1), (3, 1.5), (5, 1):
+// the same pairs as (3, 1).
+constexpr double kMaxSameCelStep = 1.0;
+constexpr double kMinOtherCelStep = 3.0;
+
+}  // namespace
+
+const RegionCels::Cel& RegionCels::cel(int region) {
+  auto it = cels_.find(region);
+  if (it != cels_.end()) return it->second;
+  Cel c;
+  const cv::Rect box = ctx_->regions.at(region).box;
+  const LabelMap& labels = *ctx_->original;
+  const auto own = [&](int x, int y) { return labels.contains(x, y) && labels.at(x, y) == region; };
+  std::vector<cv::Point> inside;
+  for (int m = 2; m >= 0 && static_cast<int>(inside.size()) < 4 * kMinCelPixels; --m) {
+    inside.clear();
+    for (int y = box.y; y < box.y + box.height; ++y)
+      for (int x = box.x; x < box.x + box.width; ++x)
+        if (own(x, y) && own(x - m, y) && own(x + m, y) && own(x, y - m) && own(x, y + m))
+          inside.emplace_back(x, y);
+  }
+  c.pixels = static_cast<int>(inside.size());
+  if (c.pixels >= kMinCelPixels) {
+    c.flats = flat_colours(*ctx_->image, inside, 3, 0.02);
+    std::vector<std::vector<double>> rows(c.flats.size());
+    int near = 0;
+    for (const cv::Point& p : inside) {
+      const Eigen::Vector3d v = rgb_at(*ctx_, p.x, p.y);
+      int best = -1;
+      double d = kCelTolerance;
+      for (std::size_t k = 0; k < c.flats.size(); ++k)
+        if ((v - c.flats[k]).norm() <= d) d = (v - c.flats[k]).norm(), best = static_cast<int>(k);
+      if (best < 0) continue;
+      ++near;
+      rows[best].push_back(p.y + 0.5);
+    }
+    c.share = static_cast<double>(near) / c.pixels;
+    for (auto& r : rows) {
+      std::sort(r.begin(), r.end());
+      c.top.push_back(r.empty() ? 0.0 : r[r.size() / 20]);
+      c.bottom.push_back(r.empty() ? 0.0 : r[r.size() - 1 - r.size() / 20]);
+    }
+  }
+  return cels_[region] = c;
+}
+
+namespace {
+
+// A piece painted in a base and its cel shadow: its two commonest flat
+// colours, the darker kMinShade-kMaxShade of the lighter on every channel,
+// the channels' ratios within kShadeSpread of each other (the generator's
+// band is 0.72 of the base).
+constexpr double kMinShade = 0.5, kMaxShade = 0.9, kShadeSpread = 0.06;
+constexpr double kLevelSlack = 0.1;
+
+bool shaded(const RegionCels::Cel& c) {
+  if (c.flats.size() < 2) return false;
+  Eigen::Vector3d light = c.flats[0], dark = c.flats[1];
+  if (light.sum() < dark.sum()) std::swap(light, dark);
+  if (light.minCoeff() < 16) return false;
+  const Eigen::Vector3d r = dark.cwiseQuotient(light);
+  if (r.minCoeff() < kMinShade || r.maxCoeff() > kMaxShade ||
+      r.maxCoeff() - r.minCoeff() > kShadeSpread)
+    return false;
+  // Below a level: the band's rows begin where the base's end (within
+  // kLevelSlack of the piece's height; a strand's band runs along it beside
+  // the base).
+  const std::size_t base = c.flats[0].sum() >= c.flats[1].sum() ? 0 : 1, band = 1 - base;
+  const double height = std::max(1.0, c.bottom[band] - c.top[base]);
+  return c.top[band] >= c.bottom[base] - kLevelSlack * height;
+}
+
+}  // namespace
+
+double RegionCels::step(int a, int b, bool* level) {
+  const Cel& ca = cel(a);
+  const Cel& cb = cel(b);
+  if (level) *level = false;
+  if (ca.share < kCelShare || cb.share < kCelShare || ca.flats.empty() || cb.flats.empty())
+    return std::numeric_limits<double>::infinity();
+  // The flats of `from` against the nearest of `to`: the worst distance,
+  // and whether each lies on its side of `to`'s level.
+  const auto one_way = [](const Cel& from, const Cel& to, bool* side) {
+    double worst = 0.0;
+    *side = shaded(to);
+    for (std::size_t i = 0; i < from.flats.size(); ++i) {
+      std::size_t best = 0;
+      for (std::size_t k = 1; k < to.flats.size(); ++k)
+        if ((from.flats[i] - to.flats[k]).norm() < (from.flats[i] - to.flats[best]).norm())
+          best = k;
+      worst = std::max(worst, (from.flats[i] - to.flats[best]).norm());
+      if (to.flats.size() < 2) continue;
+      // The other flat of `to` (its commonest other than `best`).
+      const std::size_t other = best == 0 ? 1 : 0;
+      const bool darker = to.flats[best].sum() < to.flats[other].sum();
+      // Band below the base: a piece in the band reaches below the band's
+      // top; in the base, above the base's bottom.
+      if (darker)
+        *side = *side && from.bottom[i] >= to.top[best];
+      else
+        *side = *side && from.top[i] <= to.bottom[best];
+    }
+    return worst;
+  };
+  bool side_ab = false, side_ba = false;
+  const double ab = one_way(ca, cb, &side_ab), ba = one_way(cb, ca, &side_ba);
+  if (level) *level = ab <= ba ? side_ab : side_ba;
+  return std::min(ab, ba);
+}
+
+RegionCels::Judgement RegionCels::judge(int a, int b) {
+  Judgement out;
+  if (!cel_drawing()) return out;
+  bool level = false;
+  out.step = step(a, b, &level);
+  if (!std::isfinite(out.step)) return out;
+  out.other = out.step > kMinOtherCelStep;
+  out.same = out.step <= kMaxSameCelStep && level;
+  return out;
+}
+
+bool RegionCels::cel_drawing() {
+  if (cel_drawing_ < 0) {
+    int big = 0, flat = 0;
+    for (const auto& [id, info] : ctx_->regions) {
+      const Cel& c = cel(id);
+      if (c.pixels < kMinCelDrawingPixels) continue;
+      ++big;
+      flat += c.share >= kCelShare;
+    }
+    cel_drawing_ = big > 0 && flat >= kCelDrawingShare * big;
+  }
+  return cel_drawing_ == 1;
+}
+
+}  // namespace hair25d::completion::detail

@@ -73,6 +73,51 @@ PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const Ed
 
 namespace hair25d::completion::detail {
 
+// Cel paint of whole pieces: up to three flat colours of a region's drawn
+// pixels (2 px inside it — 1 px or all for a sliver — so that the drawn
+// line's anti-aliased rim is no colour), each with the pixels' row range.
+// The back hair of a cel-shaded drawing is one mass painted in a base and a
+// shadow band below a (wavy) level; a strand lying on it may hide the level,
+// so one piece is seen in the base and another in the band, and a big piece
+// holding both tells which colour each of its hidden parts has.
+class RegionCels {
+ public:
+  explicit RegionCels(const Context& ctx) : ctx_(&ctx) {}
+  struct Cel {
+    std::vector<Eigen::Vector3d> flats;  // commonest first
+    std::vector<double> top, bottom;     // per flat: its pixels' rows (5th, 95th percentile)
+    double share = 0.0;                  // pixels within 6 RGB of a flat
+    int pixels = 0;
+  };
+  const Cel& cel(int region);
+  // The RGB distance of the paint of one piece to the other's nearest flat
+  // colour, the worse of its flats, the smaller way round; infinity when
+  // either piece is no flat paint. `level` (optional) says whether each
+  // matched flat lies on its side of the other piece's band level: a piece
+  // matching the band lies not wholly above the band's top, one matching
+  // the base not wholly below the base's bottom.
+  double step(int a, int b, bool* level = nullptr);
+  // On a cel drawing: `other` when the pieces are painted in other flat
+  // colours (step over 3 RGB: the generator varies each strand's colour by
+  // up to 8 %), `same` when one lies in the other's base or band on its
+  // side of the band's level (step at most 1 RGB, the other piece showing
+  // both under a level). Neither elsewhere.
+  struct Judgement {
+    bool other = false, same = false;
+    double step = 0.0;
+  };
+  Judgement judge(int a, int b);
+  // Whether the drawing is cel-painted: at least three quarters of its
+  // regions with kMinCelDrawingPixels inner pixels are flat paint (generated
+  // flat and two-tone drawings all; gradient ones only their small pieces).
+  bool cel_drawing();
+
+ private:
+  const Context* ctx_;
+  std::map<int, Cel> cels_;
+  int cel_drawing_ = -1;
+};
+
 // Whether two pieces are painted by one linear colour field (a gradient
 // running on under the occluders), judged over the pieces' whole
 // interiors: least-squares fits colour = c + S (x − m) per piece and over
@@ -83,7 +128,7 @@ namespace hair25d::completion::detail {
 // crossed strands is the step they measure).
 class RegionFields {
  public:
-  explicit RegionFields(const Context& ctx) : ctx_(&ctx) {}
+  explicit RegionFields(const Context& ctx) : ctx_(&ctx), cels_(ctx) {}
   // The RGB the joint fit misses by on each piece beyond that piece's own
   // fit (root of the excess mean square), summed over both pieces.
   // Infinity — nothing said — when either piece has too few pixels or is
@@ -93,6 +138,8 @@ class RegionFields {
   // strands they belong to, and two flat pieces of nearly one colour fit
   // one sloping between them.
   double step(int a, int b);
+  // The pieces' cel paint (measured once for the mass and path joins).
+  RegionCels& cels() { return cels_; }
 
   struct Sums {
     double n = 0;
@@ -104,6 +151,7 @@ class RegionFields {
  private:
   const Sums& sums(int region);
   const Context* ctx_;
+  RegionCels cels_;
   std::map<int, Sums> sums_;
 };
 
