@@ -102,5 +102,82 @@ TEST(PathPaint, GradientSliverIsJoinedUnderTheStrandLyingOnBoth) {
   EXPECT_EQ(test::regions_with(run(flat), 1), (std::vector<int>{1}));
 }
 
+// The back hair's cel shadow: 0.72 of its base (the generator's band).
+constexpr Rgba kBand{86, 58, 36, 255};
+
+// Back hair (1, left, y 60..170) in its base above row `level` and its
+// band below, and a piece of it (2, right, rows y0..y1) in `right`, behind
+// the fan of three strands 3 < 4 < 5 across x 112..205.
+Drawing cel_back_under_fan(int level, double y0, double y1, Rgba right) {
+  Drawing d = blank(340, 230);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 120 && y > 60 && y < 170; }, kBack, 1);
+  repaint(d, 1, [level](int, int y) { return y < level ? kBack : kBand; });
+  paint(
+      d, [&](double x, double y) { return x > 195 && x < 320 && y > y0 && y < y1; }, right, 2);
+  paint(
+      d, [](double x, double y) { return x > 112 && x < 145 && y > 10 && y < 220; }, kFan, 3);
+  paint(
+      d, [](double x, double y) { return x > 140 && x < 172 && y > 5 && y < 215; }, kFan, 4);
+  paint(
+      d, [](double x, double y) { return x > 168 && x < 205 && y > 15 && y < 225; }, kFan, 5);
+  d.relations = {below(1, 3), below(2, 5), below(3, 4), below(4, 5)};
+  return d;
+}
+
+TEST(MassPaint, BackPieceSeenInItsShadowBandIsJoinedToTheBackShowingBoth) {
+  // The band's level lies under the fan at row 120: the left piece shows
+  // base and band, the right one (rows 66..168) only the band. Most rays
+  // leave the left piece in its base, so the windows step ~42 RGB (the old
+  // rules kept them apart); the right piece's paint is the left one's band
+  // and reaches below the band's top.
+  const Result r = run(cel_back_under_fan(120, 66, 168, kBand));
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
+  for (int id : {3, 4, 5}) EXPECT_EQ(test::regions_with(r, id), (std::vector<int>{id}));
+  // The band's colour wholly above the band (rows 66..110, the band from
+  // 150): a strand's band seen beside the back's base, not the back.
+  EXPECT_EQ(test::regions_with(run(cel_back_under_fan(150, 66, 110, kBand)), 1),
+            (std::vector<int>{1}));
+  // A band 8 % lighter than the back's: another lock's paint.
+  EXPECT_EQ(test::regions_with(run(cel_back_under_fan(120, 66, 168, Rgba{93, 63, 39, 255})), 1),
+            (std::vector<int>{1}));
+}
+
+TEST(MassPaint, PiecesOfOtherFlatColoursAreNotJoinedThoughTheWindowsStepLittle) {
+  // The right piece 5 / 5 / 4 levels off the back's paint: its windows step
+  // ~8 RGB, within the mass joins' 10 (the old rules joined it), but on a
+  // cel drawing two flat paints that far apart are two locks (the
+  // generator varies each strand's colour by up to 8 %).
+  Drawing d = back_hair_under_fan();
+  repaint(d, 2, [](int, int) { return Rgba{125, 85, 54, 255}; });
+  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1}));
+  // The same paint is joined.
+  EXPECT_EQ(test::regions_with(run(back_hair_under_fan()), 1), (std::vector<int>{1, 2}));
+}
+
+TEST(PathJoins, BackHairLyingOnAHangingTailIsAPiece) {
+  // Back hair 1 and its sliver 2 under strand 3 lying on both; a tail 5
+  // hangs from under 1, and a side lock 6 lies on 1 and on the tail. 1 lies
+  // above a region, so it was front hair and no path piece (6 lying on the
+  // back keeps tailed_hair from taking 5 as a tail): the tail, covered by
+  // two regions, hangs from under it.
+  Drawing d = blank(300, 270);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 80 && y > 150 && y < 255; }, kBack, 5);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 150 && y > 40 && y < 170; }, kBack, 1);
+  paint(
+      d, [](double x, double y) { return x > 150 && x < 200 && y > 40 && y < 170; }, kBack, 2);
+  paint(
+      d, [](double x, double y) { return x > 135 && x < 177 && y > 10 && y < 200; }, kFan, 3);
+  paint(
+      d, [](double x, double y) { return x > 70 && x < 105 && y > 20 && y < 250; }, kFan, 6);
+  d.relations = {below(1, 3), below(2, 3), below(5, 1), below(5, 6), below(1, 6)};
+  const Result r = run(d);
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(r, 5), (std::vector<int>{5}));
+  EXPECT_EQ(test::regions_with(r, 6), (std::vector<int>{6}));
+}
+
 }  // namespace
 }  // namespace hair25d::completion
