@@ -452,6 +452,19 @@ void expect_same_fill(const LabelMap& m, const OutlineFillOptions& options, int 
   EXPECT_EQ(differ, 0) << what;
 }
 
+// Two fills of one map agree: line width, radius, labels and filled box.
+void expect_equal_fills(const OutlineFill& a, const detail::LabelBox& a_box, const OutlineFill& b,
+                        const detail::LabelBox& b_box, const std::string& where) {
+  EXPECT_EQ(a.line_width, b.line_width) << where;
+  EXPECT_EQ(a.radius, b.radius) << where;
+  EXPECT_TRUE(a.labels == b.labels) << where;
+  EXPECT_EQ(a_box.any, b_box.any) << where;
+  EXPECT_EQ(a_box.x0, b_box.x0) << where;
+  EXPECT_EQ(a_box.y0, b_box.y0) << where;
+  EXPECT_EQ(a_box.x1, b_box.x1) << where;
+  EXPECT_EQ(a_box.y1, b_box.y1) << where;
+}
+
 // Hand-built: lines of odd and even width (ties in the middle), across and
 // along the bands' edges, between regions and against the background.
 TEST(FillBands, HandBuiltLinesFillAsOneGrowth) {
@@ -538,12 +551,7 @@ TEST(FillBands, NeighboursComparedAtOnceGrowLikeOneByOne) {
                                                                 1, false, nullptr, &narrow_box);
       const std::string where = "trial " + std::to_string(trial) + ", reach " +
                                 std::to_string(reach) + ", " + std::to_string(bands) + " bands";
-      EXPECT_EQ(wide.line_width, narrow.line_width) << where;
-      EXPECT_EQ(wide.radius, narrow.radius) << where;
-      EXPECT_TRUE(wide.labels == narrow.labels) << where;
-      EXPECT_EQ(wide_box.any, narrow_box.any) << where;
-      EXPECT_EQ(wide_box.x0, narrow_box.x0) << where;
-      EXPECT_EQ(wide_box.y1, narrow_box.y1) << where;
+      expect_equal_fills(wide, wide_box, narrow, narrow_box, where);
     }
   }
 }
@@ -575,14 +583,7 @@ TEST(FillBands, MaskedRelaxationAndRowScanFillLikeOneByOne) {
           m, {.max_distance = reach}, bands, 1, false, nullptr, &narrow_box, false);
       const std::string where = "trial " + std::to_string(trial) + ", reach " +
                                 std::to_string(reach) + ", " + std::to_string(bands) + " bands";
-      EXPECT_EQ(widest.line_width, narrow.line_width) << where;
-      EXPECT_EQ(widest.radius, narrow.radius) << where;
-      EXPECT_TRUE(widest.labels == narrow.labels) << where;
-      EXPECT_EQ(widest_box.any, narrow_box.any) << where;
-      EXPECT_EQ(widest_box.x0, narrow_box.x0) << where;
-      EXPECT_EQ(widest_box.y0, narrow_box.y0) << where;
-      EXPECT_EQ(widest_box.x1, narrow_box.x1) << where;
-      EXPECT_EQ(widest_box.y1, narrow_box.y1) << where;
+      expect_equal_fills(widest, widest_box, narrow, narrow_box, where);
     }
   }
 }
