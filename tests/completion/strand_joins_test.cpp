@@ -2,7 +2,8 @@
 // strand's rounded root peeking out from under an occluder — is joined by the
 // other piece's tangents (joins.cpp); a window — a piece of a wide region
 // seen between two strands lying over it — across the banks of either strand
-// (bank_crossings.cpp).
+// (bank_crossings.cpp). And one the outline says too much for: two pieces of
+// flat paint in different colours are two strands (joins.cpp).
 #include <gtest/gtest.h>
 
 #include "hair25d/completion/completion.h"
@@ -123,6 +124,32 @@ TEST(StrandJoins, WindowBetweenTwoStrandsIsBankJoined) {
     EXPECT_EQ(bank_joined_with_4(cap_between_bangs(bottom, false)), (std::vector<int>{4}))
         << bottom;
   }
+}
+
+// A straight vertical strand (x 100..140) over a wide lowest region 4, cut
+// by a band 3 (y 118..162) lying over it: the upper piece 1 (y 40..140) in
+// kStrand, the lower piece 2 (y 140..230) in `lower`, both flat paint.
+Drawing strand_under_band(Rgba lower) {
+  Drawing d = blank(250, 300);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kBack, 4);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y > 40 && y < 140; }, kStrand, 1);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y >= 140 && y < 230; }, lower, 2);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 210 && y > 118 && y < 162; }, kBang, 3);
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
+  return d;
+}
+
+TEST(StrandJoins, PiecesOfTwoFlatPaintsAreNotJoined) {
+  // The pieces line up exactly (tangents 0° off, the same width, a 44 px
+  // gap under the band), so their outline makes a cheap join; but flat
+  // paint 8.8 RGB apart is another strand's. Paint 1 RGB off is one strand.
+  EXPECT_EQ(joined_with_1(strand_under_band(Rgba{206, 155, 114, 255})), (std::vector<int>{1}));
+  EXPECT_EQ(joined_with_1(strand_under_band(Rgba{201, 150, 110, 255})), (std::vector<int>{1, 2}));
+  EXPECT_EQ(joined_with_1(strand_under_band(kStrand)), (std::vector<int>{1, 2}));
 }
 
 }  // namespace
