@@ -300,8 +300,7 @@ TailedHair tailed_hair(const Context& ctx, const std::set<int>& front) {
 
 std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tones,
                                            RegionFields& fields) {
-  std::set<int> front;
-  for (const auto& [id, ups] : ctx.above) front.insert(ups.begin(), ups.end());
+  const std::set<int> front = ctx.front();
   const TailedHair tailed = tailed_hair(ctx, front);
   const std::set<int>& over_tails = tailed.over_tails;
   cv::Rect hair;

@@ -57,6 +57,12 @@ struct Context {
   }
   // region -> regions above it through any chain of relations (drawn above it).
   std::map<int, std::set<int>> above;
+  // Front hair: the regions drawn above some region (the rest is back hair).
+  std::set<int> front() const {
+    std::set<int> out;
+    for (const auto& [id, ups] : above) out.insert(ups.begin(), ups.end());
+    return out;
+  }
   bool is_above(int upper, int region) const {
     auto it = above.find(region);
     return it != above.end() && it->second.count(upper) > 0;

@@ -203,8 +203,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   // Back hair: regions above no region. Only the face hides back hair; a
   // strand lying on the face is drawn over it, so the face between two of
   // its pieces means they are not one strand.
-  std::set<int> front;
-  for (const auto& [id, ups] : ctx.above) front.insert(ups.begin(), ups.end());
+  const std::set<int> front = ctx.front();
   const cv::Mat no_face;
   const double max_angle = o.max_join_angle_deg * M_PI / 180.0;
   std::vector<BankCrossings> crossings(edges.size());

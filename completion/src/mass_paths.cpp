@@ -344,8 +344,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
   cv::Mat near_face;
   if (!face.empty())
     cv::dilate(face, near_face, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(7, 7)));
-  std::set<int> front;
-  for (const auto& [id, ups] : ctx.above) front.insert(ups.begin(), ups.end());
+  const std::set<int> front = ctx.front();
   const TailedHair tailed = tailed_hair(ctx, front);
   // Back hair lying on hair that hangs from under it (tails, strands hanging
   // behind it: lowest regions covered by at most kMaxHangingCover regions)
