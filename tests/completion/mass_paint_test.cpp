@@ -43,15 +43,20 @@ Rgba gradient(int x, int y, int offset) {
 Drawing back_hair_under_fan() { return test::back_hair_under_fan(kBack, kBack, kFan); }
 
 // Back hair (1) and a sliver of it (2, 4 px wide between its outlines)
-// under strand 3 lying on both, strand 4 on the sliver only.
-Drawing back_hair_and_sliver() {
-  Drawing d = blank(300, 210);
+// under strand 3 lying on both, painted over `d`.
+void paint_back_sliver_and_strand(Drawing& d) {
   paint(
       d, [](double x, double y) { return x > 20 && x < 150 && y > 40 && y < 170; }, kBack, 1);
   paint(
       d, [](double x, double y) { return x > 150 && x < 200 && y > 40 && y < 170; }, kBack, 2);
   paint(
       d, [](double x, double y) { return x > 135 && x < 177 && y > 10 && y < 200; }, kFan, 3);
+}
+
+// The same with strand 4 lying on the sliver only.
+Drawing back_hair_and_sliver() {
+  Drawing d = blank(300, 210);
+  paint_back_sliver_and_strand(d);
   paint(
       d, [](double x, double y) { return x > 185 && x < 230 && y > 15 && y < 195; }, kFan, 4);
   d.relations = {below(1, 3), below(2, 3), below(2, 4)};
@@ -164,12 +169,7 @@ TEST(PathJoins, BackHairLyingOnAHangingTailIsAPiece) {
   Drawing d = blank(300, 270);
   paint(
       d, [](double x, double y) { return x > 40 && x < 80 && y > 150 && y < 255; }, kBack, 5);
-  paint(
-      d, [](double x, double y) { return x > 20 && x < 150 && y > 40 && y < 170; }, kBack, 1);
-  paint(
-      d, [](double x, double y) { return x > 150 && x < 200 && y > 40 && y < 170; }, kBack, 2);
-  paint(
-      d, [](double x, double y) { return x > 135 && x < 177 && y > 10 && y < 200; }, kFan, 3);
+  paint_back_sliver_and_strand(d);
   paint(
       d, [](double x, double y) { return x > 70 && x < 105 && y > 20 && y < 250; }, kFan, 6);
   d.relations = {below(1, 3), below(2, 3), below(5, 1), below(5, 6), below(1, 6)};
