@@ -294,7 +294,7 @@ cv::Mat face_lines(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& hair,
 
 }  // namespace
 
-Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpainted) {
+BackgroundHole background_hole(const Context& ctx, const Face& face) {
   const Options& o = *ctx.options;
   const Image& image = *ctx.image;
   const int w = image.width(), h = image.height();
@@ -579,6 +579,15 @@ Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpai
   }
   if (!features.empty()) holes &= ~features;
   take_islands(holes);
+  return {std::move(holes), head};
+}
+
+Image fill_background(const Context& ctx, const BackgroundHole& taken, InpaintResult* inpainted) {
+  const Options& o = *ctx.options;
+  const Image& image = *ctx.image;
+  const int w = image.width(), h = image.height();
+  const Head& head = taken.head;
+  cv::Mat holes = taken.holes.clone();
   // The head: under the hair it is skin, filled from the face first; the
   // rest of the hole is filled around it, the head's outline drawn where it
   // meets the rest, so that no other colour runs into the head and the skin

@@ -127,11 +127,15 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // fills the head behind the hair from it.
   const detail::Face drawn_face =
       options.face_joins || options.inpaint_background ? detail::find_face(ctx) : detail::Face{};
+  // The hole is kept: the strands carry what it takes that they do not show.
+  detail::BackgroundHole hole;
+  auto fill_background = [&] {
+    hole = detail::background_hole(ctx, drawn_face);
+    return detail::fill_background(ctx, hole, &result.background_inpaint);
+  };
   std::future<Image> background;
   if (options.inpaint_background && options.threads > 1)
-    background = std::async(std::launch::async, [&] {
-      return detail::fill_background(ctx, drawn_face, &result.background_inpaint);
-    });
+    background = std::async(std::launch::async, fill_background);
 
   // Single-occluder edges ("atoms"), and merged runs of them as further
   // candidates for case 1 (a strand may pass under two neighbouring occluders).
@@ -304,9 +308,11 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   if (background.valid())
     result.background = background.get();
   else if (options.inpaint_background)
-    result.background = detail::fill_background(ctx, drawn_face, &result.background_inpaint);
+    result.background = fill_background();
   else
     result.background = image;
+  if (options.inpaint_background)
+    detail::carry_rims(ctx, hole.holes, pieces.groups, result.background, &result.strands);
   result.edges = std::move(reports);
   result.regions = std::move(ctx.labels);
   std::ostringstream s;

@@ -96,15 +96,8 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
   }
   if (root_count > 0) s.root_hint = root_sum / root_count;
 
-  // The outline: outer boundary of the largest connected piece.
-  cv::Mat binary = mask > 0;
-  const auto contours = outer_contours(binary);
-  if (!contours.empty() && contours.front().size() >= 3) {
-    std::vector<cv::Point> simple;
-    cv::approxPolyDP(contours.front(), simple, 0.7, true);
-    if (simple.size() < 3) simple = contours.front();
-    for (const cv::Point& p : simple) s.outline.emplace_back(p.x + box.x + 0.5, p.y + box.y + 0.5);
-  }
+  s.outline = strand_outline(mask, s.origin);
+  s.body = s.outline;
 
   // Texture: the drawing, with the hidden part and the occluders' outlines
   // along it synthesised from the strand's own visible pixels.
@@ -159,10 +152,17 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
   }
   // The occluders' lines inpainted along the visible part keep the drawing's
   // alpha too (their anti-aliased rim over a transparent sheet).
+  // Behind the face the completed part is the strand's shape but shows
+  // nothing: the face is drawn in the background, below every strand, and
+  // the strand's texture over it hid the face at rest.
   for (int y = 0; y < box.height; ++y)
-    for (int x = 0; x < box.width; ++x)
-      if (mask.at<std::uint8_t>(y, x) == 1)
-        s.texture.at(x, y).a = ctx.image->at(x + box.x, y + box.y).a;
+    for (int x = 0; x < box.width; ++x) {
+      const int m = mask.at<std::uint8_t>(y, x), gx = x + box.x, gy = y + box.y;
+      if (m == 1)
+        s.texture.at(x, y).a = ctx.image->at(gx, gy).a;
+      else if (m == 2 && on_face(gx, gy) && !occluded_by_any(ctx.labels.at(gx, gy)))
+        s.texture.at(x, y).a = 0;
+    }
   s.mask = LabelMap(box.width, box.height);
   for (int y = 0; y < box.height; ++y)
     for (int x = 0; x < box.width; ++x) s.mask.at(x, y) = mask.at<std::uint8_t>(y, x);
@@ -170,6 +170,19 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
 }
 
 }  // namespace
+
+Polyline strand_outline(const cv::Mat& mask, const Eigen::Vector2i& origin) {
+  Polyline outline;
+  const auto contours = outer_contours(mask > 0);
+  if (!contours.empty() && contours.front().size() >= 3) {
+    std::vector<cv::Point> simple;
+    cv::approxPolyDP(contours.front(), simple, 0.7, true);
+    if (simple.size() < 3) simple = contours.front();
+    for (const cv::Point& p : simple)
+      outline.emplace_back(p.x + origin.x() + 0.5, p.y + origin.y() + 0.5);
+  }
+  return outline;
+}
 
 std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPieces& pieces,
                                               std::vector<EdgeReport>* reports,

@@ -6,6 +6,7 @@
 
 #include "context.h"
 #include "face_joins.h"
+#include "head_fill.h"
 
 namespace hair25d::completion::detail {
 
@@ -23,11 +24,38 @@ struct StrandPieces {
   std::vector<std::vector<int>> groups;  // region ids of each strand
 };
 
+// The completed shape of `mask` (non-zero inside, crop at `origin`): the
+// outer boundary of its largest connected piece, simplified.
+Polyline strand_outline(const cv::Mat& mask, const Eigen::Vector2i& origin);
+
 std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPieces& pieces,
                                               std::vector<EdgeReport>* reports,
                                               InpaintResult* inpainted);
 
+// What the background takes for hair: the regions, their drawn outline and
+// rim, and what the hair encloses; and the head behind it.
+struct BackgroundHole {
+  cv::Mat holes;  // CV_8U, image size: non-zero where the background is filled
+  Head head;      // empty mask when there is no face
+};
+
+// The model at rest (the background and the textures back to front) gives
+// the drawing back: each strand of `groups` (`strands`, in the same order)
+// also carries, drawn as they are, the pixels where it would not —
+// those `holes` takes that no region holds (the outline's anti-aliased rim,
+// lines converging at tips, the bangs' light points, specks the hair
+// encloses) and `background` fills with another colour, going to the
+// nearest region's strand; and the outline pixels a strand's texture paints
+// over because an occluder's line runs there, going to that occluder.
+// Within a line's reach of an occluder of the nearest strand a pixel is the
+// occluder's: the line between two strands is the front one's outline.
+// Strand boxes grow to hold them; outlines are traced again.
+void carry_rims(const Context& ctx, const cv::Mat& holes,
+                const std::vector<std::vector<int>>& groups, const Image& background,
+                std::vector<CompletedStrand>* strands);
+
 // `face`: find_face's (may be empty: no head is filled then).
-Image fill_background(const Context& ctx, const Face& face, InpaintResult* inpainted);
+BackgroundHole background_hole(const Context& ctx, const Face& face);
+Image fill_background(const Context& ctx, const BackgroundHole& hole, InpaintResult* inpainted);
 
 }  // namespace hair25d::completion::detail

@@ -119,6 +119,7 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
     s.texture_origin = c.origin;
     StrandReport info;
     info.mask = std::move(c.mask);
+    info.body = std::move(c.body);
     root_hints.push_back(c.root_hint ? c.root_hint : m.head_center);
     m.strands.push_back(std::move(s));
     run.strands.push_back(std::move(info));
@@ -131,7 +132,10 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
   const auto make_skeleton = [&](std::size_t i) {
     Strand& s = m.strands[i];
     StrandReport& info = run.strands[i];
-    if (s.outline.size() >= 3) {
+    // The skeleton follows the body: the rim's spurs along lines and at
+    // junctions would give it branches that leave the strand.
+    const Polyline& shape = info.body.size() >= 3 ? info.body : s.outline;
+    if (shape.size() >= 3) {
       // A corner under a strand drawn above is hidden: not a tip (§6). It is
       // under it when its own pixel is that strand's (a visible region or a
       // completed hidden part), or most of the disc round it is: a strand
@@ -151,10 +155,10 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
         }
         return false;
       };
-      std::vector<bool> covered(s.outline.size(), false);
+      std::vector<bool> covered(shape.size(), false);
       const int reach = options.cover_reach;
-      for (std::size_t v = 0; v < s.outline.size(); ++v) {
-        const int cx = static_cast<int>(s.outline[v].x()), cy = static_cast<int>(s.outline[v].y());
+      for (std::size_t v = 0; v < shape.size(); ++v) {
+        const int cx = static_cast<int>(shape[v].x()), cy = static_cast<int>(shape[v].y());
         if (in_front(cx, cy)) {
           covered[v] = true;
           continue;
@@ -170,7 +174,7 @@ ModelRun build_model(const Image& image, const LabelMap& regions,
       }
       try {
         skeleton::Input sk;
-        sk.outline = s.outline;
+        sk.outline = shape;
         sk.covered = std::move(covered);
         sk.root_hint = root_hints[i];
         const skeleton::Result r = skeleton::build_skeleton(sk, options.skeleton);

@@ -90,6 +90,10 @@ struct CompletedStrand {
   LabelMap mask;
   Eigen::Vector2i origin{0, 0};   // image pixel of mask(0, 0)
   Polyline outline;               // the completed shape, one closed polygon, pixels
+  // The same without the drawn rim the strand carries beyond its regions
+  // (their outline's anti-aliased edge, converging lines at a point): the
+  // shape its skeleton follows, free of the rim's one-pixel spurs.
+  Polyline body;
   Image texture;                  // RGBA crop at `origin`, transparent outside the mask
   std::optional<Vec2> root_hint;  // centre of a completed root, if there is one
   int visible_pixels = 0, completed_pixels = 0;

@@ -39,6 +39,7 @@ struct ModelOptions {
 // Per-strand facts the model file does not keep (for the contact sheet and tests).
 struct StrandReport {
   LabelMap mask;  // crop at the strand's texture origin: 1 visible, 2 completed
+  Polyline body;  // the outline without the drawn rim: the skeleton's shape
   skeleton::SkeletonStatus skeleton = skeleton::SkeletonStatus::kTips;
   skeleton::MeshStatus mesh = skeleton::MeshStatus::kRefined;
   std::string problem;  // why the skeleton or mesh is missing, empty if none
