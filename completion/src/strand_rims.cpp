@@ -2,6 +2,7 @@
 // no strand shows at rest, carried by the strand that is drawn there.
 #include <algorithm>
 #include <cstdlib>
+#include <future>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
@@ -89,20 +90,36 @@ void carry_rims(const Context& ctx, const cv::Mat& holes,
   };
   const auto occluders = occluder_tables(ctx, groups, labels_end);
 
-  // The nearest labelled pixel of every pixel (one pass over the image).
-  const cv::Mat unlabelled = view(labels) == 0;
-  cv::Mat distance, nearest;
-  cv::distanceTransform(unlabelled, distance, nearest, cv::DIST_L2, cv::DIST_MASK_5,
-                        cv::DIST_LABEL_PIXEL);
-  std::vector<int> label_of_seed;
+  // The region reached first from each pixel the background takes, going
+  // through such pixels (4-connected, breadth first): whatever the hole
+  // holds touches the hair or is enclosed by it.
+  LabelMap reached(w, h, 0);
+  std::vector<cv::Point> queue;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const int l = labels.at(x, y);
-      if (l == 0) continue;
-      const auto k = static_cast<std::size_t>(nearest.at<int>(y, x));
-      if (k >= label_of_seed.size()) label_of_seed.resize(k + 1, 0);
-      label_of_seed[k] = l;
+      if (labels.at(x, y) != 0 || !holes.at<std::uint8_t>(y, x)) continue;
+      for (const cv::Point d :
+           {cv::Point(-1, 0), cv::Point(1, 0), cv::Point(0, -1), cv::Point(0, 1)}) {
+        const int l = ctx.label(x + d.x, y + d.y);
+        if (l != 0) {
+          reached.at(x, y) = l;
+          queue.emplace_back(x, y);
+          break;
+        }
+      }
     }
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const cv::Point p = queue[k];
+    for (const cv::Point d :
+         {cv::Point(-1, 0), cv::Point(1, 0), cv::Point(0, -1), cv::Point(0, 1)}) {
+      const int x = p.x + d.x, y = p.y + d.y;
+      if (x < 0 || y < 0 || x >= w || y >= h || labels.at(x, y) != 0 || reached.at(x, y) != 0 ||
+          !holes.at<std::uint8_t>(y, x))
+        continue;
+      reached.at(x, y) = reached.at(p.x, p.y);
+      queue.emplace_back(x, y);
+    }
+  }
 
   // The strand of the nearest pixel within `reach` (chessboard) of a label
   // drawn above strand g, or -1 (as build_strand's occluders' lines).
@@ -129,29 +146,42 @@ void carry_rims(const Context& ctx, const cv::Mat& holes,
     return s.texture.at(tx, ty);
   };
 
-  std::vector<std::vector<cv::Point>> rims(groups.size());
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int l = labels.at(x, y);
-      const Rgba& drawn = image.at(x, y);
-      if (l == 0) {
-        // Taken by the background, held by no region, filled otherwise.
-        if (!holes.at<std::uint8_t>(y, x) || !differs(background.at(x, y), drawn)) continue;
-        const auto k = static_cast<std::size_t>(nearest.at<int>(y, x));
-        const int g = group(k < label_of_seed.size() ? label_of_seed[k] : 0);
+  // The rows in two halves, one per worker, each with its own lists.
+  auto rows = [&](int y0, int y1) {
+    std::vector<std::vector<cv::Point>> rims(groups.size());
+    for (int y = y0; y < y1; ++y)
+      for (int x = 0; x < w; ++x) {
+        const int l = labels.at(x, y);
+        const Rgba& drawn = image.at(x, y);
+        int g = -1;
+        if (l == 0) {
+          // Taken by the background, held by no region, filled otherwise:
+          // the strand of the region reached first.
+          if (!holes.at<std::uint8_t>(y, x) || !differs(background.at(x, y), drawn)) continue;
+          g = group(reached.at(x, y));
+        } else if (ctx.original->at(x, y) == 0) {
+          // An outline pixel given to a region whose strand paints it over:
+          // an occluder's line, or the face's along back hair (the face lies
+          // in the background, behind every strand, so the strand keeps it).
+          g = group(l);
+          if (g >= 0 && !differs(texture_at(g, x, y), drawn)) g = -1;
+        }
         if (g < 0) continue;
         const int front = occluding_group(x, y, g);
         rims[static_cast<std::size_t>(front >= 0 ? front : g)].emplace_back(x, y);
-      } else if (ctx.original->at(x, y) == 0) {
-        // An outline pixel given to a region whose strand paints it over:
-        // an occluder's line, or the face's along back hair (the face lies
-        // in the background, behind every strand, so the strand keeps it).
-        const int g = group(l);
-        if (g < 0 || !differs(texture_at(g, x, y), drawn)) continue;
-        const int front = occluding_group(x, y, g);
-        rims[static_cast<std::size_t>(front >= 0 ? front : g)].emplace_back(x, y);
       }
-    }
+    return rims;
+  };
+  std::vector<std::vector<cv::Point>> rims;
+  if (o.threads > 1 && h > 1) {
+    auto lower = std::async(std::launch::async, rows, h / 2, h);
+    rims = rows(0, h / 2);
+    auto rest = lower.get();
+    for (std::size_t g = 0; g < rims.size(); ++g)
+      rims[g].insert(rims[g].end(), rest[g].begin(), rest[g].end());
+  } else {
+    rims = rows(0, h);
+  }
   for (std::size_t g = 0; g < rims.size(); ++g)
     if (!rims[g].empty()) carry(image, rims[g], &(*strands)[g]);
 }
