@@ -35,7 +35,8 @@ std::vector<BankRay> landing_next_to(const std::vector<BankRay>& hits, const Edg
   return kept;
 }
 
-// Runs of consecutive rays as closed polygons: starts, then ends back.
+}  // namespace
+
 std::vector<Polyline> ray_bands(const std::vector<BankRay>& rays) {
   std::vector<Polyline> out;
   std::size_t k = 0;
@@ -52,8 +53,6 @@ std::vector<Polyline> ray_bands(const std::vector<BankRay>& rays) {
   }
   return out;
 }
-
-}  // namespace
 
 BankCrossings cross_occluders(const Context& ctx, const Edge& edge) {
   BankCrossings out;

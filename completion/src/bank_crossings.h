@@ -61,6 +61,10 @@ struct BankCrossings {
 // lands on the far bank.
 BankCrossings cross_occluders(const Context& ctx, const Edge& edge);
 
+// Runs of consecutive rays (index along the outline within 4) as closed
+// polygons: starts, then ends back.
+std::vector<Polyline> ray_bands(const std::vector<BankRay>& rays);
+
 struct BankJoin {
   double share = 0.0;  // min over both edges of the share of rays landing next to the other
   std::vector<Polyline> bands;  // the hidden part: runs of consecutive rays from a

@@ -6,6 +6,7 @@
 #include <set>
 #include <vector>
 
+#include "bank_crossings.h"
 #include "context.h"
 
 namespace hair25d::completion::detail {
@@ -41,5 +42,25 @@ struct FaceJoin {
 // strand with such a region (related `equal` or joined).
 std::vector<FaceJoin> face_join_candidates(const Context& ctx, const Face& face,
                                            const std::set<int>& front);
+
+// The head, neck and body in front of the back hair (body_joins.cpp): the
+// face and the open (non-hair, non-ink) areas next to its drawn outline,
+// not the paper (the open area with most pixels on the image's border).
+// CV_8U, image size, 1 = body; empty without a face.
+cv::Mat body_mask(const Context& ctx, const Face& face);
+
+// Back-hair pieces (not in `front`, no tails) seen on both sides of the
+// neck or body: rays from each piece's outline across the body (at least
+// a few pixels of it not the face: across the face alone the face joins
+// decide) and hair lying over either piece land on the other both ways;
+// not when both pieces have the body behind them too (strands lying on the
+// neck); their paint agrees (tone, cel colours, windows or one field).
+// `body` gets body_mask (left empty when there are no two pieces): the
+// joins' bands count over it. Most rays first.
+class RegionTones;
+class RegionFields;
+std::vector<MassJoin> body_join_candidates(const Context& ctx, const Face& face,
+                                           const std::set<int>& front, RegionTones& tones,
+                                           RegionFields& fields, cv::Mat* body);
 
 }  // namespace hair25d::completion::detail
