@@ -6,6 +6,8 @@
 // flat paint in different colours are two strands (joins.cpp).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "hair25d/completion/completion.h"
 #include "synthetic.h"
 
@@ -150,6 +152,48 @@ TEST(StrandJoins, PiecesOfTwoFlatPaintsAreNotJoined) {
   EXPECT_EQ(joined_with_1(strand_under_band(Rgba{206, 155, 114, 255})), (std::vector<int>{1}));
   EXPECT_EQ(joined_with_1(strand_under_band(Rgba{201, 150, 110, 255})), (std::vector<int>{1, 2}));
   EXPECT_EQ(joined_with_1(strand_under_band(kStrand)), (std::vector<int>{1, 2}));
+}
+
+// An arched strand (radius 150 ± 14 round (150, 260), the half above y 260)
+// over a wide lowest region 4, its top hidden by a band 3 (x 75..225, y
+// 80..170) lying over it: the left piece 1 and the right piece 2 in kStrand,
+// their cuts ~150 px apart, the hidden arc turning 60°. Three strips 5, 6, 7
+// lying on region 4 inside the arch, unrelated to the strand, in `others`.
+Drawing arch_under_band(Rgba others) {
+  Drawing d = blank(300, 300);
+  paint(
+      d, [](double x, double y) { return x > 5 && x < 295 && y > 5 && y < 295; }, kBack, 4);
+  auto arch = [](double x, double y) {
+    const double r = std::hypot(x - 150, y - 260);
+    return y < 260 && r > 136 && r < 164;
+  };
+  paint(
+      d, [arch](double x, double y) { return arch(x, y) && x < 150; }, kStrand, 1);
+  paint(
+      d, [arch](double x, double y) { return arch(x, y) && x >= 150; }, kStrand, 2);
+  paint(
+      d, [](double x, double y) { return x > 75 && x < 225 && y > 80 && y < 170; }, kBang, 3);
+  for (int k = 0; k < 3; ++k)
+    paint(
+        d,
+        [k](double x, double y) {
+          return x > 105 + 35 * k && x < 125 + 35 * k && y > 200 && y < 250;
+        },
+        others, 5 + k);
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3),
+                 below(2, 3), below(4, 5), below(4, 6), below(4, 7)};
+  return d;
+}
+
+TEST(StrandJoins, PiecesOfOneRarePaintAreJoinedAcrossALongBendingGap) {
+  // The hidden arc turns 60° over a gap of five strand widths: the outline
+  // alone prices the join at ~3.5 (angles 1.5, gap 1.5, bulge 0.5), over the
+  // limit of 2.4. The two pieces are one flat paint
+  // that no other region of the drawing shares, so they are one strand.
+  // When three other regions share that paint (strands of one hair colour),
+  // the paint says nothing and the pieces stay apart.
+  EXPECT_EQ(joined_with_1(arch_under_band(Rgba{170, 130, 150, 255})), (std::vector<int>{1, 2}));
+  EXPECT_EQ(joined_with_1(arch_under_band(kStrand)), (std::vector<int>{1}));
 }
 
 }  // namespace
