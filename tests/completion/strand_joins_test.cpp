@@ -158,7 +158,8 @@ TEST(StrandJoins, PiecesOfTwoFlatPaintsAreNotJoined) {
 // over a wide lowest region 4, its top hidden by a band 3 (x 75..225, y
 // 80..170) lying over it: the left piece 1 and the right piece 2 in kStrand,
 // their cuts ~150 px apart, the hidden arc turning 60°. Three strips 5, 6, 7
-// lying on region 4 inside the arch, unrelated to the strand, in `others`.
+// lying on region 4 inside the arch, unrelated to the strand, in `others`,
+// and two more, 8 and 9, in other paints.
 Drawing arch_under_band(Rgba others) {
   Drawing d = blank(300, 300);
   paint(
@@ -173,6 +174,13 @@ Drawing arch_under_band(Rgba others) {
       d, [arch](double x, double y) { return arch(x, y) && x >= 150; }, kStrand, 2);
   paint(
       d, [](double x, double y) { return x > 75 && x < 225 && y > 80 && y < 170; }, kBang, 3);
+  // Two more regions of other paints: rarity needs eight flat-painted regions.
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 70 && y > 200 && y < 250; },
+      Rgba{90, 140, 200, 255}, 8);
+  paint(
+      d, [](double x, double y) { return x > 230 && x < 260 && y > 200 && y < 250; },
+      Rgba{120, 200, 120, 255}, 9);
   for (int k = 0; k < 3; ++k)
     paint(
         d,
@@ -180,16 +188,16 @@ Drawing arch_under_band(Rgba others) {
           return x > 105 + 35 * k && x < 125 + 35 * k && y > 200 && y < 250;
         },
         others, 5 + k);
-  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3),
-                 below(2, 3), below(4, 5), below(4, 6), below(4, 7)};
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3),
+                 below(4, 5), below(4, 6), below(4, 7), below(4, 8), below(4, 9)};
   return d;
 }
 
 TEST(StrandJoins, PiecesOfOneRarePaintAreJoinedAcrossALongBendingGap) {
   // The hidden arc turns 60° over a gap of five strand widths: the outline
   // alone prices the join at ~3.5 (angles 1.5, gap 1.5, bulge 0.5), over the
-  // limit of 2.4. The two pieces are one flat paint
-  // that no other region of the drawing shares, so they are one strand.
+  // limit of 2.4. The two pieces are one flat paint that no other of the
+  // drawing's nine regions shares, so they are one strand.
   // When three other regions share that paint (strands of one hair colour),
   // the paint says nothing and the pieces stay apart.
   EXPECT_EQ(joined_with_1(arch_under_band(Rgba{170, 130, 150, 255})), (std::vector<int>{1, 2}));
