@@ -79,21 +79,20 @@ constexpr double kMaxBackWindowStep = 1.0;
 constexpr double kMaxFlatStrandStep = 1.5;
 // *Rare paint* (session 13): a strand join between two pieces of one flat
 // paint (`PaintStep::flat`, step at most kRarePaintStep RGB), one of them a
-// front piece, whose paint no more than kRarePaintSharing flat-painted
-// regions of the drawing share (each region's flat colours within
-// kRarePaintMatch RGB of the other's, `region_flat_distance`; the pair
-// counts itself) costs kRarePaintBonus less. Where the strands are painted
-// apart, one paint on both sides of a gap is what a person follows under a
-// long or bending occluder; where many regions share it (all strands of one
-// hair colour: five of the annotated six), it says nothing and nothing
-// changes. Seeds 101-116, `eval_joins`, precision / recall: flat 0.996 /
-// 0.830 -> 0.996 / 0.882, two-tone 0.993 / 0.640 -> 1.000 / 0.724 (held out
-// 201-216: 0.989 / 0.751 -> 0.984 / 0.798, 0.978 / 0.634 -> 0.979 / 0.677);
-// gradient, screentone and the annotated six unchanged. Sharing at most 1
-// (the partner only) lost strands in three pieces, 3 two-tone precision;
-// without the front piece a right back-hair join chained into a wrong one
-// (flat 201-216 precision 0.964). Figures in docs/completion.md "Session 13:
-// strand links over the cost limit".
+// front piece, whose paint no more than kRarePaintSharing flat-painted regions
+// of the drawing share (each region's flat colours within kRarePaintMatch RGB
+// of the other's, `region_flat_distance`; the pair counts itself) costs
+// kRarePaintBonus less. Where the strands are painted apart, one paint on both
+// sides of a gap is what a person follows under a long or bending occluder;
+// where many regions share it (strands of one hair colour), it says nothing
+// and nothing changes. Seeds 101-116, `eval_joins`, precision / recall: flat
+// 0.996 / 0.830 -> 0.996 / 0.882, two-tone 0.993 / 0.640 -> 1.000 / 0.724
+// (held out 201-216: 0.989 / 0.751 -> 0.984 / 0.798, 0.978 / 0.634 -> 0.979 /
+// 0.677); gradient, screentone and the annotated six unchanged. Sharing at
+// most 1 (the partner only) lost strands in three pieces, 3 two-tone
+// precision; without the front piece a right back-hair join chained into a
+// wrong one (flat 201-216 precision 0.964). Figures in docs/completion.md
+// "Session 13: strand links over the cost limit".
 constexpr double kRarePaintBonus = 1.5;
 constexpr double kRarePaintStep = 0.5;
 constexpr double kRarePaintMatch = 0.5;
