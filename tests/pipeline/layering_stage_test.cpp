@@ -28,9 +28,9 @@ TEST(LayeringStage, RunGivesRelationsDepthsAndAnOverlay) {
 }
 
 TEST(LayeringStage, EvaluationReportMatchesItsCases) {
-  const std::filesystem::path overlays =
-      std::filesystem::temp_directory_path() / "hair25d_layering_stage_test_overlays";
-  std::filesystem::remove_all(overlays);
+  // A folder of its own: test runs in other trees share the temp directory.
+  const hair25d::testing::TempDir tmp;
+  const std::filesystem::path overlays = tmp / "overlays";
   LayeringEvalOptions options;
   options.overlays_dir = overlays;
   const LayeringEvalReport report = evaluate_layering(kCases, options);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <set>
 
+#include "common/temp_dir.h"
 #include "hair25d/core/error.h"
 #include "hair25d/core/image_io.h"
 #include "hair25d/pipeline/segment_stage.h"
@@ -85,8 +86,8 @@ TEST(SegmentStage, HairColourPicksTheRegionsOfThatColour) {
 }
 
 TEST(SegmentStage, WritesTheOutputFolderAtomically) {
-  const fs::path dir = fs::temp_directory_path() / "hair25d_segment_stage_test";
-  fs::remove_all(dir);
+  const hair25d::testing::TempDir tmp;
+  const fs::path dir = tmp / "segment";
   Strokes s;
   s.strokes = {{1, 3.0, {{10, 30}}}, {2, 3.0, {{80, 30}}}};
   const SegmentRun run = run_segment(split_drawing(), &s);
@@ -113,7 +114,8 @@ TEST(SegmentStage, BadInputIsAClearError) {
   Strokes big;
   big.strokes = {{70000, 3.0, {{10, 30}}}};
   const SegmentRun too_big = run_segment(split_drawing(), &big);
-  const fs::path dir = fs::temp_directory_path() / "hair25d_segment_stage_big";
+  const hair25d::testing::TempDir tmp;
+  const fs::path dir = tmp / "big";
   EXPECT_THROW(write_segment_run(dir, too_big), Error);
   EXPECT_FALSE(fs::exists(dir));
   // Tiny and non-square drawings are fine.

@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 
+#include "common/temp_dir.h"
 #include "hair25d/core/error.h"
 #include "hair25d/generator/generator.h"
 
@@ -288,8 +289,8 @@ TEST(Generator, StrokesReachEveryPartOfTheirRegion) {
 TEST(Generator, WriteReadRoundTrip) {
   const Options o = small(11, Shading::kGradient);
   const AnnotatedCase c = generate_case(o);
-  const fs::path dir = fs::temp_directory_path() / "hair25d_generator_roundtrip";
-  fs::remove_all(dir);
+  const hair25d::testing::TempDir tmp;
+  const fs::path dir = tmp.path();
   write_annotated_case(dir / "case", c);
   const AnnotatedCase r = read_annotated_case(dir / "case");
   EXPECT_EQ(r.image, c.image);
@@ -315,7 +316,6 @@ TEST(Generator, WriteReadRoundTrip) {
     EXPECT_EQ(r.strokes->strokes[i].points, c.strokes->strokes[i].points);
   }
   EXPECT_EQ(r.strand_masks, c.strand_masks);
-  fs::remove_all(dir);
 }
 
 void expect_rejected(const Options& o, const std::string& option) {

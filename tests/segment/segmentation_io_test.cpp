@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "common/temp_dir.h"
 #include "drawing.h"
 #include "hair25d/core/error.h"
 #include "hair25d/segment/mesh.h"
@@ -39,11 +40,9 @@ TEST(SegmentationJson, RoundTripIsExact) {
   EXPECT_EQ(b.triangle_region, a.triangle_region);
   EXPECT_EQ(b.adjacency, a.adjacency);
 
-  const auto dir = std::filesystem::temp_directory_path() / "hair25d_segment_io_test";
-  std::filesystem::create_directories(dir);
+  const hair25d::testing::TempDir dir;
   write_segmentation(dir / "s.json", a);
   EXPECT_EQ(read_segmentation(dir / "s.json").triangle_region, a.triangle_region);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(SegmentationJson, MalformedFilesNameTheKey) {
