@@ -25,6 +25,20 @@ namespace {
 constexpr double kMinSlope = 0.1;
 constexpr double kMinShadingChange = 6.0;
 constexpr double kMaxShadingStep = 3.0;
+// Two linear pieces are two strands (`PaintStep::off_gradient`, a strand
+// join refused) when their fits step more than kMaxFlatFitStep RGB where the
+// slopes predict less than kMinShadingChange across the gap (both cuts lie
+// on one level of the gradient), or more than kMaxShadingStep and
+// kFittedChangeShare of the predicted change elsewhere (a curved strand's
+// change is extrapolated from straight fits; the generator varies each
+// strand's colour by up to 8 %). Session 13, the chosen strand joins of
+// gradient seeds 101-116 and 201-216 compared by the fits: right ones with
+// less change predicted stepped at most 0.24 RGB, wrong ones 1.49, 8.66 and
+// 9.87 (change 0.4-2.5); elsewhere right ones stepped at most 2.56 (one
+// 7.37 at a change of 40), wrong ones 3.57 at 15 (and 1.2-3.8 at changes of
+// 10-45, kept). Figures in docs/completion.md, "Session 13".
+constexpr double kMaxFlatFitStep = 1.0;
+constexpr double kFittedChangeShare = 0.2;
 
 // Flat paint: both regions' three commonest colours hold this share of their
 // pixels (generated flat drawings 1.0, two-tone 0.88-1.0, gradient mostly
@@ -235,6 +249,10 @@ PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const Ed
         0.0, (pb.fit_colour - pa.fit_colour - change).norm() - (pa.fit_residual + pb.fit_residual));
     out.shading_continues =
         sloped && out.step <= kMaxShadingStep && change.norm() >= kMinShadingChange;
+    out.off_gradient =
+        out.step > (change.norm() < kMinShadingChange
+                        ? kMaxFlatFitStep
+                        : std::max(kMaxShadingStep, kFittedChangeShare * change.norm()));
     return out;
   }
   out.step = std::max(0.0, (a.colour - b.colour).norm() - (a.colour_spread + b.colour_spread));

@@ -59,12 +59,17 @@ Eigen::Vector3d shadow_ratio(const std::map<int, RegionPaint>& paints);
 //   only the band at its cut, but the strand is painted in both.
 // - colour linear in position (both windows, a gradient along the strand):
 //   the step beyond the change the mean slope of the two pieces predicts
-//   between them, beyond the fits' deviations;
+//   between them, beyond the fits' deviations (`off_gradient` when that is
+//   more than the extrapolation's error);
 // - else the step between the windows' means beyond their spread.
 struct PaintStep {
   double step = 0.0;               // RGB
   bool flat = false;               // compared as flat paint
   bool shading_continues = false;  // both pieces' gradients predict the step
+  // Compared by the linear fits, the step is more than a gradient explains:
+  // over 1 RGB where the slopes predict little change across the gap, over
+  // 3 RGB and a fifth of the predicted change elsewhere (two strands).
+  bool off_gradient = false;
 };
 PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const EdgePaint& pb,
                      const RegionPaint& ra, const RegionPaint& rb, const Eigen::Vector3d& shadow);

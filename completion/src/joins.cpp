@@ -351,9 +351,11 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       const PaintStep step = paint_step(a, b, paints[i], paints[j], region_paint_of(a.region),
                                         region_paint_of(b.region), shadow);
       // Two pieces of flat paint stepping more than kMaxFlatStrandStep, one
-      // of them a strand (above some region), are two strands.
-      const bool other_paint = step.flat && step.step > kMaxFlatStrandStep &&
-                               (front.count(a.region) > 0 || front.count(b.region) > 0);
+      // of them a strand (above some region), are two strands; so are two
+      // linear pieces stepping more than their gradient explains.
+      const bool other_paint = (step.flat && step.step > kMaxFlatStrandStep &&
+                                (front.count(a.region) > 0 || front.count(b.region) > 0)) ||
+                               step.off_gradient;
       if (strand_like && !other_paint) {
         // The hidden part keeps a strand's width: half-way along the joins its
         // width lies near the widths at the two cuts (criterion 3 of §5.1 seen

@@ -131,6 +131,38 @@ TEST(PaintJoins, GradientCarryingOnAcrossTheGapJoinsBeyondThePlainCost) {
   EXPECT_EQ(joined_with_1(strand_under_band(), 0.4), (std::vector<int>{1}));
 }
 
+// A gradient across the strand: 0.5 levels a pixel on every channel from
+// `left` at x = 100, `lift` levels lighter.
+Rgba across(Rgba left, int x, int lift) {
+  auto s = [x, lift](std::uint8_t v) {
+    return static_cast<std::uint8_t>(std::clamp(std::lround(v + lift - 0.5 * (x - 100)), 0L, 255L));
+  };
+  return {s(left.r), s(left.g), s(left.b), 255};
+}
+
+TEST(PaintJoins, PiecesOffTheGradientAreNotJoined) {
+  // Both pieces shaded across the strand (0.87 RGB a pixel), so their slopes
+  // predict no change across the band: the lower piece 4 levels lighter (7
+  // RGB, another strand's paint) cost only 0.23 more and was joined under a
+  // limit of 1.0; now it stays apart, as does a lower piece shaded down the
+  // strand (slope 0.87) 9 levels (16 RGB) off the ~45 RGB its slope
+  // predicts, joined under 1.4 before. One paint is joined both ways.
+  for (const int lift : {0, 4}) {
+    Drawing d = strand_under_band();
+    repaint(d, 1, [](int x, int) { return across(kBase, x, 0); });
+    repaint(d, 2, [lift](int x, int) { return across(kBase, x, lift); });
+    EXPECT_EQ(joined_with_1(d, 1.0), lift == 0 ? (std::vector<int>{1, 2}) : (std::vector<int>{1}))
+        << lift;
+  }
+  for (const int offset : {0, 9}) {
+    Drawing d = strand_under_band();
+    repaint(d, 1, [](int, int y) { return ramp(kBase, y); });
+    repaint(d, 2, [offset](int, int y) { return ramp(kBase, y - 2 * offset); });
+    EXPECT_EQ(joined_with_1(d, 1.4), offset == 0 ? (std::vector<int>{1, 2}) : (std::vector<int>{1}))
+        << offset;
+  }
+}
+
 // A wide piece cut in two by a strand lying over it: left (1) and right (2)
 // of strand 3, both over region 4 (front hair: no mass or path join), so a
 // bank or strand join must join them.
