@@ -179,5 +179,29 @@ TEST(PathJoins, BackHairLyingOnAHangingTailIsAPiece) {
   EXPECT_EQ(test::regions_with(r, 6), (std::vector<int>{6}));
 }
 
+TEST(PathJoins, BackHairRestingOnATailThreeRegionsCoverIsAPiece) {
+  // As above, with a second lock 7 lying on the back and the tail: the tail
+  // is covered by three regions (two-tone seed 103: a tail under two back
+  // pieces and a bang), so it hung from under nothing and back 1 stayed
+  // front hair, no path piece. Back 1 touches the tail along a few per cent
+  // of its outline (it rests on the tail's top end), so the tail hangs from
+  // under it.
+  Drawing d = blank(300, 270);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 80 && y > 150 && y < 255; }, kBack, 5);
+  paint_back_sliver_and_strand(d);
+  paint(
+      d, [](double x, double y) { return x > 70 && x < 105 && y > 20 && y < 250; }, kFan, 6);
+  paint(
+      d, [](double x, double y) { return x > 30 && x < 50 && y > 90 && y < 262; }, kFan, 7);
+  d.relations = {below(1, 3), below(2, 3), below(5, 1), below(5, 6),
+                 below(1, 6), below(5, 7), below(1, 7)};
+  const Result r = run(d);
+  EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(r, 5), (std::vector<int>{5}));
+  EXPECT_EQ(test::regions_with(r, 6), (std::vector<int>{6}));
+  EXPECT_EQ(test::regions_with(r, 7), (std::vector<int>{7}));
+}
+
 }  // namespace
 }  // namespace hair25d::completion
