@@ -1,6 +1,8 @@
 #include "bank_crossings.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <set>
 
 #include "join_paint.h"
@@ -158,6 +160,14 @@ constexpr double kMinMassDepthRatio = 0.3;
 // times the crossed width (gradient seeds 101-116, the field without its
 // gates: right candidates 0-0.75 (two 1.75, 2.13), wrong ones 1.45 and up).
 constexpr double kMaxMassFieldStep = 1.0;
+// Two pieces whose own paint is linear and whose joint field (a gradient)
+// misses them by more than this are painted by two gradients, two strands,
+// though the windows at the cuts step little (session 13: the chosen mass
+// joins of gradient 201-216 and 301-316, right ones 0-0.88 where the field
+// says something, wrong ones 0.90, 9.0, 9.3, 24.1; at 3 or 6, gradient
+// 201-216 0.959 / 0.704 -> 0.970 / 0.704, 301-316 0.881 / 0.831 -> 0.894 /
+// 0.834, 101-116 unchanged; at 1.5 101-116 0.979 / 0.852 -> 0.979 / 0.841).
+constexpr double kMinOtherFieldStep = 3.0;
 
 struct MassRay {
   int index = 0;  // along the outline
@@ -380,9 +390,15 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tone
       // (on its side of the band's level) passes whatever the windows step.
       const RegionCels::Judgement cel = fields.cels().judge(a, b);
       if (cel.other) continue;
+      // Two gradients: both pieces linear, the joint field a gradient that
+      // misses them by more than kMinOtherFieldStep, whatever the windows
+      // at the cuts step.
+      const double field =
+          tones.screentone() ? std::numeric_limits<double>::infinity() : fields.step(a, b);
+      if (std::isfinite(field) && field > kMinOtherFieldStep) continue;
       if (j_colour >
               kMaxMassColourStep + kMassSpreadShare * std::max(0.0, spread - kTextureFloor) &&
-          (tones.screentone() || fields.step(a, b) > kMaxMassFieldStep) && !cel.same)
+          field > kMaxMassFieldStep && !cel.same)
         continue;
       // Both pieces wide behind the cut, compared with the strands crossed.
       auto wide = [](const std::vector<MassRay>& list) {

@@ -92,6 +92,16 @@ TEST(MassPaint, BackHairInOneGradientIsJoinedAcrossTheFan) {
   EXPECT_EQ(test::regions_with(run(flat), 1), (std::vector<int>{1}));
 }
 
+TEST(MassPaint, PiecesOfTwoGradientsAreNotJoinedThoughTheWindowsStepLittle) {
+  // The right piece carries the left one's colour at the cut on, but twice
+  // as steep (0.9 RGB a px along x): the windows beside the cuts step ~2
+  // RGB (under the 10 RGB limit; the old rule joined them), while no one
+  // field paints both (it misses by ~21 RGB): two locks' gradients.
+  Drawing d = in_gradient(back_hair_under_fan(), 0);
+  repaint(d, 2, [](int x, int y) { return gradient(114 + 2 * (x - 212), y, 0); });
+  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1}));
+}
+
 TEST(PathPaint, GradientSliverIsJoinedUnderTheStrandLyingOnBoth) {
   // The windows at the paths' ends, ~44 px apart across strand 3, step ~20
   // RGB (over the 0.8 RGB limit); the sliver has only 1-px-inside pixels.
