@@ -3,6 +3,7 @@
 // whose cut edges face each other across the strand.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <set>
 #include <tuple>
@@ -201,9 +202,12 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tone
 // colour step first. Empty unless Options::path_joins.
 // Pieces lying wholly along the `face` (CV_8U mask, may be empty) are strands
 // lying on it, not back hair. Textured pieces (RegionTones) compare colours
-// at the light percentile and must share their tone.
+// at the light percentile and must share their tone. Pairs already in one
+// strand (`one_strand`, if given) are left out: joining them changes
+// nothing, and their paths are the search's cost.
 std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& face,
-                                           RegionTones& tones, RegionFields& fields);
+                                           RegionTones& tones, RegionFields& fields,
+                                           const std::function<bool(int, int)>& one_strand = {});
 
 // Mean colour of a region's drawn pixels (not outlines) within 5 px of the
 // point 6 px from `at` along `inward`; `spread` (if given) gets their RGB

@@ -263,7 +263,9 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     ++result.joins;
   }
   // Back-hair pieces linked under the regions above both (mass_paths.cpp).
-  for (const detail::MassJoin& j : detail::path_join_candidates(ctx, face.mask, tones, fields))
+  const auto one_strand = [&](int a, int b) { return strands.find(a) == strands.find(b); };
+  for (const detail::MassJoin& j :
+       detail::path_join_candidates(ctx, face.mask, tones, fields, one_strand))
     join_by_bands(j, false);
   // Back-hair pieces on both sides of the neck or body (body_joins.cpp).
   // On screentone, where a tail hanging beside the face wears the back

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <map>
 #include <opencv2/imgproc.hpp>
 #include <set>
+#include <utility>
 
 #include "bank_crossings.h"
 #include "join_paint.h"
@@ -368,7 +370,8 @@ double tone_join_cost(RegionTones& tones, int a, int b) {
 }
 
 std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& face,
-                                           RegionTones& tones, RegionFields& fields) {
+                                           RegionTones& tones, RegionFields& fields,
+                                           const std::function<bool(int, int)>& one_strand) {
   if (!ctx.options->path_joins) return {};
   cv::Mat near_face;
   if (!face.empty())
@@ -388,18 +391,24 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
   // 11 and on tail 6, which lies on tail 10; at a limit of 4, flat 101-116
   // 0.969 / 0.815 -> 0.970 / 0.830 with it, at 2 no change).
   std::set<int> over_hanging;
+  // (piece, region below it): whether the piece rests on it, measured once.
+  std::map<std::pair<int, int>, bool> resting;
   for (bool grew = !tones.screentone(); grew;) {
     grew = false;
     for (const auto& [id, info] : ctx.regions) {
       if (!front.count(id) || info.occluders.empty() || over_hanging.count(id)) continue;
       bool hanging = true;
       for (const auto& [low, low_info] : ctx.regions) {
+        if (!hanging) break;
         if (!low_info.occluders.count(id)) continue;
         const int covers = static_cast<int>(low_info.occluders.size());
-        const bool rests =
-            covers <= kMaxHangingCover ||
-            (covers <= kMaxRestingCover && outline_share(ctx, id, low) <= kMaxRestingShare);
-        hanging = hanging && (!front.count(low) || over_hanging.count(low)) && rests;
+        hanging = (!front.count(low) || over_hanging.count(low)) && covers <= kMaxRestingCover;
+        if (!hanging || covers <= kMaxHangingCover) continue;
+        auto it = resting.find({id, low});
+        if (it == resting.end())
+          it = resting.emplace(std::pair{id, low}, outline_share(ctx, id, low) <= kMaxRestingShare)
+                   .first;
+        hanging = it->second;
       }
       if (hanging) grew = over_hanging.insert(id).second;
     }
@@ -422,6 +431,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
     for (std::size_t k = i + 1; k < pieces.size(); ++k) {
       const int a = pieces[i], b = pieces[k];
       if (ctx.is_above(a, b) || ctx.is_above(b, a)) continue;
+      if (one_strand && one_strand(a, b)) continue;
       if ((ctx.regions.at(a).colour - ctx.regions.at(b).colour).norm() >
           ctx.options->max_colour_distance)
         continue;
