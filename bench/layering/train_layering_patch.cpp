@@ -14,12 +14,16 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -231,6 +235,124 @@ void write_net(std::FILE* f, const detail::PatchNet& net) {
                net.order_weight, net.patch_weight);
 }
 
+// Reads the networks back from a patch_weights.cpp this program wrote: the
+// numbers of each kNet's initializer in order (float literals as the
+// compiler reads them, by strtof).
+void read_weights(const std::string& path, detail::PatchNet& order, detail::SameDepthNet& same) {
+  std::ifstream f(path);
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  auto numbers = [&](const std::string& head) {
+    std::vector<double> out;
+    const std::size_t at = text.find(head);
+    if (at == std::string::npos)
+      throw hair25d::Error("train_layering_patch: no '" + head + "' in " + path);
+    const char* c = text.c_str() + at + head.size();
+    for (; *c != ';' && *c != 0; ++c) {
+      if (!(std::isdigit(static_cast<unsigned char>(*c)) || *c == '-' || *c == '+' || *c == '.'))
+        continue;
+      char* end = nullptr;
+      double v = std::strtod(c, &end);
+      if (*end == 'f') v = std::strtof(c, &end), ++end;
+      out.push_back(v);
+      c = end - 1;
+    }
+    return out;
+  };
+  auto fill = [&](const std::vector<double>& v, std::size_t& k, detail::PatchNet& net) {
+    for (auto& row : net.w1)
+      for (float& x : row) x = static_cast<float>(v[k++]);
+    for (float& x : net.b1) x = static_cast<float>(v[k++]);
+    for (float& x : net.w2) x = static_cast<float>(v[k++]);
+    for (float& x : net.b2) x = static_cast<float>(v[k++]);
+    net.alpha = v[k++], net.beta = v[k++], net.order_weight = v[k++], net.patch_weight = v[k++];
+  };
+  const std::size_t size = detail::kPatchInputs * detail::kPatchHidden + 2 * detail::kPatchHidden +
+                           detail::kPatchMembers + 4;
+  const std::vector<double> a = numbers("static const PatchNet kNet =");
+  const std::vector<double> b = numbers("static const SameDepthNet kNet =");
+  if (a.size() != size || b.size() != size + 1)
+    throw hair25d::Error("train_layering_patch: " + path + " holds " + std::to_string(a.size()) +
+                         " and " + std::to_string(b.size()) + " numbers, not " +
+                         std::to_string(size) + " and " + std::to_string(size + 1));
+  std::size_t k = 0;
+  fill(a, k, order);
+  k = 0;
+  fill(b, k, same.net);
+  same.intercept = b[k];
+}
+
+// Distillation targets: for every end of the networks' drawings (records in
+// order, each end), the probability of "A above" (order) and of "same depth"
+// that the teachers' networks give it on average (ensemble_target).
+struct SoftTargets {
+  std::vector<float> order, same;  // one per end of the network's rows
+};
+SoftTargets teacher_targets(const std::vector<Record>& records, const Split& split,
+                            const std::vector<std::string>& paths, double sharpness,
+                            bool mean_logit) {
+  const int k = static_cast<int>(paths.size());
+  std::vector<std::vector<float>> order_scores, same_scores;  // [end][teacher]
+  for (const Record& r : records)
+    if (split.network(r.drawing))
+      for (std::size_t e = 0; e < r.ends.size(); ++e)
+        order_scores.emplace_back(k), same_scores.emplace_back(k);
+  auto order = std::make_unique<detail::PatchNet>();
+  auto same = std::make_unique<detail::SameDepthNet>();
+  std::vector<double> mean_score(records.size(), 0.0);  // Σ over teachers, every boundary
+  for (int t = 0; t < k; ++t) {
+    read_weights(paths[t], *order, *same);
+    const bool built_in = order->w1 == detail::patch_weights().w1 &&
+                          same->net.w1 == detail::patch_same_weights().net.w1;
+    const int inputs = detail::patch_inputs_used(*order);
+    int end = 0, right = 0, total = 0;
+    for (const Record& r : records) {
+      double s = 0;
+      for (const detail::Patch& p : r.ends) {
+        const detail::PatchScores q = detail::patch_scores(*order, inputs, same->net, p);
+        s += q.order;
+        mean_score[&r - records.data()] += q.order / k;
+        if (split.network(r.drawing)) {
+          order_scores[end][t] = static_cast<float>(q.order);
+          same_scores[end++][t] = static_cast<float>(q.same);
+        }
+      }
+      if (r.y != 0 && !split.network(r.drawing)) ++total, right += s * r.y > 0;
+    }
+    std::printf("teacher %s%s: patch sign on the others %.1f%% of %d\n", paths[t].c_str(),
+                built_in ? " (the built-in weights)" : "", 100.0 * right / std::max(total, 1),
+                total);
+    std::fflush(stdout);
+  }
+  {
+    int right = 0, total = 0;
+    for (const Record& r : records)
+      if (r.y != 0 && !split.network(r.drawing))
+        ++total, right += mean_score[&r - records.data()] * r.y > 0;
+    std::printf("the teachers' mean score: patch sign on the others %.1f%% of %d\n",
+                100.0 * right / std::max(total, 1), total);
+  }
+  SoftTargets out;
+  int end = 0;
+  double order_sum = 0, same_sum = 0;
+  for (const Record& r : records) {
+    if (!split.network(r.drawing)) continue;
+    for (std::size_t e = 0; e < r.ends.size(); ++e, ++end) {
+      if (r.y != 0) {
+        out.order.push_back(hair25d::layering_training::ensemble_target(order_scores[end].data(), k,
+                                                                        sharpness, mean_logit));
+        order_sum += std::abs(out.order.back() - (r.y > 0 ? 1.0 : 0.0));
+      }
+      out.same.push_back(hair25d::layering_training::ensemble_target(same_scores[end].data(), k,
+                                                                     sharpness, mean_logit));
+      same_sum += std::abs(out.same.back() - (r.y == 0 ? 1.0 : 0.0));
+    }
+  }
+  std::printf("teachers' targets: mean distance from the labels %.4f (order), %.4f (same depth)\n",
+              order_sum / std::max<std::size_t>(out.order.size(), 1),
+              same_sum / std::max<std::size_t>(out.same.size(), 1));
+  return out;
+}
+
 // Same depth or ordered, from the same patches: a network whose score
 // h(P) + h(swapped P) does not change when A and B swap, trained on every
 // end of the first drawings' occluding boundaries (same-depth ones weighted
@@ -240,7 +362,8 @@ void write_net(std::FILE* f, const detail::PatchNet& net) {
 detail::SameDepthNet train_same_depth(const std::vector<Record>& records, const Split& split,
                                       int iterations, std::uint64_t seed,
                                       const hair25d::layering_training::MlpOptions* adam,
-                                      int inputs, std::string* report) {
+                                      int inputs, std::string* report,
+                                      const std::vector<float>* soft = nullptr) {
   int n = 0, positives = 0, total = 0;
   for (const Record& r : records)
     if (split.network(r.drawing))
@@ -278,7 +401,8 @@ detail::SameDepthNet train_same_depth(const std::vector<Record>& records, const 
     o.inputs = inputs;
     o.wide_dropout = 0.0;
     o.seed = seed + 1;
-    const detail::PatchNet net = hair25d::layering_training::train_patch_mlp(px, ps, py, pw, o);
+    const detail::PatchNet net =
+        hair25d::layering_training::train_patch_mlp(px, ps, py, pw, o, soft);
     out.net = net;
   } else {
     const cv::Ptr<cv::ml::ANN_MLP> mlp =
@@ -403,12 +527,26 @@ int main(int argc, char** argv) {
                  "read the patches from here instead of drawing (several files: parts of one "
                  "run, in order)");
   app.add_option("--write", write, "write layering/src/patch_weights.cpp here");
+  std::vector<std::string> teachers;
+  bool mean_logit = false;
+  app.add_option("--teachers", teachers,
+                 "with --adam: distil these patch_weights.cpp files' networks (both), their mean "
+                 "probability per end as the target");
+  app.add_option("--distil-share", adam.soft_share,
+                 "with --teachers: share of the teachers' target (the rest the label's)")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_flag("--distil-logit", mean_logit,
+               "with --teachers: the probability of the teachers' mean log-odds instead");
   CLI11_PARSE(app, argc, argv);
 
   if (!use_adam && detail::kPatchMembers != 1) {
     std::fprintf(stderr,
                  "the layering's network is an ensemble of %d members: only --adam trains it\n",
                  detail::kPatchMembers);
+    return 1;
+  }
+  if (!teachers.empty() && !use_adam) {
+    std::fprintf(stderr, "--teachers needs --adam\n");
     return 1;
   }
   const Split split{net_cases, extra_from, seed, thin_weight};
@@ -428,6 +566,9 @@ int main(int argc, char** argv) {
     std::printf("%zu boundaries written to %s\n", records.size(), dump.c_str());
     return 0;
   }
+  SoftTargets soft;
+  if (!teachers.empty())
+    soft = teacher_targets(records, split, teachers, adam.sharpness, mean_logit);
   // More patches of the same ends (other radii), side by side in one input.
   std::vector<std::vector<Record>> extra;
   for (const std::string& path : also) {
@@ -501,7 +642,8 @@ int main(int argc, char** argv) {
       adam.wide_dropout = grey_dropout;
     }
     adam.seed = seed;
-    *net = hair25d::layering_training::train_patch_mlp(px, ps, py, pw, adam);
+    *net = hair25d::layering_training::train_patch_mlp(px, ps, py, pw, adam,
+                                                       teachers.empty() ? nullptr : &soft.order);
   } else {
     mlp = train_network(x.colRange(0, used).clone(), t, cv::Mat(), hidden, iterations, seed);
   }
@@ -627,7 +769,8 @@ int main(int argc, char** argv) {
   std::string same_report;
   const detail::SameDepthNet same =
       train_same_depth(records, split, same_iterations, seed, use_adam ? &adam : nullptr,
-                       grey ? detail::kPatchInputs : detail::kPatchLabelInputs, &same_report);
+                       grey ? detail::kPatchInputs : detail::kPatchLabelInputs, &same_report,
+                       teachers.empty() ? nullptr : &soft.same);
   char method_buffer[200];
   if (use_adam)
     std::snprintf(method_buffer, sizeof method_buffer,
@@ -647,6 +790,13 @@ int main(int argc, char** argv) {
     char text[40];
     std::snprintf(text, sizeof text, " --thin-weight %g", thin_weight);
     method += text;
+  }
+  if (!teachers.empty()) {
+    char text[80];
+    std::snprintf(text, sizeof text, " --distil-share %g%s --teachers", adam.soft_share,
+                  mean_logit ? " --distil-logit" : "");
+    method += text;
+    for (const std::string& t : teachers) method += " " + t.substr(t.find_last_of('/') + 1);
   }
   std::string drawings = "the first " + std::to_string(net_cases) + " drawings";
   if (extra_from != std::numeric_limits<int>::max()) {

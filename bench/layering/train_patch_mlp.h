@@ -35,6 +35,9 @@ struct MlpOptions {
   // are zeroed, so the network cannot lean on the wide scale alone.
   double wide_dropout = 0.0;
   bool anneal = false;  // the step falls linearly to 0 over the epochs
+  // Distillation (train_patch_mlp's `soft`): each row's target probability
+  // is (1 − soft_share) × its label's + soft_share × the teachers'.
+  double soft_share = 1.0;
 
   int fine_inputs = hair25d::layering::detail::kPatchScaleInputs;
   std::uint64_t seed = 1;
@@ -42,12 +45,39 @@ struct MlpOptions {
 
 using RowMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
+// The logistic loss of z = sharpness × score against a target probability t
+// of "+1" (a soft label): t · softplus(−z) + (1 − t) · softplus(z), whose
+// derivative in z is σ(z) − t. For t = 1 or 0 it is the loss of a hard ±1
+// label, softplus(∓z).
+inline double soft_target_loss(double z, double t, double* dz) {
+  auto softplus = [](double v) {
+    return v > 0 ? v + std::log1p(std::exp(-v)) : std::log1p(std::exp(v));
+  };
+  if (dz != nullptr) *dz = 1.0 / (1.0 + std::exp(-z)) - t;
+  return t * softplus(-z) + (1.0 - t) * softplus(z);
+}
+
+// The target an ensemble of `k` teachers gives one row from their scores
+// (each as the layering reads it: g(P) ∓ g(swapped P)): the mean of their
+// probabilities σ(sharpness × score), or with `mean_logit` the probability
+// of their mean log-odds.
+inline float ensemble_target(const float* scores, int k, double sharpness, bool mean_logit) {
+  double sum = 0;
+  for (int i = 0; i < k; ++i)
+    sum += mean_logit ? sharpness * scores[i] : 1.0 / (1.0 + std::exp(-sharpness * scores[i]));
+  const double mean = sum / std::max(k, 1);
+  return static_cast<float>(mean_logit ? 1.0 / (1.0 + std::exp(-mean)) : mean);
+}
+
 // One member of the ensemble (patch_model.h), trained on its own score from
 // initial weights and a shuffle drawn from `seed`, written into hidden units
-// [member · kPatchMemberHidden, ...) and b2[member] of `net`.
+// [member · kPatchMemberHidden, ...) and b2[member] of `net`. With `soft`
+// (one probability of "+1" per row, e.g. ensemble_target of teachers) the
+// rows' targets mix it with the labels by o.soft_share (distillation).
 inline void train_patch_member(const RowMatrix& x, const RowMatrix& xs, const std::vector<float>& y,
                                const std::vector<float>& w, const MlpOptions& o, std::uint64_t seed,
-                               int member, hair25d::layering::detail::PatchNet& net) {
+                               int member, hair25d::layering::detail::PatchNet& net,
+                               const std::vector<float>* soft = nullptr) {
   namespace detail = hair25d::layering::detail;
   constexpr int H = detail::kPatchMemberHidden;
   const int d = o.inputs;
@@ -104,6 +134,16 @@ inline void train_patch_member(const RowMatrix& x, const RowMatrix& xs, const st
       for (int r = 0; r < m; ++r) {
         const float yy = y[order[start + r]], ww = w[order[start + r]];
         const float s = o.symmetric ? g1(r) + g2(r) : g1(r) - g2(r);
+        if (soft != nullptr) {
+          const double t = (1.0 - o.soft_share) * (yy > 0 ? 1.0 : 0.0) +
+                           o.soft_share * (*soft)[order[start + r]];
+          double dz = 0;
+          loss_sum += ww * soft_target_loss(o.sharpness * s, t, &dz);
+          weight_sum += ww;
+          batch_weight += ww;
+          ds(r) = static_cast<float>(ww * o.sharpness * dz);
+          continue;
+        }
         const float z = -yy * static_cast<float>(o.sharpness) * s;
         loss_sum += ww * (z > 0 ? z + std::log1p(std::exp(-z)) : std::log1p(std::exp(z)));
         weight_sum += ww;
@@ -150,16 +190,16 @@ inline void train_patch_member(const RowMatrix& x, const RowMatrix& xs, const st
 // (antisymmetric: +1 when A is above; symmetric: +1 when same depth), `w`
 // each row's weight. Returns the network in the layering's layout: its
 // kPatchMembers members trained one after the other, member m from seed
-// o.seed + m (so a one-member network is the member of o.seed).
-inline hair25d::layering::detail::PatchNet train_patch_mlp(const RowMatrix& x, const RowMatrix& xs,
-                                                           const std::vector<float>& y,
-                                                           const std::vector<float>& w,
-                                                           const MlpOptions& o) {
+// o.seed + m (so a one-member network is the member of o.seed). `soft`: see
+// train_patch_member.
+inline hair25d::layering::detail::PatchNet train_patch_mlp(
+    const RowMatrix& x, const RowMatrix& xs, const std::vector<float>& y,
+    const std::vector<float>& w, const MlpOptions& o, const std::vector<float>* soft = nullptr) {
   namespace detail = hair25d::layering::detail;
   auto net = std::make_unique<detail::PatchNet>();
   for (int m = 0; m < detail::kPatchMembers; ++m) {
     if (detail::kPatchMembers > 1) std::printf("  member %d of %d\n", m + 1, detail::kPatchMembers);
-    train_patch_member(x, xs, y, w, o, o.seed + static_cast<std::uint64_t>(m), m, *net);
+    train_patch_member(x, xs, y, w, o, o.seed + static_cast<std::uint64_t>(m), m, *net, soft);
   }
   return *net;
 }

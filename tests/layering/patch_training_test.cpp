@@ -2,6 +2,8 @@
 // a rule a patch shows, keeps the layering's symmetries, and repeats itself.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "patch_model.h"
@@ -15,8 +17,10 @@ using hair25d::layering::detail::patch_same_score;
 using hair25d::layering::detail::patch_score;
 using hair25d::layering::detail::PatchNet;
 using hair25d::layering::detail::swapped;
+using hair25d::layering_training::ensemble_target;
 using hair25d::layering_training::MlpOptions;
 using hair25d::layering_training::RowMatrix;
+using hair25d::layering_training::soft_target_loss;
 using hair25d::layering_training::train_patch_mlp;
 
 // Random values in the fine scale's first two rows (the far v < 0 edge),
@@ -138,6 +142,81 @@ TEST(PatchTraining, TheSameSeedGivesTheSameWeights) {
   // A symmetric network's score does not change when A and B swap.
   for (const Patch& p : train.patches)
     EXPECT_EQ(patch_same_score(a, swapped(p)), patch_same_score(a, p));
+}
+
+// The soft-target loss: its derivative is the finite difference of the
+// loss, and a target of 1 or 0 gives the hard label's loss softplus(∓z).
+TEST(PatchTraining, SoftTargetLossGradientAndHardLimit) {
+  for (double t : {0.0, 0.1, 0.5, 0.83, 1.0})
+    for (double z : {-30.0, -3.0, -0.4, 0.0, 0.7, 2.5, 25.0}) {
+      double dz = 0;
+      soft_target_loss(z, t, &dz);
+      const double h = 1e-5;
+      const double numeric =
+          (soft_target_loss(z + h, t, nullptr) - soft_target_loss(z - h, t, nullptr)) / (2 * h);
+      EXPECT_NEAR(dz, numeric, 1e-6) << "t " << t << ", z " << z;
+    }
+  for (double z : {-4.0, -0.5, 0.0, 1.5, 40.0}) {
+    EXPECT_NEAR(soft_target_loss(z, 1.0, nullptr), std::log1p(std::exp(-z)), 1e-12);
+    EXPECT_NEAR(soft_target_loss(z, 0.0, nullptr), std::log1p(std::exp(z)), 1e-12);
+  }
+  // The loss is least where σ(z) is the target.
+  const double z0 = std::log(0.3 / 0.7);
+  EXPECT_LT(soft_target_loss(z0, 0.3, nullptr), soft_target_loss(z0 + 0.2, 0.3, nullptr));
+  EXPECT_LT(soft_target_loss(z0, 0.3, nullptr), soft_target_loss(z0 - 0.2, 0.3, nullptr));
+}
+
+TEST(PatchTraining, EnsembleTargetIsTheTeachersMean) {
+  const float scores[3] = {1.0f, -0.5f, 2.0f};
+  auto sigma = [](double v) { return 1.0 / (1.0 + std::exp(-v)); };
+  EXPECT_NEAR(ensemble_target(scores, 3, 2.0, false), (sigma(2.0) + sigma(-1.0) + sigma(4.0)) / 3,
+              1e-6);
+  EXPECT_NEAR(ensemble_target(scores, 3, 2.0, true), sigma((2.0 - 1.0 + 4.0) / 3), 1e-6);
+}
+
+// A planted soft rule: P(A above) = σ(f / 2), f the A − B sum of the first
+// row (as in `toy`), labels drawn from it. A network distilled from that
+// probability (the teachers' mean standing in) must give it back as
+// σ(2 × score) on other patches; one trained on the drawn labels alone is
+// far from it, and one distilled with the targets' share 0 is that one.
+TEST(PatchTraining, DistilledNetworkMatchesTheTeachersProbability) {
+  const int inputs = 512;
+  Toy train = toy(3000, 21, inputs);
+  const Toy test = toy(300, 22, inputs);
+  auto planted = [](const Patch& p) {
+    double f = 0;
+    for (int i = 0; i < 16 * 2; i += 2) f += p[i];
+    return 1.0 / (1.0 + std::exp(-f / 2));
+  };
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<float> soft;
+  for (std::size_t k = 0; k < train.patches.size(); ++k) {
+    soft.push_back(static_cast<float>(planted(train.patches[k])));
+    train.y[k] = u(rng) < soft.back() ? 1.0f : -1.0f;
+  }
+  MlpOptions o;
+  o.epochs = 30;
+  o.inputs = inputs;
+  o.seed = 25;
+  o.anneal = true;
+  auto distance = [&](const PatchNet& net) {
+    double sum = 0;
+    for (const Patch& p : test.patches)
+      sum += std::abs(1.0 / (1.0 + std::exp(-2.0 * patch_score(net, p))) - planted(p));
+    return sum / static_cast<double>(test.patches.size());
+  };
+  const PatchNet distilled = train_patch_mlp(train.x, train.xs, train.y, train.w, o, &soft);
+  const PatchNet hard = train_patch_mlp(train.x, train.xs, train.y, train.w, o);
+  o.soft_share = 0.0;
+  const PatchNet none = train_patch_mlp(train.x, train.xs, train.y, train.w, o, &soft);
+  const double d_distilled = distance(distilled), d_hard = distance(hard), d_none = distance(none);
+  std::printf("mean |p − planted|: distilled %.4f, labels %.4f, share 0 %.4f\n", d_distilled,
+              d_hard, d_none);
+  EXPECT_LT(d_distilled, 0.02);
+  EXPECT_GT(d_hard, 3 * d_distilled);
+  EXPECT_NEAR(d_none, d_hard, 0.01);
+  right_and_antisymmetric(distilled, test);  // the sign still flips exactly
 }
 
 }  // namespace
