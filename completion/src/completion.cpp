@@ -194,13 +194,9 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   const std::vector<detail::Join> joins =
       detail::match_edges(ctx, candidates, face.mask, tones, try_join);
   std::set<int> joined_atoms;
-  // Pieces joined behind the face (a strand join's patch running behind it,
-  // or a face join, below).
-  std::set<int> face_joined;
   for (const detail::Join& j : joins) {
     const detail::Edge& a = candidates[j.edge_a];
     const detail::Edge& b = candidates[j.edge_b];
-    if (j.behind_face) face_joined.insert({a.region, b.region});
     joined_atoms.insert(a.atoms.begin(), a.atoms.end());
     joined_atoms.insert(b.atoms.begin(), b.atoms.end());
     const int ra = new_report(a, EdgeCase::kJoined);
@@ -250,8 +246,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     if (ctx.regions.at(t).occluders.size() <= 2) front.insert(t);
   for (const detail::FaceJoin& j : detail::face_join_candidates(ctx, face, front)) {
     if (!try_join(j.region_a, j.region_b)) continue;
-    face_joined.insert(j.region_a);
-    face_joined.insert(j.region_b);
     EdgeReport ra, rb;
     ra.region = j.region_a, ra.p = j.pa, ra.q = j.qa, ra.joined_region = j.region_b;
     rb.region = j.region_b, rb.p = j.pb, rb.q = j.qb, rb.joined_region = j.region_a;
@@ -268,24 +262,14 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
        detail::path_join_candidates(ctx, face.mask, tones, fields, one_strand))
     join_by_bands(j, false);
   // Back-hair pieces on both sides of the neck or body (body_joins.cpp).
-  // On screentone, where a tail hanging beside the face wears the back
-  // hair's tone, not chained onto a join behind the face (a strand join's
-  // patch running behind it, or a face join): generated screentone 104's
-  // tail 5 is strand-joined to back 27 behind the face, and the body join
-  // 23-27 then added 4 wrong pairs (101-116 precision 0.953 -> 0.932).
+  // Session 13's guard (on screentone no body join onto a strand holding a
+  // join behind the face) went when match_edges stopped joining back pieces
+  // across a third back piece of another paint (generated screentone 104's
+  // tail 5 to back 27): held-out screentone 207 gained its 6 pairs.
   cv::Mat body;
-  const auto holds_face_join = [&](int region) {
-    const int g = strands.find(region);
-    for (int f : face_joined)
-      if (strands.find(f) == g) return true;
-    return false;
-  };
   for (const detail::MassJoin& j :
-       detail::body_join_candidates(ctx, face, front, tones, fields, &body)) {
-    if (tones.screentone() && (holds_face_join(j.region_a) || holds_face_join(j.region_b)))
-      continue;
+       detail::body_join_candidates(ctx, face, front, tones, fields, &body))
     join_by_bands(j, false, &body);
-  }
   // Cases 2 and 3: every open edge grows on its own (grow_edge reads the
   // context only), most of completion's serial time: two workers take the
   // next edge, the results are then used in the edges' order.

@@ -27,6 +27,17 @@ constexpr double kBulgeWeight = 4.0;
 // (generated 1000 × 800 drawings: precision 0.702 → 0.754, recall 0.333 →
 // 0.358; annotated cases unchanged).
 constexpr double kNoCommonOccluderCost = 0.2;
+// A join of two back pieces behind the face whose hidden part runs over a
+// third back piece (above no region) of another paint is refused: the
+// hidden part lies behind what shows there, and back hair of another paint
+// showing is no cover of this one. Generated screentone 104: tail 5 was
+// joined behind strand 13 to back 27 across the 975 px of piece 25 (another
+// tone), 0.089 of the patch; right joins crossing a third back piece crossed
+// one of their own paint (flat 101-116: 0.06 of the patch, step 0). Every
+// limit from 0 to 0.08 measured the same on all sets (docs/completion.md).
+constexpr double kMaxOtherBackShare = 0.04;
+// Region colours further apart than this are another paint (not screentone).
+constexpr double kOtherBackColourStep = 20.0;
 // Cost per 30 RGB of the colour step between the pieces that their paint
 // does not explain (`paint_step`). Session 4 (0.5, the step between the
 // windows' means beyond their spread): on the generated drawings (strands of
@@ -180,8 +191,11 @@ Polyline join_patch(const Edge& a, const Edge& b) {
 // Share of the patch's pixels outside both pieces that lie under an occluder
 // of either piece: the hidden part may only be where the drawing shows hair
 // in front (§5 "completed part lies under the occluders").
+// `lowest`, when given, receives the pixels of every other region lying
+// above no region (not in `front`) that the patch covers.
 double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const cv::Mat& face,
-                int* hidden) {
+                int* hidden, const std::set<int>* front = nullptr,
+                std::map<int, int>* lowest = nullptr) {
   double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
   for (const Vec2& p : patch) {
     x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
@@ -207,6 +221,7 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       if (l == ra || l == rb) continue;
       ++total;
       if (l != 0 && (ctx.is_above(l, ra) || ctx.is_above(l, rb))) ++under;
+      if (lowest && l != 0 && !front->count(l)) ++(*lowest)[l];
       if (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ++under;
     }
   *hidden = total;
@@ -298,6 +313,22 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
     const auto ia = sharing.find(ra), ib = sharing.find(rb);
     return ia != sharing.end() && ib != sharing.end() &&
            std::max(ia->second, ib->second) <= kRarePaintSharing;
+  };
+  // Pixels of the back pieces in `lowest` painted unlike both a and b
+  // (screentone: the dots' tones measured and another tone than both).
+  auto other_back_share = [&](int ra, int rb, const std::map<int, int>& lowest) {
+    double n = 0.0;
+    for (const auto& [l, count] : lowest) {
+      const bool other = tones.screentone()
+                             ? tones.match(l, ra) == RegionTones::Match::kOther &&
+                                   tones.match(l, rb) == RegionTones::Match::kOther
+                             : (ctx.regions.at(l).colour - ctx.regions.at(ra).colour).norm() >
+                                       kOtherBackColourStep &&
+                                   (ctx.regions.at(l).colour - ctx.regions.at(rb).colour).norm() >
+                                       kOtherBackColourStep;
+      if (other) n += count;
+    }
+    return n;
   };
   std::map<int, int> edge_count;
   for (const Edge& e : edges) edge_count[e.region] += e.atoms.size() == 1;
@@ -394,10 +425,16 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           join.patch = join_patch(a, b);
           int hidden = 0;
           join.behind_face = !face.empty() && !front.count(a.region) && !front.count(b.region);
-          const double cover = coverage(ctx, join.patch, a.region, b.region,
-                                        join.behind_face ? face : no_face, &hidden);
-          cost = cover < o.min_join_coverage ? std::numeric_limits<double>::infinity()
-                                             : cost + 3.0 * (1.0 - cover);
+          std::map<int, int> lowest;
+          const double cover =
+              coverage(ctx, join.patch, a.region, b.region, join.behind_face ? face : no_face,
+                       &hidden, &front, join.behind_face ? &lowest : nullptr);
+          const bool over_other_back =
+              hidden > 0 &&
+              other_back_share(a.region, b.region, lowest) / hidden > kMaxOtherBackShare;
+          cost = cover < o.min_join_coverage || over_other_back
+                     ? std::numeric_limits<double>::infinity()
+                     : cost + 3.0 * (1.0 - cover);
           if (scoring && std::isfinite(cost))
             terms = JoinTerms{mean_angle / max_angle,
                               worst_angle / max_angle,
