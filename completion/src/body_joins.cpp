@@ -38,8 +38,6 @@ constexpr double kMaxBodyColourStep = 10.0;
 constexpr double kMaxBodyFieldStep = 1.0;
 constexpr double kMaxBodyCelStep = 1.0;
 
-double luma(const Rgba& c) { return 0.299 * c.r + 0.587 * c.g + 0.114 * c.b; }
-
 struct BodyRay {
   int index = 0;  // along the outline
   Vec2 from{0, 0}, to{0, 0};
@@ -53,13 +51,7 @@ cv::Mat body_mask(const Context& ctx, const Face& face) {
   if (face.pixels == 0) return {};
   const int w = ctx.labels.width(), h = ctx.labels.height();
   const Options& o = *ctx.options;
-  cv::Mat open(h, w, CV_8U, cv::Scalar(0));
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const Rgba& c = ctx.image->at(x, y);
-      if (ctx.labels.at(x, y) == 0 && c.a > 0 && luma(c) >= o.dark_luma)
-        open.at<std::uint8_t>(y, x) = 1;
-    }
+  const cv::Mat open = open_pixels(ctx);
   cv::Mat components;
   const int count = cv::connectedComponents(open, components, 4, CV_32S);
   // The paper: the open area with most pixels on the image's border (the

@@ -41,6 +41,19 @@ struct FaceRun {
 
 }  // namespace
 
+cv::Mat open_pixels(const Context& ctx) {
+  const int w = ctx.labels.width(), h = ctx.labels.height();
+  const Options& o = *ctx.options;
+  cv::Mat open(h, w, CV_8U, cv::Scalar(0));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Rgba& c = ctx.image->at(x, y);
+      if (ctx.labels.at(x, y) == 0 && c.a > 0 && luma(c) >= o.dark_luma)
+        open.at<std::uint8_t>(y, x) = 1;
+    }
+  return open;
+}
+
 Face find_face(const Context& ctx) {
   Face face;
   const int w = ctx.labels.width(), h = ctx.labels.height();
@@ -55,13 +68,7 @@ Face find_face(const Context& ctx) {
   // line lets the area run into the neck, the body or the paper.
   const double radius = 0.5 * std::max(hair.width, hair.height);
   const Options& o = *ctx.options;
-  cv::Mat open(h, w, CV_8U, cv::Scalar(0));
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const Rgba& c = ctx.image->at(x, y);
-      if (ctx.labels.at(x, y) == 0 && c.a > 0 && luma(c) >= o.dark_luma)
-        open.at<std::uint8_t>(y, x) = 1;
-    }
+  const cv::Mat open = open_pixels(ctx);
   // Seed: the open pixel nearest the head centre, within a third of the reach.
   const int hx = static_cast<int>(std::floor(ctx.head.x()));
   const int hy = static_cast<int>(std::floor(ctx.head.y()));

@@ -21,6 +21,11 @@ struct Face {
 };
 Face find_face(const Context& ctx);
 
+// CV_8U, image size: 1 where no region lies and the drawing is neither
+// transparent nor dark — what the face, the neck, the body and the paper
+// are made of (find_face and body_mask split it into areas).
+cv::Mat open_pixels(const Context& ctx);
+
 // A pair of back-hair pieces joined across the face: cost (lower is surer)
 // and the completed area (the face between their bordering outlines).
 struct FaceJoin {

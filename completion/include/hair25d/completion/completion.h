@@ -88,8 +88,8 @@ struct CompletedStrand {
   std::vector<int> regions;  // source region ids, sorted
   // Crop of the image: 0 outside, 1 visible (the strand's own pixels), 2 completed.
   LabelMap mask;
-  Eigen::Vector2i origin{0, 0};   // image pixel of mask(0, 0)
-  Polyline outline;               // the completed shape, one closed polygon, pixels
+  Eigen::Vector2i origin{0, 0};  // image pixel of mask(0, 0)
+  Polyline outline;              // the completed shape, one closed polygon, pixels
   // The same without the drawn rim the strand carries beyond its regions
   // (their outline's anti-aliased edge, converging lines at a point): the
   // shape its skeleton follows, free of the rim's one-pixel spurs.
