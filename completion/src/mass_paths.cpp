@@ -111,8 +111,10 @@ std::vector<Landing> paths_between(const Context& ctx, int a, int b, const std::
   std::vector<int> origin(static_cast<std::size_t>(w) * h, -1), steps(origin.size(), 0);
   std::vector<std::uint8_t> zeros(origin.size(), 0), crossed(origin.size(), 0);
   std::deque<int> queue;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
+  // Seeds in the box's row order; a's pixels lie in its own box.
+  const cv::Rect own = (ctx.regions.at(a).box & box) - box.tl();
+  for (int y = own.y; y < own.y + own.height; ++y)
+    for (int x = own.x; x < own.x + own.width; ++x)
       if (ctx.labels.at(x + box.x, y + box.y) == a) {
         const int i = y * w + x;
         origin[i] = i;
