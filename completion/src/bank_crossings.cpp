@@ -39,6 +39,21 @@ std::vector<BankRay> landing_next_to(const std::vector<BankRay>& hits, const Edg
 
 }  // namespace
 
+std::optional<std::pair<Vec2, Vec2>> outward_ray(const Context& ctx,
+                                                 const std::vector<cv::Point>& contour, int i,
+                                                 int id) {
+  const int n = static_cast<int>(contour.size());
+  const cv::Point& ahead = contour[(i + 3) % n];
+  const cv::Point& behind = contour[(i - 3 + n) % n];
+  const Vec2 t(ahead.x - behind.x, ahead.y - behind.y);
+  if (t.norm() < 1.0) return std::nullopt;
+  Vec2 normal(-t.y(), t.x());
+  normal.normalize();
+  const Vec2 p(contour[i].x + 0.5, contour[i].y + 0.5);
+  if (ctx.label(p + 2.0 * normal) == id) normal = -normal;
+  return std::make_pair(p, normal);
+}
+
 std::vector<Polyline> ray_bands(const std::vector<BankRay>& rays) {
   std::vector<Polyline> out;
   std::size_t k = 0;
@@ -323,13 +338,9 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tone
     const int n = static_cast<int>(c.size());
     if (n < 8) continue;
     for (int i = 0; i < n; i += 2) {
-      const Vec2 t(c[(i + 3) % n].x - c[(i - 3 + n) % n].x,
-                   c[(i + 3) % n].y - c[(i - 3 + n) % n].y);
-      if (t.norm() < 1.0) continue;
-      Vec2 normal(-t.y(), t.x());
-      normal.normalize();
-      const Vec2 p(c[i].x + 0.5, c[i].y + 0.5);
-      if (ctx.label(p + 2.0 * normal) == id) normal = -normal;
+      const auto leaving = outward_ray(ctx, c, i, id);
+      if (!leaving) continue;
+      const auto& [p, normal] = *leaving;
       // The ray leaves the piece into a region above it, crosses front hair
       // only, and lands on the first other piece, which the region it leaves
       // last must lie above (the occluders at both cuts). Strands of the fan

@@ -5,8 +5,10 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "context.h"
@@ -65,6 +67,14 @@ BankCrossings cross_occluders(const Context& ctx, const Edge& edge);
 // Runs of consecutive rays (index along the outline within 4) as closed
 // polygons: starts, then ends back.
 std::vector<Polyline> ray_bands(const std::vector<BankRay>& rays);
+
+// Where a ray leaves region `id` at pixel `contour[i]` of its outline: the
+// pixel's centre and the outward unit normal (across the chord from the
+// point 3 before to the point 3 after, turned away from the region); none
+// where that chord is shorter than a pixel.
+std::optional<std::pair<Vec2, Vec2>> outward_ray(const Context& ctx,
+                                                 const std::vector<cv::Point>& contour, int i,
+                                                 int id);
 
 struct BankJoin {
   double share = 0.0;  // min over both edges of the share of rays landing next to the other

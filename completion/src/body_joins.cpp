@@ -109,13 +109,9 @@ std::vector<MassJoin> body_join_candidates(const Context& ctx, const Face& drawn
     const int n = static_cast<int>(c.size());
     if (n < 8) continue;
     for (int i = 0; i < n; i += 2) {
-      const Vec2 t(c[(i + 3) % n].x - c[(i - 3 + n) % n].x,
-                   c[(i + 3) % n].y - c[(i - 3 + n) % n].y);
-      if (t.norm() < 1.0) continue;
-      Vec2 normal(-t.y(), t.x());
-      normal.normalize();
-      const Vec2 p(c[i].x + 0.5, c[i].y + 0.5);
-      if (ctx.label(p + 2.0 * normal) == id) normal = -normal;
+      const auto leaving = outward_ray(ctx, c, i, id);
+      if (!leaving) continue;
+      const auto& [p, normal] = *leaving;
       BodyRay ray;
       double line = 0.0, neck = 0.0;
       for (double s = 1.0; s <= reach; s += 0.7) {
