@@ -53,6 +53,18 @@ void paint_back_sliver_and_strand(Drawing& d) {
       d, [](double x, double y) { return x > 135 && x < 177 && y > 10 && y < 200; }, kFan, 3);
 }
 
+// The same over a tail 5 hanging from under the back hair 1, with a side
+// lock 6 lying on 1 and on the tail.
+Drawing back_tail_and_lock() {
+  Drawing d = blank(300, 270);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 80 && y > 150 && y < 255; }, kBack, 5);
+  paint_back_sliver_and_strand(d);
+  paint(
+      d, [](double x, double y) { return x > 70 && x < 105 && y > 20 && y < 250; }, kFan, 6);
+  return d;
+}
+
 // The same with strand 4 lying on the sliver only.
 Drawing back_hair_and_sliver() {
   Drawing d = blank(300, 210);
@@ -176,12 +188,7 @@ TEST(PathJoins, BackHairLyingOnAHangingTailIsAPiece) {
   // above a region, so it was front hair and no path piece (6 lying on the
   // back keeps tailed_hair from taking 5 as a tail): the tail, covered by
   // two regions, hangs from under it.
-  Drawing d = blank(300, 270);
-  paint(
-      d, [](double x, double y) { return x > 40 && x < 80 && y > 150 && y < 255; }, kBack, 5);
-  paint_back_sliver_and_strand(d);
-  paint(
-      d, [](double x, double y) { return x > 70 && x < 105 && y > 20 && y < 250; }, kFan, 6);
+  Drawing d = back_tail_and_lock();
   d.relations = {below(1, 3), below(2, 3), below(5, 1), below(5, 6), below(1, 6)};
   const Result r = run(d);
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1, 2}));
@@ -196,12 +203,7 @@ TEST(PathJoins, BackHairRestingOnATailThreeRegionsCoverIsAPiece) {
   // front hair, no path piece. Back 1 touches the tail along a few per cent
   // of its outline (it rests on the tail's top end), so the tail hangs from
   // under it.
-  Drawing d = blank(300, 270);
-  paint(
-      d, [](double x, double y) { return x > 40 && x < 80 && y > 150 && y < 255; }, kBack, 5);
-  paint_back_sliver_and_strand(d);
-  paint(
-      d, [](double x, double y) { return x > 70 && x < 105 && y > 20 && y < 250; }, kFan, 6);
+  Drawing d = back_tail_and_lock();
   paint(
       d, [](double x, double y) { return x > 30 && x < 50 && y > 90 && y < 262; }, kFan, 7);
   d.relations = {below(1, 3), below(2, 3), below(5, 1), below(5, 6),
