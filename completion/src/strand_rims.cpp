@@ -24,22 +24,6 @@ bool differs(const Rgba& a, const Rgba& b) {
          kShownStep;
 }
 
-// For each strand, which labels are drawn above one of its regions.
-std::vector<std::vector<std::uint8_t>> occluder_tables(const Context& ctx,
-                                                       const std::vector<std::vector<int>>& groups,
-                                                       int labels) {
-  std::vector<std::vector<std::uint8_t>> tables(groups.size(),
-                                                std::vector<std::uint8_t>(labels, 0));
-  for (std::size_t g = 0; g < groups.size(); ++g)
-    for (int m : groups[g]) {
-      auto it = ctx.above.find(m);
-      if (it == ctx.above.end()) continue;
-      for (int up : it->second)
-        if (up > 0 && up < labels) tables[g][static_cast<std::size_t>(up)] = 1;
-    }
-  return tables;
-}
-
 // Adds `points` (image pixels) to `s` as visible pixels drawn as they are,
 // growing its box to hold them, and traces its outline again.
 void carry(const Image& image, const std::vector<cv::Point>& points, CompletedStrand* s) {
@@ -88,7 +72,9 @@ void carry_rims(const Context& ctx, const cv::Mat& holes,
   auto group = [&](int label) {
     return label > 0 && label < labels_end ? group_of[static_cast<std::size_t>(label)] : -1;
   };
-  const auto occluders = occluder_tables(ctx, groups, labels_end);
+  std::vector<Occluders> occluders;
+  occluders.reserve(groups.size());
+  for (const auto& members : groups) occluders.emplace_back(ctx, members);
 
   // The region reached first from each pixel the background takes, going
   // through such pixels (4-connected, breadth first): whatever the hole
@@ -127,11 +113,11 @@ void carry_rims(const Context& ctx, const cv::Mat& holes,
   const int reach = o.occluder_reach + o.outline_reach;
   auto occluding_group = [&](int x, int y, int g) {
     int best = -1, best_d = std::numeric_limits<int>::max();
-    const auto& above_g = occluders[static_cast<std::size_t>(g)];
+    const Occluders& above_g = occluders[static_cast<std::size_t>(g)];
     for (int dy = -reach; dy <= reach; ++dy)
       for (int dx = -reach; dx <= reach; ++dx) {
         const int u = ctx.label(x + dx, y + dy);
-        if (u <= 0 || u >= labels_end || !above_g[static_cast<std::size_t>(u)]) continue;
+        if (!above_g(u)) continue;
         const int d = dx * dx + dy * dy;
         if (d < best_d && group(u) >= 0 && group(u) != g) best_d = d, best = group(u);
       }
