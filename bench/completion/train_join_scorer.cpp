@@ -8,7 +8,7 @@
 //            separate right from wrong in the band on every file, and writes
 //            the weights as join_scorer_weights.cpp.
 // Training seeds must be disjoint from the evaluation seeds (101–116,
-// 201–216) and the annotated cases; docs/completion.md gives the commands.
+// 201–216, 301-316, 401–416) and the annotated cases; docs/completion.md gives the commands.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -38,11 +38,14 @@ struct Row {
   JoinFeatures f{};
 };
 
-void collect_case(const AnnotatedCase& c, const std::string& set, std::FILE* out, int* rows) {
+void collect_case(const AnnotatedCase& c, const std::string& set, double band_high, std::FILE* out,
+                  int* rows) {
   completion::Options o;
   o.inpaint_strands = false;
   o.inpaint_background = false;
+  o.join_scorer.enabled = false;
   o.join_scorer.record = true;
+  o.join_scorer.band_high = band_high;
   const completion::Result r =
       completion::complete_strands(completion::test::input_from_case(c), o);
   std::map<int, int> truth;
@@ -147,13 +150,15 @@ int main(int argc, char** argv) {
   collect->add_option("--width", width)->check(CLI::Range(64, 8192));
   collect->add_option("--height", height)->check(CLI::Range(64, 8192));
   collect->add_option("--strands", strands)->check(CLI::Range(1, 400));
+  double record_high = completion::JoinScorerOptions{}.band_high;
+  collect->add_option("--band-high", record_high, "Record candidates up to this hand cost");
   collect->add_option("--shading", shadings, "flat, two-tone, gradient, screentone or all")
       ->check(CLI::IsMember({"flat", "two-tone", "gradient", "screentone", "all"}));
 
   auto* train = app.add_subcommand("train", "Train on CSVs, report, write the weights");
   std::vector<std::string> train_csv, eval_csv;
   std::string out;
-  double win_low = 1.0, win_high = 3.2, low = 1.4, high = 3.2, limit = 2.4, threshold = 0.5;
+  double win_low = 1.0, win_high = 4.0, low = 1.4, high = 4.0, limit = 2.4, threshold = 0.5;
   completion::JoinTrainingOptions topt;
   train->add_option("--train", train_csv, "Training CSVs")->required();
   train->add_option("--eval", eval_csv, "Evaluation CSVs (reported per set)");
@@ -191,7 +196,7 @@ int main(int argc, char** argv) {
       int rows = 0;
       if (!annotated.empty()) {
         for (const auto& folder : find_annotated_cases(annotated))
-          collect_case(read_annotated_case(folder), set, f, &rows);
+          collect_case(read_annotated_case(folder), set, record_high, f, &rows);
       } else {
         const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
                                             generator::Shading::kGradient,
@@ -208,7 +213,7 @@ int main(int argc, char** argv) {
             g.shading = kinds[s];
             AnnotatedCase c = generator::generate_case(g);
             c.name = std::string(names[s]) + "-" + std::to_string(seed + k);
-            collect_case(c, set, f, &rows);
+            collect_case(c, set, record_high, f, &rows);
           }
       }
       std::fclose(f);

@@ -159,6 +159,15 @@ JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, con
   f[31] = ra != ctx.regions.end() && rb != ctx.regions.end()
               ? static_cast<float>((ra->second.colour - rb->second.colour).norm() / 90.0)
               : 0.0f;
+  // Session 14: the paint and tone terms the hand cost gained since the
+  // scorer was first trained (each in the hand cost too, f[9], but the sum
+  // hides which of them moved it).
+  f[32] = static_cast<float>(std::min(t.paint_step, 60.0) / 30.0);
+  f[33] = t.flat_paint ? 1.0f : 0.0f;
+  f[34] = t.shading_continues ? 1.0f : 0.0f;
+  f[35] = t.rare_paint ? 1.0f : 0.0f;
+  f[36] = static_cast<float>(std::clamp(t.tone_cost, -3.0, 3.0));
+  f[37] = t.one_sided ? 1.0f : 0.0f;
   return f;
 }
 

@@ -22,6 +22,13 @@ struct JoinTerms {
   double cover = 1;  // share of the patch under occluders
   double hand_cost = 0;
   double gap = 0, wide = 0;  // pixels
+  // Session 14: the paint and tone terms the hand cost gained (joins.cpp).
+  double paint_step = 0;           // `PaintStep::step`, RGB
+  bool flat_paint = false;         // compared as flat paint
+  bool shading_continues = false;  // a gradient carries on across the gap
+  bool rare_paint = false;         // one flat paint few regions share
+  double tone_cost = 0;            // `tone_join_cost` (screentone)
+  bool one_sided = false;          // a nub's tangents left out
 };
 
 // Every input but the rivals' (indices 27–30, filled by `add_rival_features`).

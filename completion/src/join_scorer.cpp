@@ -14,15 +14,44 @@
 namespace hair25d::completion {
 namespace {
 
-constexpr const char* kNames[kJoinFeatures] = {
-    "mean_angle",       "worst_angle",    "colour",         "colour_step",
-    "width_change",     "gap_per_width",  "bulge",          "no_common_occluder",
-    "uncovered",        "hand_cost",      "log_width",      "log_gap",
-    "profile_luma",     "profile_rgb",    "profile_corr",   "profile_spread",
-    "texture",          "mid_above_both", "mid_unlabelled", "mid_above_one",
-    "mid_occluders",    "back_pieces",    "edges_min",      "edges_max",
-    "radial",           "elongation_min", "elongation_max", "rival_margin_min",
-    "rival_margin_max", "rivals_min",     "rivals_max",     "region_colour"};
+constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
+                                               "worst_angle",
+                                               "colour",
+                                               "colour_step",
+                                               "width_change",
+                                               "gap_per_width",
+                                               "bulge",
+                                               "no_common_occluder",
+                                               "uncovered",
+                                               "hand_cost",
+                                               "log_width",
+                                               "log_gap",
+                                               "profile_luma",
+                                               "profile_rgb",
+                                               "profile_corr",
+                                               "profile_spread",
+                                               "texture",
+                                               "mid_above_both",
+                                               "mid_unlabelled",
+                                               "mid_above_one",
+                                               "mid_occluders",
+                                               "back_pieces",
+                                               "edges_min",
+                                               "edges_max",
+                                               "radial",
+                                               "elongation_min",
+                                               "elongation_max",
+                                               "rival_margin_min",
+                                               "rival_margin_max",
+                                               "rivals_min",
+                                               "rivals_max",
+                                               "region_colour",
+                                               "paint_step",
+                                               "flat_paint",
+                                               "shading_continues",
+                                               "rare_paint",
+                                               "tone_cost",
+                                               "one_sided"};
 
 std::string num(double v) {
   std::ostringstream s;

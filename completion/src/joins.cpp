@@ -418,9 +418,11 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         // what a person follows under the occluder.
         if (step.shading_continues) cost -= kShadingContinuesBonus;
         // One paint that few regions share carries on across the gap.
-        if (rare_paint(a.region, b.region, step)) cost -= kRarePaintBonus;
+        const bool rare = rare_paint(a.region, b.region, step);
+        if (rare) cost -= kRarePaintBonus;
         // Screentone: the colour says nothing there, the dots' tone does.
-        cost += tone_join_cost(tones, a.region, b.region);
+        const double tone_cost = tone_join_cost(tones, a.region, b.region);
+        cost += tone_cost;
         if (cost <= limit) {  // before the costly coverage raster
           join.patch = join_patch(a, b);
           int hidden = 0;
@@ -447,7 +449,13 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                               cover,
                               cost,
                               gap,
-                              wide};
+                              wide,
+                              step.step,
+                              step.flat,
+                              step.shading_continues,
+                              rare,
+                              tone_cost,
+                              one_sided.has_value()};
         }
       }
       // Across the banks of one occluder the rays themselves are the hidden

@@ -125,6 +125,67 @@ TEST(JoinScorer, ProfileTellsABandFlippedAcrossTheStrand) {
   EXPECT_LT(f->features[feature("profile_corr")], -0.9);
 }
 
+// A horizontal strand (y 80..110) lying on a wide back region 4, cut by a
+// vertical band 3 (x 140..180) over it: the left piece 1 in kPiece, the right
+// piece 2 in `right`, both flat paint. Five squares 5..9 lie on region 4
+// below the band, squares 5..7 in `squares`, 8 and 9 in paints of their own:
+// nine flat-painted regions, enough for the rare-paint count (joins.cpp).
+constexpr Rgba kPiece{200, 150, 110, 255};
+Drawing flat_strand(Rgba right, Rgba squares) {
+  Drawing d = blank(320, 200);
+  paint(
+      d, [](double x, double y) { return x > 5 && x < 315 && y > 5 && y < 195; },
+      Rgba{120, 90, 70, 255}, 4);
+  paint(
+      d, [](double x, double y) { return x > 30 && x < 160 && y > 80 && y < 110; }, kPiece, 1);
+  paint(
+      d, [](double x, double y) { return x >= 160 && x < 290 && y > 80 && y < 110; }, right, 2);
+  paint(
+      d, [](double x, double y) { return x > 140 && x < 180 && y > 40 && y < 150; },
+      Rgba{150, 110, 80, 255}, 3);
+  const Rgba own[2] = {Rgba{90, 140, 200, 255}, Rgba{120, 200, 120, 255}};
+  for (int k = 0; k < 5; ++k)
+    paint(
+        d,
+        [k](double x, double y) {
+          return x > 20 + 60 * k && x < 50 + 60 * k && y > 160 && y < 190;
+        },
+        k < 3 ? squares : own[k - 3], 5 + k);
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3),
+                 below(4, 5), below(4, 6), below(4, 7), below(4, 8), below(4, 9)};
+  return d;
+}
+
+TEST(JoinScorer, FeaturesReadThePaintTermsOfTheHandCost) {
+  // Session 14: the paint and tone terms the hand cost gained after the
+  // scorer was first trained are inputs of their own.
+  const Rgba other{60, 60, 160, 255};
+  const Result same = recorded(flat_strand(kPiece, other), Vec2(160, 400));
+  const Result off = recorded(flat_strand(Rgba{201, 150, 110, 255}, other), Vec2(160, 400));
+  const Result shared = recorded(flat_strand(kPiece, kPiece), Vec2(160, 400));
+  const JoinCandidate* s = candidate(same, 1, 2);
+  const JoinCandidate* o = candidate(off, 1, 2);
+  const JoinCandidate* h = candidate(shared, 1, 2);
+  ASSERT_NE(s, nullptr);
+  ASSERT_NE(o, nullptr);
+  ASSERT_NE(h, nullptr);
+  for (const JoinCandidate* c : {s, o, h}) {
+    EXPECT_EQ(c->features[feature("flat_paint")], 1.0f);
+    EXPECT_EQ(c->features[feature("shading_continues")], 0.0f);
+    EXPECT_EQ(c->features[feature("tone_cost")], 0.0f);
+    EXPECT_EQ(c->features[feature("one_sided")], 0.0f);
+  }
+  // One paint steps 0; 1 RGB off steps 1 RGB (/ 30).
+  EXPECT_NEAR(s->features[feature("paint_step")], 0.0, 0.005);
+  EXPECT_NEAR(o->features[feature("paint_step")], 1.0 / 30.0, 0.005);
+  // The pieces' paint is theirs alone (rare) unless three squares share it;
+  // rarity is worth kRarePaintBonus (1.5) of the hand cost, nothing else
+  // about the pair changes.
+  EXPECT_EQ(s->features[feature("rare_paint")], 1.0f);
+  EXPECT_EQ(h->features[feature("rare_paint")], 0.0f);
+  EXPECT_NEAR(h->hand_cost - s->hand_cost, 1.5, 1e-6);
+}
+
 TEST(JoinScorer, FeaturesDoNotChangeUnderMirrorOrTransposition) {
   const Drawing d = banded(false);
   const Result base = recorded(d, Vec2(150, 300));
@@ -173,7 +234,11 @@ TEST(JoinScorer, EnabledScorerDecidesTheBandOnly) {
         else
           EXPECT_EQ(c->cost, c->hand_cost);
         EXPECT_EQ(c->chosen, c->cost <= 2.4);
-        EXPECT_EQ(r.joins, c->chosen ? 1 : 0);
+        // The two pieces lie above nothing (back hair): when the strand join
+        // is refused, the back hair's own joins (mass_joins.cpp) may still
+        // join them (session 14's weights, p 0.993 against threshold 0.9999).
+        if (c->chosen) EXPECT_EQ(r.joins, 1);
+        EXPECT_LE(r.joins, 1);
         for (const JoinCandidate& other : r.join_candidates)
           if (other.hand_cost > 1.8) {
             EXPECT_EQ(other.probability, -1.0);
