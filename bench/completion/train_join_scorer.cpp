@@ -8,7 +8,8 @@
 //            separate right from wrong in the band on every file, and writes
 //            the weights as join_scorer_weights.cpp.
 // Training seeds must be disjoint from the evaluation seeds (101–116,
-// 201–216, 301-316, 401–416) and the annotated cases; docs/completion.md gives the commands.
+// 201–216, 301–316, 401–416) and the annotated cases; docs/completion.md gives the
+// commands.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
