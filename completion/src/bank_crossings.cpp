@@ -322,6 +322,24 @@ TailedHair tailed_hair(const Context& ctx, const std::set<int>& front) {
   return out;
 }
 
+void untail_back_paint(const Context& ctx, const std::set<int>& front, RegionCels& cels,
+                       TailedHair* tailed) {
+  if (tailed->tails.empty() || !cels.cel_drawing()) return;
+  // The back: pieces above no region and back hair over tails, no tail.
+  std::vector<int> back;
+  for (const auto& [id, info] : ctx.regions)
+    if ((!front.count(id) || tailed->over_tails.count(id)) && !tailed->tails.count(id))
+      back.push_back(id);
+  std::vector<int> painted;
+  for (int t : tailed->tails)
+    for (int b : back)
+      if (cels.judge(t, b).same) {
+        painted.push_back(t);
+        break;
+      }
+  for (int t : painted) tailed->tails.erase(t);
+}
+
 std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tones,
                                            RegionFields& fields) {
   const std::set<int> front = ctx.front();

@@ -196,6 +196,15 @@ struct TailedHair {
   std::set<int> over_tails, tails;
 };
 TailedHair tailed_hair(const Context& ctx, const std::set<int>& front);
+class RegionCels;
+// On a cel drawing, a tail painted as the back hair (`RegionCels::judge`
+// same as a back piece: a region above no region, or back hair over tails,
+// that is no tail) is a piece of the back seen beside a strand lying on it
+// (two-tone 106's 24 and 114's 25, each under one `behind` strand lying on
+// back hair only), no tail: it leaves `tailed->tails` (session 14). The
+// generator paints each tail in its own colour (over 3 RGB off the back).
+void untail_back_paint(const Context& ctx, const std::set<int>& front, RegionCels& cels,
+                       TailedHair* tailed);
 // Candidates, surest (most rays both ways) first.
 // `tones` and `fields` (join_paint.h) are the drawing's, shared by the
 // join passes (each measures a region once).

@@ -11,6 +11,7 @@
 #include "bank_crossings.h"
 #include "face_joins.h"
 #include "join_paint.h"
+#include "raster.h"
 
 namespace hair25d::completion::detail {
 namespace {
@@ -37,6 +38,8 @@ constexpr double kMaxFarBodyShare = 0.75;
 constexpr double kMaxBodyColourStep = 10.0;
 constexpr double kMaxBodyFieldStep = 1.0;
 constexpr double kMaxBodyCelStep = 1.0;
+// Ink, not body: luma under this share of Options::dark_luma.
+constexpr double kInkShare = 0.5;
 
 struct BodyRay {
   int index = 0;  // along the outline
@@ -51,7 +54,19 @@ cv::Mat body_mask(const Context& ctx, const Face& face) {
   if (face.pixels == 0) return {};
   const int w = ctx.labels.width(), h = ctx.labels.height();
   const Options& o = *ctx.options;
-  const cv::Mat open = open_pixels(ctx);
+  // Open pixels as the face's (`open_pixels`), but the neck and body may be
+  // painted darker than `dark_luma` (the generator's clothes have HSV value
+  // 0.3-0.9, so about half of them lie below it, and the neck between two
+  // back pieces was no body: two-tone 106): only ink, under
+  // kInkShare x dark_luma, parts the areas here. The drawn lines' cores
+  // (the generator's value 0.03-0.12) are darker still.
+  const int ink = static_cast<int>(kInkShare * o.dark_luma);
+  cv::Mat open(h, w, CV_8U, cv::Scalar(0));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Rgba& c = ctx.image->at(x, y);
+      if (ctx.labels.at(x, y) == 0 && c.a > 0 && luma(c) >= ink) open.at<std::uint8_t>(y, x) = 1;
+    }
   cv::Mat components;
   const int count = cv::connectedComponents(open, components, 4, CV_32S);
   // The paper: the open area with most pixels on the image's border (the
@@ -86,7 +101,8 @@ std::vector<MassJoin> body_join_candidates(const Context& ctx, const Face& drawn
                                            RegionFields& fields, cv::Mat* body_out) {
   std::vector<MassJoin> out;
   if (drawn_face.pixels == 0) return out;
-  const TailedHair tailed = tailed_hair(ctx, ctx.front());
+  TailedHair tailed = tailed_hair(ctx, ctx.front());
+  untail_back_paint(ctx, ctx.front(), fields.cels(), &tailed);
   std::set<int> pieces;
   for (const auto& [id, info] : ctx.regions)
     if (!front.count(id) && !tailed.tails.count(id)) pieces.insert(id);

@@ -242,7 +242,9 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // A tail hangs from under one or two pieces; a lowest piece under more
   // (the tail test also takes back hair covered only by strands lying on
   // nothing but back hair: screentone 114 region 20, under five) is kept.
-  for (int t : detail::tailed_hair(ctx, ctx.front()).tails)
+  detail::TailedHair tailed = detail::tailed_hair(ctx, ctx.front());
+  detail::untail_back_paint(ctx, ctx.front(), fields.cels(), &tailed);
+  for (int t : tailed.tails)
     if (ctx.regions.at(t).occluders.size() <= 2) front.insert(t);
   for (const detail::FaceJoin& j : detail::face_join_candidates(ctx, face, front)) {
     if (!try_join(j.region_a, j.region_b)) continue;

@@ -80,6 +80,35 @@ struct Landing {
   Vec2 from{0, 0}, to{0, 0};
 };
 
+// |cos| of the angle between `dir` and region `id`'s long axis (second
+// moments of its outline); 1 for a piece less than twice as long as wide.
+double axis_cos(const Context& ctx, int id, const Vec2& dir) {
+  const std::vector<cv::Point>& c = ctx.regions.at(id).contour;
+  if (c.size() < 3 || dir.norm() == 0) return 1.0;
+  const cv::Moments m = cv::moments(c);
+  if (m.m00 <= 0) return 1.0;
+  const double a = m.mu20 / m.m00, b = m.mu11 / m.m00, d = m.mu02 / m.m00;
+  const double mean = 0.5 * (a + d), root = std::sqrt(0.25 * (a - d) * (a - d) + b * b);
+  const double large = mean + root, small = mean - root;
+  if (large < 4.0 * std::max(small, 1e-9)) return 1.0;
+  const double theta = 0.5 * std::atan2(2.0 * b, a - d);
+  const Vec2 axis(std::cos(theta), std::sin(theta));
+  return std::abs(axis.dot(dir.normalized()));
+}
+
+// Rare cel paint (session 14): two pieces whose flat colours lie within
+// kMaxRareCelStep RGB (`RegionCels::step`) of each other and of no third
+// region's. Two-tone / flat 101-116: sharing with one other region allowed
+// 1.000 / 0.833 and 0.980 / 0.926 (flat 102: three regions of one paint,
+// two strands); step 1.0: 1.000 / 0.803, 0.992 / 0.908 (more regions share).
+constexpr double kMaxRareCelStep = 0.5;
+// The mean path at most this share of the path search's reach (half the
+// hair's larger side): right candidates 6-92 px, the wrong one 217 px of 268.
+constexpr double kMaxRarePathReach = 0.5;
+// The paths' mean direction within 60 degrees of the long axis of at least
+// one piece (a piece less than twice as long as wide has every direction).
+constexpr double kMinAxisCos = 0.5;
+
 // Share of region `id`'s outline within kTouchReach px of region `other`.
 double outline_share(const Context& ctx, int id, int other) {
   const std::vector<cv::Point>& c = ctx.regions.at(id).contour;
@@ -379,7 +408,8 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
   if (!face.empty())
     cv::dilate(face, near_face, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(7, 7)));
   const std::set<int> front = ctx.front();
-  const TailedHair tailed = tailed_hair(ctx, front);
+  TailedHair tailed = tailed_hair(ctx, front);
+  untail_back_paint(ctx, front, fields.cels(), &tailed);
   // Back hair lying on hair that hangs from under it (tails, strands hanging
   // behind it: lowest regions covered by at most kMaxHangingCover regions)
   // lies above some region, so it is front hair by its relations, and was
@@ -499,6 +529,66 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
   std::sort(out.begin(), out.end(), [](const MassJoin& x, const MassJoin& y) {
     return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
   });
+  // Cel drawings: two pieces of a strand (one of them at least lying above
+  // some region) in one flat paint that no other region shares, linked
+  // under the regions lying above both (session 14). The generator paints
+  // each strand in its own colour, so one rare paint on both sides of the
+  // strands lying over them is what a person follows, whatever the
+  // pieces' cut edges say (tangents turned away at a root, a cap sliver
+  // between bangs, no edge pair at all: the strand joins' open links).
+  // Two guards: a strand runs on along its length, so the paths must run
+  // along at least one piece (two bangs of one paint side by side, flat
+  // 115); and they stay within half the back hair's reach (the cap joined
+  // to a side lock's tip of its paint far below, two-tone 108).
+  if (fields.cels().cel_drawing()) {
+    RegionCels& cels = fields.cels();
+    std::vector<int> ids;
+    for (const auto& [id, info] : ctx.regions) ids.push_back(id);
+    std::map<int, int> sharing;
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      for (std::size_t k = i + 1; k < ids.size(); ++k)
+        if (cels.step(ids[i], ids[k]) <= kMaxRareCelStep) ++sharing[ids[i]], ++sharing[ids[k]];
+    std::vector<MassJoin> rare;
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      for (std::size_t k = i + 1; k < ids.size(); ++k) {
+        const int a = ids[i], b = ids[k];
+        if (!front.count(a) && !front.count(b)) continue;
+        if (sharing[a] != 1 || sharing[b] != 1) continue;
+        if (ctx.is_above(a, b) || ctx.is_above(b, a)) continue;
+        if (one_strand && one_strand(a, b)) continue;
+        const double step = cels.step(a, b);
+        if (step > kMaxRareCelStep) continue;
+        std::set<int> common;
+        for (int u : above(a))
+          if (above(b).count(u)) common.insert(u);
+        if (common.empty()) continue;
+        const std::vector<Landing> landings = crossing_paths(ctx, a, b, common, reach);
+        if (static_cast<int>(landings.size()) < kMinLandings) continue;
+        Vec2 direction(0, 0);
+        double length = 0.0;
+        for (const Landing& l : landings) {
+          const Vec2 d = l.to - l.from;
+          length += d.norm();
+          if (d.norm() > 0) direction += d.normalized();
+        }
+        length /= static_cast<double>(landings.size());
+        if (length > kMaxRarePathReach * reach) continue;
+        if (std::max(axis_cos(ctx, a, direction), axis_cos(ctx, b, direction)) < kMinAxisCos)
+          continue;
+        MassJoin j;
+        j.region_a = a;
+        j.region_b = b;
+        j.rays = static_cast<int>(landings.size());
+        j.colour = step;
+        j.bands = path_bands(landings);
+        rare.push_back(std::move(j));
+      }
+    std::sort(rare.begin(), rare.end(), [](const MassJoin& x, const MassJoin& y) {
+      return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
+    });
+    out.insert(out.end(), std::make_move_iterator(rare.begin()),
+               std::make_move_iterator(rare.end()));
+  }
   // Screentone: pieces of a strand crossed by another strand (a bang under
   // a bang, a side lock under a bang) are front hair, lying above some
   // region, and their dots are the one cue they carry. Two such pieces of
