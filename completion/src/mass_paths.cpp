@@ -102,6 +102,11 @@ double axis_cos(const Context& ctx, int id, const Vec2& dir) {
 // 1.000 / 0.833 and 0.980 / 0.926 (flat 102: three regions of one paint,
 // two strands); step 1.0: 1.000 / 0.803, 0.992 / 0.908 (more regions share).
 constexpr double kMaxRareCelStep = 0.5;
+// Rarity needs regions to compare with (as joins.cpp's kRarePaintRegions),
+// and screentone drawings are left to the tone: their dots and paper are
+// every toned piece's two flat colours (the tone tests' hand-built pieces
+// of two tones were joined without these two conditions).
+constexpr std::size_t kMinRarePaintRegions = 8;
 // The mean path at most this share of the path search's reach (half the
 // hair's larger side): right candidates 6-92 px, the wrong one 217 px of 268.
 constexpr double kMaxRarePathReach = 0.5;
@@ -540,7 +545,8 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
   // along at least one piece (two bangs of one paint side by side, flat
   // 115); and they stay within half the back hair's reach (the cap joined
   // to a side lock's tip of its paint far below, two-tone 108).
-  if (fields.cels().cel_drawing()) {
+  if (!tones.screentone() && ctx.regions.size() >= kMinRarePaintRegions &&
+      fields.cels().cel_drawing()) {
     RegionCels& cels = fields.cels();
     std::vector<int> ids;
     for (const auto& [id, info] : ctx.regions) ids.push_back(id);
