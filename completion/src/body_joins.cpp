@@ -50,17 +50,17 @@ struct BodyRay {
 
 }  // namespace
 
-cv::Mat body_mask(const Context& ctx, const Face& face) {
+cv::Mat body_mask(const Context& ctx, const Face& face, bool dark_body) {
   if (face.pixels == 0) return {};
   const int w = ctx.labels.width(), h = ctx.labels.height();
   const Options& o = *ctx.options;
-  // Open pixels as the face's (`open_pixels`), but the neck and body may be
-  // painted darker than `dark_luma` (the generator's clothes have HSV value
-  // 0.3-0.9, so about half of them lie below it, and the neck between two
-  // back pieces was no body: two-tone 106): only ink, under
-  // kInkShare x dark_luma, parts the areas here. The drawn lines' cores
-  // (the generator's value 0.03-0.12) are darker still.
-  const int ink = static_cast<int>(kInkShare * o.dark_luma);
+  // Open pixels as the face's (`open_pixels`), but with `dark_body` the neck
+  // and body may be painted darker than `dark_luma` (the generator's clothes
+  // have HSV value 0.3-0.9, so about half of them lie below it, and the neck
+  // between two back pieces was no body: two-tone 106): only ink, under
+  // kInkShare x dark_luma, parts the areas then. The drawn lines' cores (the
+  // generator's value 0.03-0.12) are darker still.
+  const int ink = dark_body ? static_cast<int>(kInkShare * o.dark_luma) : o.dark_luma;
   cv::Mat open(h, w, CV_8U, cv::Scalar(0));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
@@ -108,7 +108,11 @@ std::vector<MassJoin> body_join_candidates(const Context& ctx, const Face& drawn
     if (!front.count(id) && !tailed.tails.count(id)) pieces.insert(id);
   if (pieces.size() < 2) return out;
   cv::Mat& body = *body_out;
-  body = body_mask(ctx, drawn_face);
+  // Dark clothes count on cel drawings, whose paint test is exact
+  // (`RegionCels`): on gradient 201-216 two wrong joins crossed dark
+  // clothes with windows under 10 RGB apart (208: two bangs lying on the
+  // face; 216: a strand lying on the clothes, and the back).
+  body = body_mask(ctx, drawn_face, !tones.screentone() && fields.cels().cel_drawing());
   const cv::Mat& face = drawn_face.mask;
   cv::Rect hair;
   for (const auto& [id, info] : ctx.regions) hair = hair.area() == 0 ? info.box : (hair | info.box);

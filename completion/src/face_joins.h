@@ -51,8 +51,10 @@ std::vector<FaceJoin> face_join_candidates(const Context& ctx, const Face& face,
 // The head, neck and body in front of the back hair (body_joins.cpp): the
 // face and the open (non-hair, non-ink) areas next to its drawn outline,
 // not the paper (the open area with most pixels on the image's border).
-// CV_8U, image size, 1 = body; empty without a face.
-cv::Mat body_mask(const Context& ctx, const Face& face);
+// CV_8U, image size, 1 = body; empty without a face. With `dark_body` the
+// areas darker than Options::dark_luma count too (dark clothes; only ink
+// parts the areas then).
+cv::Mat body_mask(const Context& ctx, const Face& face, bool dark_body = false);
 
 // Back-hair pieces (not in `front`, no tails) seen on both sides of the
 // neck or body: rays from each piece's outline across the body (at least
