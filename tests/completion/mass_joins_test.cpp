@@ -209,6 +209,41 @@ TEST(MassJoins, PiecesOfAnotherScreentoneAreNotJoined) {
   EXPECT_EQ(test::regions_with(r, 1), (std::vector<int>{1}));
 }
 
+// Screentone back hair (1, wide) behind the fan of back_hair_under_fan and a
+// sliver of it (2) seen right of the fan, about 25 px wide: it reaches too
+// little behind the 90 px crossing for the rays' depth rule
+// (kMinMassDepthRatio), as the back hair seen between strands does. Region 1
+// in 3 px dots every 6 px, the sliver in `dot` px dots every `period` px,
+// the fan's strands in 2 px dots every 6 px (so the drawing is screentone).
+Drawing screentone_back_and_sliver(int period, int dot) {
+  Drawing d = blank(340, 200);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 120 && y > 60 && y < 130; }, kBack, 1);
+  paint(
+      d, [](double x, double y) { return x > 195 && x < 230 && y > 66 && y < 128; }, kBack, 2);
+  paint(
+      d, [](double x, double y) { return x > 112 && x < 145 && y > 10 && y < 190; }, kFan, 3);
+  paint(
+      d, [](double x, double y) { return x > 140 && x < 172 && y > 5 && y < 185; }, kFan, 4);
+  paint(
+      d, [](double x, double y) { return x > 168 && x < 205 && y > 15 && y < 195; }, kFan, 5);
+  d.relations = {below(1, 3), below(2, 5), below(3, 4), below(4, 5)};
+  tone(d, 1, 6, 3, 0);
+  tone(d, 2, period, dot, 0);
+  for (int fan : {3, 4, 5}) tone(d, fan, 6, 2, 0);
+  return d;
+}
+
+TEST(MassJoins, ThinSliverOfTheBackHairsScreentoneIsJoined) {
+  // On screentone the tone tells a strand's end from the back hair; a
+  // sliver of one tone need not be wide.
+  EXPECT_EQ(test::regions_with(run(screentone_back_and_sliver(6, 3)), 1), (std::vector<int>{1, 2}));
+  // 2 px dots every 4 px: the dark share of 3 px dots every 6 px (a quarter),
+  // so the windows' colours agree, but the dots are smaller: another tone,
+  // and a thin piece of it stays apart.
+  EXPECT_EQ(test::regions_with(run(screentone_back_and_sliver(4, 2)), 1), (std::vector<int>{1}));
+}
+
 // Path joins (mass_paths.cpp): back hair (1, wide, left) and a sliver of it
 // (2) seen between two strands lying on it (3 over both, 4 over the sliver
 // only): the sliver is too shallow for the rays' depth rule (6 px behind a
