@@ -147,6 +147,11 @@ class RegionTones {
   // Pieces of two tones: masses more than this share apart, or dark shares
   // more than kMinOtherToneStep apart (none of one strand on 101-116).
   static constexpr double kMinOtherMassStep = 0.08;
+  // Pieces of one tone by their cell masses (a piece without a whole dot):
+  // within this share. On generated screentone seeds 101-116 14 of the 31
+  // such pairs of one strand stepped 0.002-0.015, and 4 pairs of two
+  // strands (0.02: 16 and 8, precision 0.950).
+  static constexpr double kMaxSameCellStep = 0.015;
   static constexpr double kMinOtherToneStep = 0.08;
 
   enum class Match { kUnknown, kSame, kOther };
@@ -164,6 +169,19 @@ class RegionTones {
   // with how many dots a small piece cuts, a dot's ink is the same
   // wherever it lies; with the dark share it also fixes the dots' period.
   double dot_mass(int region);
+  // The ink of one dot weighed on the drawing's dot lattice (`lattice`):
+  // pi r^2 for the radius r at which the region's radial profile (the mean
+  // darkness of its pixels 2 px inside it against their distance from the
+  // nearest lattice point) falls through one half; -1 without a lattice, on
+  // a region whose dots do not lie on it, or with too few pixels. A dot cut
+  // by the region's border still shows its profile, so a sliver between
+  // strands (every dot cut) or a dense tone (dots touching: no whole dot)
+  // is weighed as well.
+  double cell_mass(int region);
+  // The step between two pieces' masses (a share of the larger): their dot
+  // masses, else (a piece without a whole dot) their cell masses, else
+  // infinity.
+  double mass_step(int a, int b);
   // The drawing is screentone: a quarter of the regions or more show whole
   // dots (on generated screentone drawings 8-18 of 24-34 regions, on
   // flat, two-tone, gradient and the annotated cases none).
@@ -173,10 +191,32 @@ class RegionTones {
   Match match(int a, int b);
 
  private:
+  // The drawing's square dot lattice, fitted to the whole dots' centres
+  // (the generator's is one for the drawing): its period (px) and angle
+  // (rad, modulo 90°); invalid with too few dots. Its phase is read near
+  // each region (cell_mass).
+  struct Lattice {
+    bool valid = false;
+    double period = 0.0, angle = 0.0;
+  };
+  const Lattice& lattice();
+  // A region's dots must show the lattice's phase this strongly (the
+  // darkness-weighted mean resultant of its pixels' lattice coordinates).
+  static constexpr double kMinPhaseStrength = 0.2;
+  // The phase is read from the pixels within this many periods of a region.
+  static constexpr double kPhaseReach = 6.0;
+  // The radial profile's bins (px) and the fewest pixels a bin inside the
+  // radius needs.
+  static constexpr double kProfileBin = 0.25;
+  static constexpr int kMinProfilePixels = 3;
+
   const Context* ctx_;
-  std::map<int, double> tones_, masses_;
+  std::map<int, double> tones_, masses_, cells_;
   std::map<int, int> dots_;  // whole dots per region (with masses_)
+  std::map<int, std::vector<std::pair<double, double>>> centres_;  // whole dots' centres
   int screentone_ = -1;
+  int lattice_state_ = -1;
+  Lattice lattice_;
 };
 // Cost added to a strand join of regions a and b (joins.cpp) on a
 // screentone drawing, where the colour says nothing (every window's spread

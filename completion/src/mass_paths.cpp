@@ -2,6 +2,7 @@
 // §5.1 at region level, after the ray mass joins of bank_crossings.cpp).
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <deque>
 #include <limits>
 #include <map>
@@ -334,6 +335,8 @@ double RegionTones::dot_mass(int region) {
     if (!whole) continue;
     dots.push_back(c);
     cores.push_back(core);
+    centres_[region].emplace_back(box.x + centroids.at<double>(c, 0),
+                                  box.y + centroids.at<double>(c, 1));
   }
   dots_[region] = static_cast<int>(dots.size());
   if (static_cast<int>(dots.size()) < kMinMassDots) return masses_[region] = -1.0;
@@ -359,6 +362,217 @@ double RegionTones::dot_mass(int region) {
   return masses_[region] = masses[m];
 }
 
+const RegionTones::Lattice& RegionTones::lattice() {
+  if (lattice_state_ >= 0) return lattice_;
+  lattice_state_ = 0;
+  // Nearest-neighbour steps between whole dots of one region: one period
+  // along the lattice's axes (the diagonal is sqrt(2) longer); their angle
+  // modulo 90° is the lattice's.
+  constexpr std::size_t kMaxDotsPerRegion = 200;
+  std::vector<std::pair<double, double>> steps;
+  double c4 = 0.0, s4 = 0.0;
+  for (const auto& [id, info] : ctx_->regions) {
+    dot_mass(id);
+    auto it = centres_.find(id);
+    if (it == centres_.end() || static_cast<int>(it->second.size()) < kMinDots) continue;
+    const auto& pts = it->second;
+    const std::size_t n = std::min(pts.size(), kMaxDotsPerRegion);
+    for (std::size_t i = 0; i < n; ++i) {
+      double best = std::numeric_limits<double>::infinity(), bx = 0.0, by = 0.0;
+      for (std::size_t j = 0; j < pts.size(); ++j) {
+        if (j == i) continue;
+        const double dx = pts[j].first - pts[i].first, dy = pts[j].second - pts[i].second;
+        const double d = dx * dx + dy * dy;
+        if (d < best) best = d, bx = dx, by = dy;
+      }
+      if (!std::isfinite(best)) continue;
+      steps.emplace_back(bx, by);
+      const double t = 4.0 * std::atan2(by, bx);
+      c4 += std::cos(t), s4 += std::sin(t);
+    }
+  }
+  constexpr std::size_t kMinSteps = 10;
+  if (steps.size() < kMinSteps) return lattice_;
+  std::vector<double> lengths;
+  for (const auto& [x, y] : steps) lengths.push_back(std::hypot(x, y));
+  std::nth_element(lengths.begin(),
+                   lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2),
+                   lengths.end());
+  const double median = lengths[lengths.size() / 2];
+  // The mean of the steps turned onto one axis (a quarter turn at a time)
+  // and near the median length: the period to a hundredth of a pixel, so
+  // that the phase holds across the drawing.
+  const double axis = std::atan2(s4, c4) / 4.0;
+  double sx = 0.0, sy = 0.0;
+  int used = 0;
+  for (auto [x, y] : steps) {
+    if (std::abs(std::hypot(x, y) - median) > 0.15 * median) continue;
+    for (int k = 0; k < 4; ++k) {
+      if (std::cos(std::atan2(y, x) - axis) > std::cos(M_PI / 4)) break;
+      const double t = x;
+      x = y, y = -t;  // a quarter turn
+    }
+    sx += x, sy += y, ++used;
+  }
+  if (used < static_cast<int>(kMinSteps)) return lattice_;
+  Lattice l;
+  l.period = std::hypot(sx, sy) / used;
+  l.angle = std::atan2(sy, sx);
+  if (l.period < 2.0) return lattice_;
+  // Refined by least squares over each region's dots against its first
+  // one, the lattice indices from the estimate so far, over growing
+  // distances (an index is sure while the estimate's drift stays under
+  // half a cell): Δ = i a + j a⊥ for the axis vector a.
+  double ax = l.period * std::cos(l.angle), ay = l.period * std::sin(l.angle);
+  for (double reach : {6.0, 20.0, 60.0, 1e9}) {
+    double num_x = 0.0, num_y = 0.0, den = 0.0;
+    const double p2 = ax * ax + ay * ay;
+    for (const auto& [id, pts] : centres_) {
+      if (static_cast<int>(pts.size()) < kMinDots) continue;
+      const auto& [x0, y0] = pts.front();
+      for (const auto& [x, y] : pts) {
+        const double dx = x - x0, dy = y - y0;
+        if (dx * dx + dy * dy > reach * reach * p2) continue;
+        const double i = std::round((dx * ax + dy * ay) / p2);
+        const double j = std::round((-dx * ay + dy * ax) / p2);
+        num_x += i * dx + j * dy;
+        num_y += i * dy - j * dx;
+        den += i * i + j * j;
+      }
+    }
+    if (den <= 0.0) return lattice_;
+    ax = num_x / den, ay = num_y / den;
+  }
+  l.period = std::hypot(ax, ay);
+  l.angle = std::atan2(ay, ax);
+  l.valid = true;
+  lattice_ = l;
+  return lattice_;
+}
+
+double RegionTones::cell_mass(int region) {
+  auto it = cells_.find(region);
+  if (it != cells_.end()) return it->second;
+  double& out = cells_[region] = -1.0;
+  if (!screentone() || !lattice().valid) return out;
+  const Lattice& l = lattice_;
+  const cv::Rect box = ctx_->regions.at(region).box;
+  const LabelMap& labels = *ctx_->original;
+  const auto own = [&](int x, int y) { return labels.contains(x, y) && labels.at(x, y) == region; };
+  const auto luma_at = [&](int x, int y) {
+    const Rgba& p = ctx_->image->at(x, y);
+    return static_cast<float>(0.299 * p.r + 0.587 * p.g + 0.114 * p.b);
+  };
+  // Pixels 2 px inside the region (as `tone`): its drawn line's
+  // anti-aliased rim is no dot.
+  std::vector<cv::Point> inside;
+  std::vector<float> lumas;
+  for (int y = box.y; y < box.y + box.height; ++y)
+    for (int x = box.x; x < box.x + box.width; ++x)
+      if (own(x, y) && own(x - 2, y) && own(x + 2, y) && own(x, y - 2) && own(x, y + 2)) {
+        inside.emplace_back(x, y);
+        lumas.push_back(luma_at(x, y));
+      }
+  if (lumas.empty()) return out;
+  const auto percentile = [&](int pc) {
+    const std::size_t k = (lumas.size() - 1) * pc / 100;
+    std::nth_element(lumas.begin(), lumas.begin() + static_cast<std::ptrdiff_t>(k), lumas.end());
+    return lumas[k];
+  };
+  const float paper = percentile(90), ink = percentile(2);
+  const float range = std::max(1.0f, paper - ink);
+  const auto darkness = [&](const cv::Point& q) {
+    return std::clamp((paper - luma_at(q.x, q.y)) / range, 0.0f, 1.0f);
+  };
+  // The lattice's phase here: the darkness-weighted circular mean of the
+  // lattice coordinates of the pixels round the region (kPhaseReach periods;
+  // its own and those of regions showing whole dots, 2 px inside their
+  // region: dots lie on the lattice's points, whole, cut or touching; the
+  // region's own dots alone, cut by its border, would pull the mean off). The region's own dots
+  // must lie on that phase (their resultant along it at least kMinPhaseStrength): a tone of another
+  // lattice, or none, measures nothing.
+  const double ca = std::cos(l.angle) / l.period, sa = std::sin(l.angle) / l.period;
+  const auto resultant = [&](const cv::Point& q, double w, double* c) {
+    const double u = ca * q.x + sa * q.y, v = -sa * q.x + ca * q.y;
+    c[0] += w * std::cos(2 * M_PI * u), c[1] += w * std::sin(2 * M_PI * u);
+    c[2] += w * std::cos(2 * M_PI * v), c[3] += w * std::sin(2 * M_PI * v);
+  };
+  // Along a row the lattice coordinates' phasors turn by a fixed step.
+  using Phasor = std::complex<double>;
+  const Phasor step_u = std::polar(1.0, 2 * M_PI * ca), step_v = std::polar(1.0, -2 * M_PI * sa);
+  Phasor near_u = 0.0, near_v = 0.0;
+  const int reach = static_cast<int>(std::ceil(kPhaseReach * l.period));
+  const int x0 = box.x - reach;
+  for (int y = box.y - reach; y < box.y + box.height + reach; ++y) {
+    Phasor zu = std::polar(1.0, 2 * M_PI * (ca * x0 + sa * y));
+    Phasor zv = std::polar(1.0, 2 * M_PI * (-sa * x0 + ca * y));
+    for (int x = x0; x < box.x + box.width + reach; ++x, zu *= step_u, zv *= step_v) {
+      if (!labels.contains(x, y)) continue;
+      const int id = labels.at(x, y);
+      const auto in = [&](int px, int py) {
+        return labels.contains(px, py) && labels.at(px, py) == id;
+      };
+      if (id == 0 || !in(x - 2, y) || !in(x + 2, y) || !in(x, y - 2) || !in(x, y + 2)) continue;
+      if (id != region && dot_mass(id) <= 0) continue;  // no screentone of its own
+      const double w = darkness(cv::Point(x, y));
+      if (w <= 0.0) continue;
+      near_u += w * zu, near_v += w * zv;
+    }
+  }
+  const double near[4] = {near_u.real(), near_u.imag(), near_v.real(), near_v.imag()};
+  const std::pair<double, double> phase{std::atan2(near[1], near[0]) / (2 * M_PI),
+                                        std::atan2(near[3], near[2]) / (2 * M_PI)};
+  double mine[4] = {0, 0, 0, 0}, weight = 0.0;
+  for (const cv::Point& q : inside) {
+    const double w = darkness(q);
+    if (w <= 0.0) continue;
+    resultant(q, w, mine);
+    weight += w;
+  }
+  const auto along = [&](double c, double s, double p) {
+    return c * std::cos(2 * M_PI * p) + s * std::sin(2 * M_PI * p);
+  };
+  if (weight <= 0.0 || along(mine[0], mine[1], phase.first) < kMinPhaseStrength * weight ||
+      along(mine[2], mine[3], phase.second) < kMinPhaseStrength * weight)
+    return out;
+  // The dots' radial profile: the mean darkness of the pixels at each
+  // distance (bins of kProfileBin px) from their nearest lattice point, out
+  // to half a period. A dot cut by the region's border still shows its
+  // profile from the lattice point outwards, so slivers between strands
+  // (every dot cut) and dense tones (dots touching) are measured as well.
+  const int bins = static_cast<int>(0.5 * l.period / kProfileBin) + 1;
+  std::vector<double> sum(bins, 0.0);
+  std::vector<int> count(bins, 0);
+  for (const cv::Point& q : inside) {
+    const double u = ca * q.x + sa * q.y - phase.first, v = -sa * q.x + ca * q.y - phase.second;
+    const double fu = u - std::round(u), fv = v - std::round(v);
+    const int b = static_cast<int>(l.period * std::sqrt(fu * fu + fv * fv) / kProfileBin);
+    if (b >= bins) continue;
+    sum[b] += darkness(q);
+    ++count[b];
+  }
+  // The radius: where the profile falls through one half, interpolated
+  // between the centres of the sampled bins on both sides (bins near a
+  // lattice point hold few pixels: they are skipped).
+  double radius = -1.0;
+  int inner = -1;
+  for (int b = 0; b < bins; ++b) {
+    if (count[b] < kMinProfilePixels) continue;
+    const double m = sum[b] / count[b];
+    if (m >= 0.5) {
+      inner = b;
+      continue;
+    }
+    if (inner < 0) return out;
+    const double mi = sum[inner] / count[inner];
+    const double t = (mi - 0.5) / std::max(1e-9, mi - m);
+    radius = kProfileBin * (inner + 0.5 + t * (b - inner));
+    break;
+  }
+  if (radius < 0.0) return out;
+  return out = M_PI * radius * radius;
+}
+
 bool RegionTones::screentone() {
   if (screentone_ < 0) {
     int dotted = 0;
@@ -371,10 +585,28 @@ bool RegionTones::screentone() {
   return screentone_ == 1;
 }
 
+double RegionTones::mass_step(int a, int b) {
+  const double ma = dot_mass(a), mb = dot_mass(b);
+  if (ma > 0 && mb > 0) return std::abs(ma - mb) / std::max(ma, mb);
+  const double ca = cell_mass(a), cb = cell_mass(b);
+  if (ca > 0 && cb > 0) return std::abs(ca - cb) / std::max(ca, cb);
+  return std::numeric_limits<double>::infinity();
+}
+
 RegionTones::Match RegionTones::match(int a, int b) {
   if (!screentone()) return Match::kUnknown;
   const double ma = dot_mass(a), mb = dot_mass(b), ta = tone(a), tb = tone(b);
-  if (ma <= 0 || mb <= 0 || ta < kMinTone || tb < kMinTone) return Match::kUnknown;
+  if (ta < kMinTone || tb < kMinTone) return Match::kUnknown;
+  if (ma <= 0 || mb <= 0) {
+    // A piece without a whole dot: both pieces' dots weighed on the
+    // lattice (cell_mass), which fixes the period, so the dark share (which
+    // moves with how a small piece cuts the dots) is not asked.
+    const double step = mass_step(a, b);
+    if (!std::isfinite(step)) return Match::kUnknown;
+    if (step <= kMaxSameCellStep) return Match::kSame;
+    if (step > kMinOtherMassStep) return Match::kOther;
+    return Match::kUnknown;
+  }
   const double mass_step = std::abs(ma - mb) / std::max(ma, mb), tone_step = std::abs(ta - tb);
   if (mass_step <= kMaxSameMassStep && tone_step <= kMaxSameToneStep) return Match::kSame;
   if (mass_step > kMinOtherMassStep || tone_step > kMinOtherToneStep) return Match::kOther;
@@ -606,10 +838,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
   // on the face), none two front pieces. Two pieces above no region are
   // left to the rules above.
   if (tones.screentone()) {
-    const auto mass_step = [&](int a, int b) {
-      const double ma = tones.dot_mass(a), mb = tones.dot_mass(b);
-      return std::abs(ma - mb) / std::max(ma, mb);
-    };
+    const auto mass_step = [&](int a, int b) { return tones.mass_step(a, b); };
     std::vector<MassJoin> toned;
     for (auto i = ctx.regions.begin(); i != ctx.regions.end(); ++i)
       for (auto k = std::next(i); k != ctx.regions.end(); ++k) {

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 #include "hair25d/completion/completion.h"
 #include "synthetic.h"
@@ -354,6 +356,48 @@ TEST(ToneJoins, StrandPiecesOfOneToneAreJoinedBeyondThePlainCost) {
   EXPECT_EQ(test::regions_with(run_strand(d, 0.2), 1), (std::vector<int>{1, 2}));
   // Without the tones (flat pieces) the same limit keeps them apart.
   EXPECT_EQ(test::regions_with(run_strand(strand_under_band(), 0.2), 1), (std::vector<int>{1}));
+}
+
+// Screentone as the generator draws it: round dots of radius `radius`
+// periods on a square lattice of `period` px turned by `angle` rad,
+// anti-aliased (4 x 4 samples a pixel), over a region's pixels.
+void round_dots(Drawing& d, int region, double period, double radius, double angle) {
+  const double c = std::cos(angle) / period, s = std::sin(angle) / period;
+  for (int y = 0; y < d.image.height(); ++y)
+    for (int x = 0; x < d.image.width(); ++x) {
+      if (d.regions.at(x, y) != region) continue;
+      int in = 0;
+      for (int sy = 0; sy < 4; ++sy)
+        for (int sx = 0; sx < 4; ++sx) {
+          const double px = x + (sx + 0.5) / 4 - 0.5, py = y + (sy + 0.5) / 4 - 0.5;
+          const double u = c * px + s * py, v = -s * px + c * py;
+          const double fu = u - std::round(u), fv = v - std::round(v);
+          in += fu * fu + fv * fv < radius * radius;
+        }
+      const double k = in / 16.0;
+      const auto mix = [&](int paper, int ink) {
+        return static_cast<std::uint8_t>(std::lround(paper + k * (ink - paper)));
+      };
+      d.image.at(x, y) = Rgba{mix(235, 60), mix(205, 40), mix(175, 30), 255};
+    }
+}
+
+TEST(ToneJoins, PiecesWithoutAWholeDotAreWeighedOnTheLattice) {
+  // A dense tone (dots of radius 0.46 periods, touching through their
+  // anti-aliased rims) on both pieces: no whole dot, so no dot mass. The
+  // band's small dots (radius 0.25) give the lattice; weighed on it (the
+  // radial profile round its points) the pieces' dots are one tone, and the
+  // tone's bonus joins them under a limit of 0.2. Smaller dots on the lower
+  // piece (radius 0.4) are another tone, kept apart.
+  const auto dense = [](double lower) {
+    Drawing d = strand_under_band();
+    round_dots(d, 1, 6.0, 0.46, 0.4);
+    round_dots(d, 2, 6.0, lower, 0.4);
+    round_dots(d, 3, 6.0, 0.25, 0.4);
+    return d;
+  };
+  EXPECT_EQ(test::regions_with(run_strand(dense(0.46), 0.2), 1), (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(run_strand(dense(0.40), 0.2), 1), (std::vector<int>{1}));
 }
 
 TEST(ToneJoins, StrandPiecesOfTwoTonesAreNotJoined) {
