@@ -148,9 +148,9 @@ class RegionTones {
   // more than kMinOtherToneStep apart (none of one strand on 101-116).
   static constexpr double kMinOtherMassStep = 0.08;
   // Pieces of one tone by their cell masses (a piece without a whole dot):
-  // within this share. On generated screentone seeds 101-116 14 of the 31
-  // such pairs of one strand stepped 0.002-0.015, and 4 pairs of two
-  // strands (0.02: 16 and 8, precision 0.950).
+  // within this share. On generated screentone seeds 101-116 17 of the 37
+  // such pairs of one strand stepped at most 0.015, and 5 pairs of two
+  // strands (0.02: 18 and 7).
   static constexpr double kMaxSameCellStep = 0.015;
   static constexpr double kMinOtherToneStep = 0.08;
 

@@ -502,20 +502,24 @@ double RegionTones::cell_mass(int region) {
   const Phasor step_u = std::polar(1.0, 2 * M_PI * ca), step_v = std::polar(1.0, -2 * M_PI * sa);
   Phasor near_u = 0.0, near_v = 0.0;
   const int reach = static_cast<int>(std::ceil(kPhaseReach * l.period));
-  const int x0 = box.x - reach;
-  for (int y = box.y - reach; y < box.y + box.height + reach; ++y) {
+  std::vector<char> dotted(static_cast<std::size_t>(ctx_->regions.rbegin()->first) + 1, 0);
+  for (const auto& [id, info] : ctx_->regions) dotted[id] = id == region || dot_mass(id) > 0;
+  const int x0 = std::max(0, box.x - reach), x1 = std::min(labels.width(), box.br().x + reach);
+  const int y0 = std::max(0, box.y - reach), y1 = std::min(labels.height(), box.br().y + reach);
+  for (int y = y0; y < y1; ++y) {
     Phasor zu = std::polar(1.0, 2 * M_PI * (ca * x0 + sa * y));
     Phasor zv = std::polar(1.0, 2 * M_PI * (-sa * x0 + ca * y));
-    for (int x = x0; x < box.x + box.width + reach; ++x, zu *= step_u, zv *= step_v) {
-      if (!labels.contains(x, y)) continue;
+    for (int x = x0; x < x1; ++x, zu *= step_u, zv *= step_v) {
       const int id = labels.at(x, y);
+      // Its own pixels and those of regions showing whole dots: plain
+      // fills are no dots.
+      if (id <= 0 || id >= static_cast<int>(dotted.size()) || !dotted[id]) continue;
+      const double w = darkness(cv::Point(x, y));
+      if (w <= 0.0) continue;
       const auto in = [&](int px, int py) {
         return labels.contains(px, py) && labels.at(px, py) == id;
       };
-      if (id == 0 || !in(x - 2, y) || !in(x + 2, y) || !in(x, y - 2) || !in(x, y + 2)) continue;
-      if (id != region && dot_mass(id) <= 0) continue;  // no screentone of its own
-      const double w = darkness(cv::Point(x, y));
-      if (w <= 0.0) continue;
+      if (!in(x - 2, y) || !in(x + 2, y) || !in(x, y - 2) || !in(x, y + 2)) continue;
       near_u += w * zu, near_v += w * zv;
     }
   }
