@@ -51,17 +51,16 @@ struct Record {
 
 // Drawings first .. cases − 1 (a dump can be collected in parts by several
 // processes and the parts read together with --from), those from
-// `extra_from` on in thin_fork_style.
+// `extra_from` on in thin_fork_style, from `dark_from` on in dark_style.
 std::vector<Record> collect(int cases, std::uint64_t seed, double radius_factor, int first,
-                            int extra_from) {
+                            int extra_from, int dark_from) {
   std::vector<Record> out;
   for (int i = first; i < cases; ++i) {
     hair25d::AnnotatedCase c;
     layering::Result r;
     try {
       c = hair25d::generator::generate_case(
-          i >= extra_from ? hair25d::layering_training::thin_fork_style(i, seed)
-                          : hair25d::layering_training::training_style(i, seed));
+          hair25d::layering_training::patch_style(i, seed, extra_from, dark_from));
       // Without the patch models, so the order and same-depth log-odds are
       // those the patch stages are joined with, whatever weights are built in.
       layering::Options options;
@@ -146,11 +145,12 @@ struct Split {
   int extra_from = 0;
   std::uint64_t seed = 0;
   double thin_weight = 1.0;
-  bool network(int drawing) const { return drawing < net_cases || drawing >= extra_from; }
+  int dark_from = std::numeric_limits<int>::max();
+  bool network(int drawing) const {
+    return drawing < net_cases || drawing >= extra_from || drawing >= dark_from;
+  }
   double line_width(int drawing) const {
-    return drawing >= extra_from
-               ? hair25d::layering_training::thin_fork_style(drawing, seed).line_width
-               : hair25d::layering_training::training_style(drawing, seed).line_width;
+    return hair25d::layering_training::patch_style(drawing, seed, extra_from, dark_from).line_width;
   }
   float weight(int drawing) const {
     return static_cast<float>(line_width(drawing) <= 1.5 ? thin_weight : 1.0);
@@ -515,6 +515,11 @@ int main(int argc, char** argv) {
                  "drawings from this one on are drawn in thin_fork_style and train the networks "
                  "(the second stages keep the drawings from --net-cases to here)")
       ->check(CLI::NonNegativeNumber);
+  int dark_from = std::numeric_limits<int>::max();
+  app.add_option("--dark-from", dark_from,
+                 "drawings from this one on are drawn in dark_style (hair as dark as the ink) "
+                 "and train the networks")
+      ->check(CLI::NonNegativeNumber);
   double thin_weight = 1.0;
   app.add_option("--thin-weight", thin_weight,
                  "weight of the networks' rows of drawings with lines of at most 1.5 px")
@@ -549,10 +554,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "--teachers needs --adam\n");
     return 1;
   }
-  const Split split{net_cases, extra_from, seed, thin_weight};
+  const Split split{net_cases, extra_from, seed, thin_weight, dark_from};
   std::vector<Record> records;
   if (from.empty()) {
-    records = collect(cases, seed, radius_factor, first, extra_from);
+    records = collect(cases, seed, radius_factor, first, extra_from, dark_from);
   } else {
     // Parts read one after the other, as one run's drawings in order.
     for (const std::string& path : from) {
@@ -802,6 +807,10 @@ int main(int argc, char** argv) {
   if (extra_from != std::numeric_limits<int>::max()) {
     method += " --extra-from " + std::to_string(extra_from);
     drawings += " and of drawings " + std::to_string(extra_from) + " on (thin_fork_style)";
+  }
+  if (dark_from != std::numeric_limits<int>::max()) {
+    method += " --dark-from " + std::to_string(dark_from);
+    drawings += " and of drawings " + std::to_string(dark_from) + " on (dark_style)";
   }
   std::FILE* f = std::fopen(write.c_str(), "w");
   if (f == nullptr) {

@@ -51,6 +51,27 @@ inline hair25d::generator::Options thin_fork_style(int i, std::uint64_t seed) {
   return o;
 }
 
+// Drawings the patch networks may also learn from since session 14
+// (train_layering_patch --dark-from): training_style's spread with the hair
+// painted about as dark as the ink (generator::Options::dark_hair), as in
+// black-haired manga, where the grey levels show no line between the
+// darkest strands and only the hue (or nothing) tells the ink from the
+// paint.
+inline hair25d::generator::Options dark_style(int i, std::uint64_t seed) {
+  hair25d::generator::Options o = training_style(i, seed);
+  o.dark_hair = true;
+  return o;
+}
+
+// Drawing i of a patch-network run: from `dark_from` on in dark_style, else
+// from `extra_from` on in thin_fork_style, else in training_style.
+inline hair25d::generator::Options patch_style(int i, std::uint64_t seed, int extra_from,
+                                               int dark_from) {
+  if (i >= dark_from) return dark_style(i, seed);
+  if (i >= extra_from) return thin_fork_style(i, seed);
+  return training_style(i, seed);
+}
+
 // The annotated relation of every judged pair, both ways round.
 inline std::map<std::pair<int, int>, hair25d::Relation> pair_truth(
     const hair25d::AnnotatedCase& c) {

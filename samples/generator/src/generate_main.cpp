@@ -145,6 +145,10 @@ int main(int argc, char** argv) {
   bool fading = false;
   app.add_flag("--fading-forks", fading,
                "Fork lines stop inside the strand; the annotation still splits it");
+  bool dark = false;
+  app.add_flag("--dark-hair", dark,
+               "Hair painted about as dark as the ink (black-haired manga), a third on a dark "
+               "backdrop");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -164,6 +168,7 @@ int main(int argc, char** argv) {
   }
   opt.coloured_lines = coloured;
   opt.fading_forks = fading;
+  opt.dark_hair = dark;
   // Every case's options checked before the folder is made: a bad --width
   // leaves nothing behind.
   {

@@ -75,6 +75,18 @@ Palette make_palette(const Options& options, Rng& rng) {
     p.background = Colour::Constant(rng.uniform(0.94, 1.0));
     p.line = Colour::Constant(rng.uniform(0.0, 0.08));
   }
+  if (options.dark_hair) {
+    // Black or dark-haired characters: paint about as dark as the ink, so
+    // against the darkest strands the lines show in hue only or not at all
+    // (grey manga: a solid dark fill). A third are drawn on a backdrop as
+    // dark as the hair. Drawn after everything else, so without the option
+    // the random numbers, and the drawing, are those of before it existed.
+    p.hair = options.shading == Shading::kScreentone
+                 ? Colour(Colour::Constant(rng.uniform(0.05, 0.2)))
+                 : hsv(rng.uniform(), rng.uniform(0.2, 0.8), rng.uniform(0.12, 0.3));
+    if (options.coloured_lines) p.line = p.hair * rng.uniform(0.2, 0.35);
+    if (rng.chance(1.0 / 3.0)) p.background = clamp01(p.hair * rng.uniform(0.8, 1.1));
+  }
   return p;
 }
 
