@@ -77,13 +77,13 @@ Palette make_palette(const Options& options, Rng& rng) {
   }
   if (options.dark_hair) {
     // Black or dark-haired characters: paint about as dark as the ink, so
-    // against the darkest strands the lines show in hue only or not at all
-    // (grey manga: a solid dark fill). A third are drawn on a backdrop as
-    // dark as the hair. Drawn after everything else, so without the option
-    // the random numbers, and the drawing, are those of before it existed.
+    // against the darkest strands the lines show in hue only (saturated
+    // paint, grey ink), or in grey manga in a small step from a dark fill.
+    // A third are drawn on a backdrop as dark as the hair. Drawn after everything else, so without
+    // the option the random numbers, and the drawing, are those of before it existed.
     p.hair = options.shading == Shading::kScreentone
-                 ? Colour(Colour::Constant(rng.uniform(0.05, 0.2)))
-                 : hsv(rng.uniform(), rng.uniform(0.2, 0.8), rng.uniform(0.12, 0.3));
+                 ? Colour(Colour::Constant(rng.uniform(0.15, 0.3)))
+                 : hsv(rng.uniform(), rng.uniform(0.45, 0.85), rng.uniform(0.15, 0.35));
     if (options.coloured_lines) p.line = p.hair * rng.uniform(0.2, 0.35);
     if (rng.chance(1.0 / 3.0)) p.background = clamp01(p.hair * rng.uniform(0.8, 1.1));
   }
