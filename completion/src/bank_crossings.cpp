@@ -183,6 +183,15 @@ constexpr double kMaxMassFieldStep = 1.0;
 // 201-216 0.959 / 0.704 -> 0.970 / 0.704, 301-316 0.881 / 0.831 -> 0.894 /
 // 0.834, 101-116 unchanged; at 1.5 101-116 0.979 / 0.852 -> 0.979 / 0.841).
 constexpr double kMinOtherFieldStep = 3.0;
+// On a cel drawing the two pieces' flat paint (RegionCels::step) must step
+// at most this much, as the body joins' (kMaxBodyCelStep): pieces of one
+// strand share one paint; the generator varies each strand's colour a
+// little, and a bang or an "under" strand lying on the face in nearly the
+// back hair's paint lies between the judgement's `same` (1 RGB) and `other`
+// (3 RGB) limits (session 14, dev seeds 2000-2099: the chosen mass joins of
+// cel drawings, right ones 0-0.58, wrong ones 0, 1.0, 1.41, 1.41, 1.46,
+// 1.73, 2.45, 3.0).
+constexpr double kMaxMassCelStep = 1.0;
 
 struct MassRay {
   int index = 0;  // along the outline
@@ -418,7 +427,7 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tone
       // other flat colours are refused, a piece in the other's base or band
       // (on its side of the band's level) passes whatever the windows step.
       const RegionCels::Judgement cel = fields.cels().judge(a, b);
-      if (cel.other) continue;
+      if (cel.other || (std::isfinite(cel.step) && cel.step > kMaxMassCelStep)) continue;
       // Two gradients: both pieces linear, the joint field a gradient that
       // misses them by more than kMinOtherFieldStep, whatever the windows
       // at the cuts step.

@@ -182,6 +182,20 @@ TEST(MassPaint, PiecesOfOtherFlatColoursAreNotJoinedThoughTheWindowsStepLittle) 
   EXPECT_EQ(test::regions_with(run(back_hair_under_fan()), 1), (std::vector<int>{1, 2}));
 }
 
+TEST(MassPaint, PiecesOfNearlyOneFlatPaintAreNotJoined) {
+  // The right piece one level a channel off the back's paint (1.7 RGB):
+  // between the cel judgement's `same` (1) and `other` (3) limits, where
+  // the old rules joined it. On a cel drawing pieces of one strand share
+  // one paint; two strands of nearly one colour (an "under" strand lying on
+  // the face beside another, generated seed 2073) do not.
+  Drawing d = back_hair_under_fan();
+  repaint(d, 2, [](int, int) { return Rgba{121, 81, 51, 255}; });
+  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1}));
+  // One channel one level off (1 RGB) is still one paint.
+  repaint(d, 2, [](int, int) { return Rgba{121, 80, 50, 255}; });
+  EXPECT_EQ(test::regions_with(run(d), 1), (std::vector<int>{1, 2}));
+}
+
 TEST(PathJoins, BackHairLyingOnAHangingTailIsAPiece) {
   // Back hair 1 and its sliver 2 under strand 3 lying on both; a tail 5
   // hangs from under 1, and a side lock 6 lies on 1 and on the tail. 1 lies
