@@ -247,6 +247,12 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   for (int t : tailed.tails)
     if (ctx.regions.at(t).occluders.size() <= 2) front.insert(t);
   for (const detail::FaceJoin& j : detail::face_join_candidates(ctx, face, front)) {
+    // On a cel drawing pieces of other flat paints are two locks, as for the
+    // mass and path joins (RegionCels::judge, step over 3 RGB): the face
+    // joins' colour limit (max_colour_distance, 90) let tails 7-62 RGB off
+    // the back's paint join it across the face (session 14, dev seeds
+    // 2000-2099: 4 wrong links of flat drawings, 9 pairs).
+    if (fields.cels().judge(j.region_a, j.region_b).other) continue;
     if (!try_join(j.region_a, j.region_b)) continue;
     EdgeReport ra, rb;
     ra.region = j.region_a, ra.p = j.pa, ra.q = j.qa, ra.joined_region = j.region_b;

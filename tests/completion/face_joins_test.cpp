@@ -128,6 +128,19 @@ TEST(FaceJoins, PiecesOfAnotherColourAreNotJoined) {
   EXPECT_EQ(strand_with(r, 1)->regions, (std::vector<int>{1}));
 }
 
+TEST(FaceJoins, PiecesOfOtherFlatPaintsAreNotJoined) {
+  // 10 RGB off the back's paint: within max_colour_distance (the old rules
+  // joined it), but on a cel drawing another flat paint is another lock
+  // (generated seed 2064: a tail 7 RGB off the back, joined across the face).
+  const Result r = run(face_over_back_hair(Rgba{116, 76, 66, 255}));
+  ASSERT_NE(strand_with(r, 1), nullptr);
+  EXPECT_EQ(strand_with(r, 1)->regions, (std::vector<int>{1}));
+  // The same paint is joined.
+  const Result same = run(face_over_back_hair(kBack));
+  ASSERT_NE(strand_with(same, 1), nullptr);
+  EXPECT_EQ(strand_with(same, 1)->regions, (std::vector<int>{1, 2}));
+}
+
 TEST(FaceJoins, PiecesAboveOtherHairAreNotBackHair) {
   // The same band, but each piece lies over a lock of hair (4, 5) at the
   // canvas sides: they are front hair, not the bottom layer.
