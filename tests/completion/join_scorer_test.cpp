@@ -237,7 +237,9 @@ TEST(JoinScorer, EnabledScorerDecidesTheBandOnly) {
         // The two pieces lie above nothing (back hair): when the strand join
         // is refused, the back hair's own joins (mass_joins.cpp) may still
         // join them (session 14's weights, p 0.993 against threshold 0.9999).
-        if (c->chosen) EXPECT_EQ(r.joins, 1);
+        if (c->chosen) {
+          EXPECT_EQ(r.joins, 1);
+        }
         EXPECT_LE(r.joins, 1);
         for (const JoinCandidate& other : r.join_candidates)
           if (other.hand_cost > 1.8) {

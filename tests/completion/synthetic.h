@@ -45,6 +45,25 @@ inline Drawing blank(int w, int h) {
   return {Image(w, h, Rgba{230, 240, 250, 255}), LabelMap(w, h, 0), {}};
 }
 
+// Non-hair paint (label 0: face, neck, clothes) with a 3 px ink outline just
+// inside `inside`; the image's edge is no outline (the body runs on below it).
+inline void paint_skin(Drawing& d, const std::function<bool(double, double)>& inside, Rgba colour) {
+  const int w = d.image.width(), h = d.image.height();
+  const auto in = [&](int x, int y) {
+    x = std::clamp(x, 0, w - 1), y = std::clamp(y, 0, h - 1);
+    return inside(x + 0.5, y + 0.5);
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!in(x, y)) continue;
+      bool border = false;
+      for (int dy = -3; dy <= 3 && !border; ++dy)
+        for (int dx = -3; dx <= 3 && !border; ++dx) border = !in(x + dx, y + dy);
+      d.image.at(x, y) = border ? Rgba{20, 15, 10, 255} : colour;
+      d.regions.at(x, y) = 0;
+    }
+}
+
 inline RegionRelation below(int a, int b) { return {a, b, Relation::kBelow, 1.0, false, false}; }
 
 // A vertical strand over a wide lowest region 4 (x 20..230, y 20..280, in

@@ -17,36 +17,17 @@ using test::below;
 using test::blank;
 using test::Drawing;
 using test::paint;
+using test::paint_skin;
 
 const Rgba kBack{110, 70, 60, 255};
 const Rgba kBand{77, 49, 42, 255};  // kBack x 0.7: the back's cel shadow
 const Rgba kStrand{90, 140, 70, 255};
 const Rgba kOther{70, 110, 150, 255};
 const Rgba kSkin{252, 228, 205, 255};
-const Rgba kInk{20, 15, 10, 255};
 constexpr double kCx = 180, kCy = 100, kRadius = 70;
 
 bool in_face(double x, double y) { return std::hypot(x - kCx, y - kCy) < kRadius; }
 bool in_neck(double x, double y) { return x > 150 && x < 210 && y > 120; }
-
-// Non-hair paint (label 0) with a 3 px ink outline just inside `inside`;
-// the image's edge is no outline (the body runs on below it).
-void paint_skin(Drawing& d, const std::function<bool(double, double)>& inside, Rgba colour) {
-  const int w = d.image.width(), h = d.image.height();
-  const auto in = [&](int x, int y) {
-    x = std::clamp(x, 0, w - 1), y = std::clamp(y, 0, h - 1);
-    return inside(x + 0.5, y + 0.5);
-  };
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      if (!in(x, y)) continue;
-      bool border = false;
-      for (int dy = -3; dy <= 3 && !border; ++dy)
-        for (int dx = -3; dx <= 3 && !border; ++dx) border = !in(x + dx, y + dy);
-      d.image.at(x, y) = border ? kInk : colour;
-      d.regions.at(x, y) = 0;
-    }
-}
 
 Result run(const Drawing& d) {
   Options o;
