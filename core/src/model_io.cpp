@@ -152,8 +152,9 @@ void write_contents(const fs::path& tmp, const HairModel& model) {
   for (const Strand& s : model.strands)
     if (!s.texture.empty())
       images.emplace_back(tmp / "strands" / (std::to_string(s.id) + ".png"), &s.texture);
-  if (images.size() > (model.image.empty() ? 0 : 1) + (model.background.empty() ? 0 : 1))
-    fs::create_directory(tmp / "strands");
+  const std::size_t whole_images =
+      (model.image.empty() ? 0u : 1u) + (model.background.empty() ? 0u : 1u);
+  if (images.size() > whole_images) fs::create_directory(tmp / "strands");
   std::stable_sort(images.begin(), images.end(), [](const auto& a, const auto& b) {
     return std::int64_t{a.second->width()} * a.second->height() >
            std::int64_t{b.second->width()} * b.second->height();

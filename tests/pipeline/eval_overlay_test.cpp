@@ -37,7 +37,9 @@ TEST(LabelLayout, CrowdedMarksGetDisjointLabels) {
     EXPECT_GE(placed[i].x0, area.x0);
     EXPECT_LE(placed[i].y1, area.y1);
     for (std::size_t j = 0; j < placed.size(); ++j) {
-      if (j != i) EXPECT_EQ(placed[i].overlap(placed[j]), 0.0) << i << " and " << j;
+      if (j != i) {
+        EXPECT_EQ(placed[i].overlap(placed[j]), 0.0) << i << " and " << j;
+      }
       EXPECT_EQ(placed[i].overlap(detail::box_around(requests[j].at, 3.0, 3.0)), 0.0)
           << "label " << i << " covers mark " << j;
     }
