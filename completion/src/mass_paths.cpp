@@ -226,6 +226,32 @@ std::vector<Polyline> path_bands(const std::vector<Landing>& landings) {
   return out;
 }
 
+// The regions lying above both pieces, the path joins' common occluders.
+std::set<int> common_above(const std::set<int>& above_a, const std::set<int>& above_b) {
+  std::set<int> common;
+  for (int u : above_a)
+    if (above_b.count(u)) common.insert(u);
+  return common;
+}
+
+// A path join of a and b along `landings`, ranked by `colour`.
+MassJoin path_join(int a, int b, const std::vector<Landing>& landings, double colour) {
+  MassJoin j;
+  j.region_a = a;
+  j.region_b = b;
+  j.rays = static_cast<int>(landings.size());
+  j.colour = colour;
+  j.bands = path_bands(landings);
+  return j;
+}
+
+// Best first: the least colour step, then the most paths.
+void sort_by_colour(std::vector<MassJoin>& joins) {
+  std::sort(joins.begin(), joins.end(), [](const MassJoin& x, const MassJoin& y) {
+    return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
+  });
+}
+
 // A front piece (above some region) and a piece above none are joined by
 // their tone when their dot masses differ by at most this share: the
 // strands' tones (the generator's 0.12-0.45) overlap the back hair's
@@ -708,9 +734,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
       if ((ctx.regions.at(a).colour - ctx.regions.at(b).colour).norm() >
           ctx.options->max_colour_distance)
         continue;
-      std::set<int> common;
-      for (int u : above(a))
-        if (above(b).count(u)) common.insert(u);
+      const std::set<int> common = common_above(above(a), above(b));
       if (common.empty()) continue;
       if (std::min(face_share(ctx, near_face, a), face_share(ctx, near_face, b)) >= kMaxFaceShare)
         continue;
@@ -759,17 +783,9 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
       if (step > kMaxPathColourStep && match != RegionTones::Match::kSame &&
           field > kMaxPathFieldStep && !cel.same)
         continue;
-      MassJoin j;
-      j.region_a = a;
-      j.region_b = b;
-      j.rays = n;
-      j.colour = std::min({step, field, cel.same ? cel.step : step});
-      j.bands = path_bands(landings);
-      out.push_back(std::move(j));
+      out.push_back(path_join(a, b, landings, std::min({step, field, cel.same ? cel.step : step})));
     }
-  std::sort(out.begin(), out.end(), [](const MassJoin& x, const MassJoin& y) {
-    return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
-  });
+  sort_by_colour(out);
   // Cel drawings: two pieces of a strand (one of them at least lying above
   // some region) in one flat paint that no other region shares, linked
   // under the regions lying above both (session 14). The generator paints
@@ -800,9 +816,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         if (one_strand && one_strand(a, b)) continue;
         const double step = cels.step(a, b);
         if (step > kMaxRareCelStep) continue;
-        std::set<int> common;
-        for (int u : above(a))
-          if (above(b).count(u)) common.insert(u);
+        const std::set<int> common = common_above(above(a), above(b));
         if (common.empty()) continue;
         const std::vector<Landing> landings = crossing_paths(ctx, a, b, common, reach);
         if (static_cast<int>(landings.size()) < kMinLandings) continue;
@@ -817,17 +831,9 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         if (length > kMaxRarePathReach * reach) continue;
         if (std::max(axis_cos(ctx, a, direction), axis_cos(ctx, b, direction)) < kMinAxisCos)
           continue;
-        MassJoin j;
-        j.region_a = a;
-        j.region_b = b;
-        j.rays = static_cast<int>(landings.size());
-        j.colour = step;
-        j.bands = path_bands(landings);
-        rare.push_back(std::move(j));
+        rare.push_back(path_join(a, b, landings, step));
       }
-    std::sort(rare.begin(), rare.end(), [](const MassJoin& x, const MassJoin& y) {
-      return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
-    });
+    sort_by_colour(rare);
     out.insert(out.end(), std::make_move_iterator(rare.begin()),
                std::make_move_iterator(rare.end()));
   }
@@ -852,23 +858,14 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         if (ctx.is_above(a, b) || ctx.is_above(b, a)) continue;
         if (tones.match(a, b) != RegionTones::Match::kSame) continue;
         if (fronts == 1 && mass_step(a, b) > kMaxMixedMassStep) continue;
-        std::set<int> common;
-        for (int u : above(a))
-          if (above(b).count(u)) common.insert(u);
+        const std::set<int> common = common_above(above(a), above(b));
         if (common.empty()) continue;
         const std::vector<Landing> landings = crossing_paths(ctx, a, b, common, reach);
         if (static_cast<int>(landings.size()) < kMinLandings) continue;
-        MassJoin j;
-        j.region_a = a;
-        j.region_b = b;
-        j.rays = static_cast<int>(landings.size());
-        j.colour = mass_step(a, b);  // not RGB
-        j.bands = path_bands(landings);
-        toned.push_back(std::move(j));
+        // Ranked by the dot masses' step, not an RGB step.
+        toned.push_back(path_join(a, b, landings, mass_step(a, b)));
       }
-    std::sort(toned.begin(), toned.end(), [](const MassJoin& x, const MassJoin& y) {
-      return x.colour != y.colour ? x.colour < y.colour : x.rays > y.rays;
-    });
+    sort_by_colour(toned);
     out.insert(out.end(), std::make_move_iterator(toned.begin()),
                std::make_move_iterator(toned.end()));
   }
