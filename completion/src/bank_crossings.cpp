@@ -170,11 +170,6 @@ constexpr int kMinMassRays = 3;
 // with a colour step <= 10 mostly 0.02–0.26 (strand tips on the face), two
 // 0.32 and 0.43 (a bang lying on the face, in the back hair's colour).
 constexpr double kMinMassDepthRatio = 0.3;
-// Or the pieces are painted by one linear field (RegionFields::step, RGB):
-// a gradient over the whole back hair steps across the fan by its slope
-// times the crossed width (gradient seeds 101-116, the field without its
-// gates: right candidates 0-0.75 (two 1.75, 2.13), wrong ones 1.45 and up).
-constexpr double kMaxMassFieldStep = 1.0;
 // Two pieces whose own paint is linear and whose joint field (a gradient)
 // misses them by more than this are painted by two gradients, two strands,
 // though the windows at the cuts step little (session 13: the chosen mass
@@ -183,15 +178,6 @@ constexpr double kMaxMassFieldStep = 1.0;
 // 201-216 0.959 / 0.704 -> 0.970 / 0.704, 301-316 0.881 / 0.831 -> 0.894 /
 // 0.834, 101-116 unchanged; at 1.5 101-116 0.979 / 0.852 -> 0.979 / 0.841).
 constexpr double kMinOtherFieldStep = 3.0;
-// On a cel drawing the two pieces' flat paint (RegionCels::step) must step
-// at most this much, as the body joins' (kMaxBodyCelStep): pieces of one
-// strand share one paint; the generator varies each strand's colour a
-// little, and a bang or an "under" strand lying on the face in nearly the
-// back hair's paint lies between the judgement's `same` (1 RGB) and `other`
-// (3 RGB) limits (session 14, dev seeds 2000-2099: the chosen mass joins of
-// cel drawings, right ones 0-0.58, wrong ones 0, 1.0, 1.41, 1.41, 1.46,
-// 1.73, 2.45, 3.0).
-constexpr double kMaxMassCelStep = 1.0;
 
 struct MassRay {
   int index = 0;  // along the outline

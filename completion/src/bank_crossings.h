@@ -35,6 +35,22 @@ inline constexpr double kBankShareWeight = 2.0;
 // ones 11.9-163; the annotated cases make no region-level join either way.
 inline constexpr double kMaxMassColourStep = 10.0;
 
+// Or the pieces are painted by one linear field (RegionFields::step, RGB;
+// the body joins' limit too): a gradient over the whole back hair steps
+// across the fan by its slope times the crossed width (gradient seeds
+// 101-116, the field without its gates: right candidates 0-0.75 (two 1.75,
+// 2.13), wrong ones 1.45 and up).
+inline constexpr double kMaxMassFieldStep = 1.0;
+
+// On a cel drawing the two pieces' flat paint (RegionCels::step) must step
+// at most this much (the body joins' limit too): pieces of one strand share
+// one paint; the generator varies each strand's colour a little, and a bang
+// or an "under" strand lying on the face in nearly the back hair's paint
+// lies between the judgement's `same` (1 RGB) and `other` (3 RGB) limits
+// (session 14, dev seeds 2000-2099: the chosen mass joins of cel drawings,
+// right ones 0-0.58, wrong ones 0, 1.0, 1.41, 1.41, 1.46, 1.73, 2.45, 3.0).
+inline constexpr double kMaxMassCelStep = 1.0;
+
 // Per RGB of texture spread in the windows (the two windows' RGB standard
 // deviations summed) beyond kTextureFloor, the step may be this much larger:
 // an 11 x 11 window's mean over screentone dots moves with the dots' phase,

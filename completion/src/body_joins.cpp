@@ -33,11 +33,6 @@ constexpr double kMinNeckRun = 4.0;
 // (strands hanging over the neck), not behind. Right candidates of 101-116
 // and 201-216 measured at most 0.50 on one of the two sides.
 constexpr double kMaxFarBodyShare = 0.75;
-// Paint: as the mass joins' window limit (kMaxMassColourStep), field limit
-// (kMaxMassFieldStep) and the cel judgement's `same` step.
-constexpr double kMaxBodyColourStep = 10.0;
-constexpr double kMaxBodyFieldStep = 1.0;
-constexpr double kMaxBodyCelStep = 1.0;
 // Ink, not body: luma under this share of Options::dark_luma.
 constexpr double kInkShare = 0.5;
 
@@ -206,7 +201,7 @@ std::vector<MassJoin> body_join_candidates(const Context& ctx, const Face& drawn
         paint = tones.match(a, b) == RegionTones::Match::kSame;
       } else if (fields.cels().cel_drawing()) {
         const RegionCels::Judgement cel = fields.cels().judge(a, b);
-        paint = cel.same || cel.step <= kMaxBodyCelStep;
+        paint = cel.same || cel.step <= kMaxMassCelStep;
         step = cel.step;
       } else {
         const auto median_step = [&](const std::vector<BodyRay>& list, int from, int to) {
@@ -220,7 +215,7 @@ std::vector<MassJoin> body_join_candidates(const Context& ctx, const Face& drawn
           return steps[steps.size() / 2];
         };
         step = std::max(median_step(kab, a, b), median_step(kba, b, a));
-        paint = step <= kMaxBodyColourStep || fields.step(a, b) <= kMaxBodyFieldStep;
+        paint = step <= kMaxMassColourStep || fields.step(a, b) <= kMaxMassFieldStep;
       }
       if (!paint) continue;
       MassJoin j;
