@@ -229,5 +229,49 @@ TEST(PathJoins, BackHairRestingOnATailThreeRegionsCoverIsAPiece) {
   EXPECT_EQ(test::regions_with(r, 7), (std::vector<int>{7}));
 }
 
+// The top of the back hair 1 (a 30 px arc, `top`) with the cap 2 lying on
+// its lower part, and the back's lower part 3 (`lower`) below a gap of
+// paper; a strand 4 lies on the cap and on 3, a side lock 8 on 1 and the
+// cap. No region lying above both 1 and 3 touches 1, so the path joins
+// under common occluders find no path. Strands 5, 6 and 7 (`strands`) hang right of
+// the back, lying on nothing.
+Drawing back_top_under_the_cap(Rgba top, Rgba lower, Rgba strands) {
+  const Rgba cap{170, 120, 90, 255}, strand{90, 140, 70, 255};
+  Drawing d = blank(370, 300);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 300 && y > 20 && y < 62; }, top, 1);
+  paint(
+      d, [](double x, double y) { return x > 60 && x < 280 && y > 45 && y < 110; }, cap, 2);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 300 && y > 132 && y < 260; }, lower, 3);
+  paint(
+      d, [](double x, double y) { return x > 150 && x < 185 && y > 70 && y < 200; }, strand, 4);
+  for (int k = 0; k < 3; ++k)
+    paint(
+        d,
+        [k](double x, double y) {
+          return x > 304 + 18 * k && x < 318 + 18 * k && y > 40 && y < 280;
+        },
+        strands, 5 + k);
+  paint(
+      d, [](double x, double y) { return x > 45 && x < 72 && y > 10 && y < 100; }, strand, 8);
+  d.relations = {below(1, 2), below(2, 4), below(3, 4), below(1, 8), below(2, 8)};
+  return d;
+}
+
+TEST(PathJoins, BackHairRoundTheCapIsJoinedToItsLowerPartInItsOwnPaint) {
+  // Paths from 1 run through the cap (above 1) and the strand (above 3):
+  // regions lying above either piece. Joined in one paint; not when the
+  // lower part is painted otherwise, nor when other regions (the three
+  // strands beside it) share the paint: then it is no back hair's own.
+  const Rgba kLower{150, 100, 70, 255};
+  EXPECT_EQ(test::regions_with(run(back_top_under_the_cap(kBack, kBack, kFan)), 1),
+            (std::vector<int>{1, 3}));
+  EXPECT_EQ(test::regions_with(run(back_top_under_the_cap(kBack, kLower, kFan)), 1),
+            (std::vector<int>{1}));
+  EXPECT_EQ(test::regions_with(run(back_top_under_the_cap(kBack, kBack, kBack)), 1),
+            (std::vector<int>{1}));
+}
+
 }  // namespace
 }  // namespace hair25d::completion
