@@ -68,7 +68,8 @@ class SummedArea {
 class Filler {
  public:
   Filler(Image& image, const LabelMap& fill, const LabelMap& source, const InpaintOptions& o,
-         const Image* guide, const std::vector<std::uint8_t>* ink)
+         const Image* guide, const std::vector<std::uint8_t>* ink,
+         const detail::DotLattice* lattice)
       : image_(image), o_(o), guide_(guide), w_(image.width()), h_(image.height()) {
     const std::size_t n = static_cast<std::size_t>(w_) * h_;
     known_.assign(n, 1);
@@ -125,7 +126,15 @@ class Filler {
       ink_ = ink != nullptr ? *ink : detail::ink_mask(image_, o_);
       for (std::size_t i = 0; i < n; ++i)
         if (!known_[i]) ink_[i] = 0;
-      ink_area_.build(ink_, w_, h_);
+      // The ink rule counts drawn lines and features; a screentone's dots
+      // are the paint itself.
+      line_ink_ = ink_;
+      if (lattice != nullptr && lattice->valid) {
+        for (std::size_t i = 0; i < n; ++i)
+          if (lattice->dots[i]) line_ink_[i] = 0;
+        make_translates(*lattice);
+      }
+      ink_area_.build(line_ink_, w_, h_);
     }
   }
 
@@ -297,27 +306,50 @@ class Filler {
     // original ink counts: copied ink licensing more ink would let a feature
     // chain across the hole.
     int target_ink = 0;
-    if (!ink_.empty())
+    if (!line_ink_.empty())
       for (int dy = -r; dy <= r; ++dy)
         for (int dx = -r; dx <= r; ++dx)
-          if (is_known(x + dx, y + dy)) target_ink += ink_[idx(x + dx, y + dy)];
-    const long guide_w = std::lround(o_.guide_weight * 256);
+          if (is_known(x + dx, y + dy)) target_ink += line_ink_[idx(x + dx, y + dy)];
+    // On a screentone the coarse fill is the paper between the dots: at the
+    // full weight it pulls the copies towards patches whose dots miss the
+    // target's unknown part (dots cut at the copies' seams).
+    const double guide_weight =
+        translates_.empty() ? o_.guide_weight : kLatticeGuideShare * o_.guide_weight;
+    const long guide_w = std::lround(guide_weight * 256);
     Target& target = target_;
     make_target(x, y, &target);
     const int step = o_.search_step;
     long best = std::numeric_limits<long>::max();
     int best_x = 0, best_y = 0;
+    // Whether the candidate is allowed (a whole source patch within the ink
+    // rule), and if so, whether it is the best so far.
     auto consider = [&](int cx, int cy, long distance_term) {
-      if (!valid_[idx(cx, cy)]) return;
-      if (!ink_.empty() && ink_sum(cx - r, cy - r, cx + r + 1, cy + r + 1) > 2 * target_ink) return;
+      if (!valid_[idx(cx, cy)]) return false;
+      if (!ink_.empty() && ink_sum(cx - r, cy - r, cx + r + 1, cy + r + 1) > 2 * target_ink)
+        return false;
       // A candidate earlier in raster order than the best wins a tie.
       const bool none = best == std::numeric_limits<long>::max();
       const bool earlier = cy < best_y || (cy == best_y && cx < best_x);
       const long limit = none ? best : earlier ? best + 1 : best;
-      if (distance_term >= limit) return;
+      if (distance_term >= limit) return true;
       const long ssd = patch_ssd(target, idx(cx, cy), distance_term, limit, guide_w);
       if (ssd < limit) best = ssd, best_x = cx, best_y = cy;
+      return true;
     };
+    const auto term = [&](int dx, int dy) {
+      return static_cast<long>(o_.distance_weight * (dx * dx + dy * dy));
+    };
+    if (!translates_.empty()) {
+      // Screentone: the sources continuing the copies around the target,
+      // then whole lattice translates of it, so that the dots keep their
+      // phase; the window search only where no translate is allowed.
+      coherent_search(x, y, term, consider);
+      lattice_search(x, y, term, best, consider);
+      if (best != std::numeric_limits<long>::max()) {
+        *bx = best_x, *by = best_y;
+        return true;
+      }
+    }
     for (int radius = o_.search_radius;; radius *= 2) {
       const int y0 = std::max(r, y - radius), y1 = std::min(h_ - 1 - r, y + radius);
       const int x0 = std::max(r, x - radius), x1 = std::min(w_ - 1 - r, x + radius);
@@ -337,9 +369,6 @@ class Filler {
       } else {
         // A wider window: the target is far from every whole source patch
         // (deep in a large hole, or in a thin strand).
-        const auto term = [&](int dx, int dy) {
-          return static_cast<long>(o_.distance_weight * (dx * dx + dy * dy));
-        };
         if (o_.far_candidates > 0) {
           // The coherent candidates do not depend on the window: the first
           // widened window tries them (they would fail alike in wider ones).
@@ -397,6 +426,57 @@ class Filler {
       if (radius > w_ + h_) return false;
     }
   }
+
+  // Screentone (inpaint_cel with a dot lattice): the lattice vectors
+  // i a + j b reaching no farther than the image's diagonal, nearest first.
+  struct Translate {
+    double x, y, length;
+  };
+  void make_translates(const detail::DotLattice& l) {
+    const double cell = std::abs(l.ax * l.by - l.ay * l.bx);
+    const double reach = std::hypot(w_, h_);
+    const int max_i = static_cast<int>(std::ceil(reach * std::hypot(l.bx, l.by) / cell));
+    const int max_j = static_cast<int>(std::ceil(reach * std::hypot(l.ax, l.ay) / cell));
+    for (int i = -max_i; i <= max_i; ++i)
+      for (int j = -max_j; j <= max_j; ++j) {
+        if (i == 0 && j == 0) continue;
+        const double tx = i * l.ax + j * l.bx, ty = i * l.ay + j * l.by;
+        const double length = std::hypot(tx, ty);
+        if (length <= reach) translates_.push_back({tx, ty, length});
+      }
+    std::stable_sort(translates_.begin(), translates_.end(),
+                     [](const Translate& a, const Translate& b) { return a.length < b.length; });
+  }
+
+  // The candidates of a screentone target: each lattice translate of it,
+  // rounded to the pixels round it (the dots' phase to within a pixel; the
+  // SSD picks the closest), nearest first, until kLatticeTranslates
+  // translates gave an allowed candidate or the distance term alone is
+  // worse than the best match.
+  template <typename Term, typename Consider>
+  void lattice_search(int x, int y, const Term& term, const long& best,
+                      const Consider& consider) const {
+    const int r = r_;
+    int allowed = 0;
+    for (const Translate& t : translates_) {
+      const double nearest = std::max(0.0, t.length - std::sqrt(2.0));
+      if (o_.distance_weight * nearest * nearest > static_cast<double>(best)) return;
+      const int fx = static_cast<int>(std::floor(t.x)), fy = static_cast<int>(std::floor(t.y));
+      bool any = false;
+      for (int oy = fy; oy <= fy + (fy != t.y); ++oy)
+        for (int ox = fx; ox <= fx + (fx != t.x); ++ox) {
+          const int cx = x + ox, cy = y + oy;
+          if (cx < r || cy < r || cx >= w_ - r || cy >= h_ - r) continue;
+          any = consider(cx, cy, term(ox, oy)) || any;
+        }
+      if (any && ++allowed >= kLatticeTranslates) return;
+    }
+  }
+  static constexpr int kLatticeTranslates = 8;
+  // Share of guide_weight a screentone's targets give the coarse fill (on
+  // generated seed 7 the full weight left dots cut at the copies' seams in
+  // the cap; none let dots into a paper-white lock joined to it).
+  static constexpr double kLatticeGuideShare = 0.25;
 
   // A row's next valid centre in one direction (far_search): valid_x_[pos],
   // stepping by dir until end; d is its distance term.
@@ -589,7 +669,9 @@ class Filler {
   std::vector<int> row_start_;  // row y's centres: valid_x_[row_start_[y], row_start_[y + 1])
   std::vector<float> grey_;
   std::vector<std::uint8_t> source_bytes_;
-  std::vector<std::uint8_t> ink_;  // cel mode only
+  std::vector<std::uint8_t> ink_;       // cel mode only
+  std::vector<std::uint8_t> line_ink_;  // ink_ less a screentone's dots: the ink rule's
+  std::vector<Translate> translates_;   // screentone only (make_translates)
   SummedArea ink_area_;
   std::vector<unsigned> stamp_ = {};
   unsigned stamp_counter_ = 0;
@@ -661,8 +743,8 @@ std::vector<std::uint8_t> ink_mask(const Image& image, const InpaintOptions& o) 
 
 InpaintResult run_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
                            const InpaintOptions& options, const Image* guide,
-                           const std::vector<std::uint8_t>* ink) {
-  Filler filler(image, fill, source, options, guide, ink);
+                           const std::vector<std::uint8_t>* ink, const DotLattice* lattice) {
+  Filler filler(image, fill, source, options, guide, ink, lattice);
   return filler.run();
 }
 
@@ -683,7 +765,8 @@ InpaintResult inpaint_cel(Image& image, const LabelMap& fill, const LabelMap& so
   // The ink mask serves the coarse fill and the exemplar pass alike.
   const std::vector<std::uint8_t> ink = detail::ink_mask(image, o);
   const Image guide = detail::coarse_fill(image, fill, source, ink);
-  return detail::run_exemplar(image, fill, source, o, &guide, &ink);
+  const detail::DotLattice lattice = detail::find_dot_lattice(image, fill, source, ink);
+  return detail::run_exemplar(image, fill, source, o, &guide, &ink, &lattice);
 }
 
 }  // namespace hair25d::completion

@@ -47,10 +47,31 @@ InpaintOptions source_ink_options(const Image& image, const LabelMap& fill, cons
 Image coarse_fill(const Image& image, const LabelMap& fill, const LabelMap& source,
                   const std::vector<std::uint8_t>& ink);
 
+// A screentone among the sources: its dots (small ink components) repeat by
+// the basis vectors a and b (px). Found by find_dot_lattice; `valid` false
+// where the sources hold no such tone (flat, two-tone and gradient paint).
+struct DotLattice {
+  bool valid = false;
+  double ax = 0.0, ay = 0.0, bx = 0.0, by = 0.0;
+  std::vector<std::uint8_t> dots;  // per pixel, 1 on a dot (valid only)
+};
+// A dot: an 8-connected ink component of the sources of kMinDotArea to
+// kMaxDotArea px and at most kMaxDotSide px each way (the generator's dots
+// cover 3-35 px; drawn lines are longer). A lattice needs kMinDots dots, and
+// kMinWholeShare of the steps between neighbouring dots must be whole
+// lattice vectors (within 0.2 of a cell each way).
+constexpr int kMinDotArea = 2, kMaxDotArea = 60, kMaxDotSide = 10, kMinDots = 30;
+constexpr double kMinWholeShare = 0.8;
+// At most this many dots vote for the basis vectors.
+constexpr std::size_t kSample = 300;
+DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const LabelMap& source,
+                            const std::vector<std::uint8_t>& ink);
+
 // Criminisi fill; with a guide, in cel mode (see inpaint_cel). `ink`, when
 // the caller has it, is ink_mask(image, options) (else it is computed).
 InpaintResult run_exemplar(Image& image, const LabelMap& fill, const LabelMap& source,
                            const InpaintOptions& options, const Image* guide,
-                           const std::vector<std::uint8_t>* ink = nullptr);
+                           const std::vector<std::uint8_t>* ink = nullptr,
+                           const DotLattice* lattice = nullptr);
 
 }  // namespace hair25d::completion::detail

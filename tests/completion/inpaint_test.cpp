@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "hair25d/core/error.h"
@@ -322,6 +323,71 @@ TEST(InpaintCel, DarkHairIsContinuedInItsOwnColoursOpaque) {
   EXPECT_EQ(transparent, 0);
   EXPECT_EQ(skin, 0);
   EXPECT_GE(dark, hidden * 98 / 100) << dark << " of " << hidden;
+}
+
+// A screentone strand (the generator's round anti-aliased dots on a turned
+// lattice with a period of 7.3 px, on grey paper) over a transparent sheet,
+// with a dark disc (radius 6, an eye's size) beside its hidden part: a
+// 70 × 52 hole, most of it farther than search_radius from every whole
+// source patch. Before, the dots were ink to the ink rule: no patch was
+// allowed deep in the hole and it was left the coarse fill's flat paper.
+struct ToneStrand {
+  static constexpr int kW = 190, kH = 140;
+  static constexpr double kPeriod = 7.3, kRadius = 0.3, kAngle = 0.35;
+  Image image{kW, kH, Rgba{0, 0, 0, 0}};
+  LabelMap fill{kW, kH}, source{kW, kH};
+  static bool hidden(int x, int y) { return x >= 60 && x < 130 && y >= 45 && y < 97; }
+  static bool eye(int x, int y) { return (x - 52) * (x - 52) + (y - 70) * (y - 70) <= 36; }
+  ToneStrand() {
+    const double c = std::cos(kAngle) / kPeriod, s = std::sin(kAngle) / kPeriod;
+    for (int y = 8; y < kH - 8; ++y)
+      for (int x = 8; x < kW - 8; ++x) {
+        int in = 0;
+        for (int sy = 0; sy < 4; ++sy)
+          for (int sx = 0; sx < 4; ++sx) {
+            const double px = x + (sx + 0.5) / 4 - 0.5, py = y + (sy + 0.5) / 4 - 0.5;
+            const double u = c * px + s * py, v = -s * px + c * py;
+            const double fu = u - std::round(u), fv = v - std::round(v);
+            in += fu * fu + fv * fv < kRadius * kRadius;
+          }
+        const auto grey = static_cast<std::uint8_t>(std::lround(215 - in / 16.0 * (215 - 25)));
+        image.at(x, y) = eye(x, y) ? Rgba{20, 20, 25, 255} : Rgba{grey, grey, grey, 255};
+        (hidden(x, y) ? fill : source).at(x, y) = 1;
+      }
+  }
+};
+
+TEST(InpaintCel, ScreentoneDotsContinueInPhaseAcrossTheHiddenPart) {
+  ToneStrand s;
+  const Image truth = s.image;
+  const InpaintResult r = inpaint_cel(s.image, s.fill, s.source);
+  EXPECT_EQ(r.filled, 70 * 52);
+  // Agreement with the tone as drawn: the hole's dot pixels (luma < 120 in
+  // the drawing) dark, its paper light, each within a pixel of the truth.
+  int dots = 0, dots_kept = 0, paper = 0, paper_kept = 0, eye = 0;
+  const auto near_truth = [&](int x, int y, bool dark) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        if ((truth.at(x + dx, y + dy).r < 120) == dark) return true;
+    return false;
+  };
+  for (int y = 0; y < ToneStrand::kH; ++y)
+    for (int x = 0; x < ToneStrand::kW; ++x) {
+      const Rgba& c = s.image.at(x, y);
+      if (!s.fill.at(x, y)) {
+        ASSERT_EQ(c, truth.at(x, y)) << "known pixel changed at " << x << "," << y;
+        continue;
+      }
+      const bool dark = c.r < 120;
+      if (truth.at(x, y).r < 120)
+        ++dots, dots_kept += dark;
+      else
+        ++paper, paper_kept += !dark;
+      if (dark && !near_truth(x, y, true)) ++eye;  // dark where no dot is near
+    }
+  EXPECT_GT(dots_kept, dots * 8 / 10) << dots_kept << " of " << dots << " dot pixels";
+  EXPECT_GT(paper_kept, paper * 9 / 10) << paper_kept << " of " << paper << " paper pixels";
+  EXPECT_LT(eye, 20) << "dark pixels off the dots (the disc copied in)";
 }
 
 TEST(InpaintCel, BadInputThrows) {

@@ -52,8 +52,11 @@ InpaintResult inpaint_exemplar(Image& image, const LabelMap& fill, const LabelMa
 // ink-free pixel (the flat region it continues); exemplar synthesis then adds
 // texture, matching known pixels and the coarse fill, and may copy a patch
 // holding ink only when the target's known part holds ink too — an eye or a
-// hair clip next to the hole is never duplicated into it. Same contract as
-// inpaint_exemplar: pixels outside `fill` are never changed.
+// hair clip next to the hole is never duplicated into it. On a screentone
+// (the sources' small ink dots repeat on a lattice) the dots are paint, not
+// ink, and patches are copied from whole lattice translates, so the dots go
+// on in phase. Same contract as inpaint_exemplar: pixels outside `fill` are
+// never changed.
 InpaintResult inpaint_cel(Image& image, const LabelMap& fill, const LabelMap& source,
                           const InpaintOptions& options = {});
 

@@ -1,0 +1,163 @@
+// The dot lattice of a screentone among an inpainting's sources: small ink
+// components whose centres repeat by two basis vectors. inpaint_cel copies
+// patches from whole lattice translates of the target (the dots continue in
+// phase) and lets the dots through its ink rule (they are the paint, not a
+// feature to keep out of the hole).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "inpaint_internal.h"
+
+namespace hair25d::completion::detail {
+
+namespace {
+
+struct Vec {
+  double x, y;
+};
+
+double norm(Vec v) { return std::hypot(v.x, v.y); }
+double cross(Vec a, Vec b) { return a.x * b.y - a.y * b.x; }
+
+// The step most steps agree with (v and -v alike): the mean of the steps
+// within 15 % of its length of the step with about the most such
+// neighbours; of those within a tenth of the most, the shortest (a square
+// lattice's diagonals are as common as its second axis).
+Vec mode_step(const std::vector<Vec>& all, int* support) {
+  // At most kMaxSteps of them (evenly spread) vote: the count is quadratic.
+  constexpr std::size_t kMaxSteps = 600;
+  std::vector<Vec> steps;
+  const std::size_t stride = (all.size() + kMaxSteps - 1) / kMaxSteps;
+  for (std::size_t i = 0; i < all.size(); i += stride) steps.push_back(all[i]);
+  const auto close = [](Vec s, Vec m, double tol2) {
+    const double dx = s.x - m.x, dy = s.y - m.y, fx = s.x + m.x, fy = s.y + m.y;
+    return dx * dx + dy * dy <= tol2 || fx * fx + fy * fy <= tol2;
+  };
+  std::vector<int> count(steps.size(), 0);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const double tol2 = 0.0225 * (steps[i].x * steps[i].x + steps[i].y * steps[i].y);
+    for (const Vec& s : steps) count[i] += close(s, steps[i], tol2);
+  }
+  const int most = *std::max_element(count.begin(), count.end());
+  std::size_t best_i = 0;
+  double best_len = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < steps.size(); ++i)
+    if (count[i] * 1.1 >= most && norm(steps[i]) < best_len) best_len = norm(steps[i]), best_i = i;
+  Vec sum{0.0, 0.0};
+  int n = 0;
+  const Vec m = steps[best_i];
+  const double tol2 = 0.0225 * (m.x * m.x + m.y * m.y);
+  for (const Vec& s : all) {
+    const double dx = s.x - m.x, dy = s.y - m.y;
+    if (dx * dx + dy * dy <= tol2)
+      sum.x += s.x, sum.y += s.y, ++n;
+    else if (close(s, m, tol2))
+      sum.x -= s.x, sum.y -= s.y, ++n;
+  }
+  *support = n;
+  return {sum.x / std::max(1, n), sum.y / std::max(1, n)};
+}
+
+}  // namespace
+
+DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const LabelMap& source,
+                            const std::vector<std::uint8_t>& ink) {
+  DotLattice lattice;
+  const int w = image.width(), h = image.height();
+  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      const bool usable = fill.data()[i] == 0 && (source.empty() || source.data()[i] != 0);
+      if (usable && ink[i]) mask.at<std::uint8_t>(y, x) = 255;
+    }
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
+  std::vector<Vec> centres;
+  std::vector<int> dot_of(static_cast<std::size_t>(n), 0);
+  for (int k = 1; k < n; ++k) {
+    const int area = stats.at<int>(k, cv::CC_STAT_AREA);
+    const int bw = stats.at<int>(k, cv::CC_STAT_WIDTH), bh = stats.at<int>(k, cv::CC_STAT_HEIGHT);
+    if (area < kMinDotArea || area > kMaxDotArea || bw > kMaxDotSide || bh > kMaxDotSide) continue;
+    dot_of[static_cast<std::size_t>(k)] = 1;
+    centres.push_back({centroids.at<double>(k, 0), centroids.at<double>(k, 1)});
+  }
+  if (static_cast<int>(centres.size()) < kMinDots) return lattice;
+
+  // Dots binned by kBin px: a dot's neighbours within kReach px are in the
+  // 5×5 bins round its own.
+  constexpr int kBin = 8, kReach = 2 * kBin;
+  const int bins_x = w / kBin + 1, bins_y = h / kBin + 1;
+  std::vector<std::vector<int>> bins(static_cast<std::size_t>(bins_x) * bins_y);
+  for (std::size_t i = 0; i < centres.size(); ++i)
+    bins[static_cast<std::size_t>(static_cast<int>(centres[i].y) / kBin) * bins_x +
+         static_cast<int>(centres[i].x) / kBin]
+        .push_back(static_cast<int>(i));
+  const auto neighbours = [&](std::size_t i, double reach, std::vector<Vec>* out) {
+    const Vec c = centres[i];
+    const int bx = static_cast<int>(c.x) / kBin, by = static_cast<int>(c.y) / kBin;
+    for (int y = std::max(0, by - 2); y <= std::min(bins_y - 1, by + 2); ++y)
+      for (int x = std::max(0, bx - 2); x <= std::min(bins_x - 1, bx + 2); ++x)
+        for (int j : bins[static_cast<std::size_t>(y) * bins_x + x]) {
+          if (static_cast<std::size_t>(j) == i) continue;
+          const Vec v{centres[j].x - c.x, centres[j].y - c.y};
+          if (v.x * v.x + v.y * v.y <= reach * reach) out->push_back(v);
+        }
+  };
+  // At most kSample dots (evenly spread over the list) vote.
+  const std::size_t stride = std::max<std::size_t>(1, centres.size() / kSample);
+  std::vector<Vec> nearest, near;
+  for (std::size_t i = 0; i < centres.size(); i += stride) {
+    near.clear();
+    neighbours(i, kReach, &near);
+    if (near.empty()) continue;
+    nearest.push_back(*std::min_element(near.begin(), near.end(), [](Vec p, Vec q) {
+      return p.x * p.x + p.y * p.y < q.x * q.x + q.y * q.y;
+    }));
+  }
+  if (static_cast<int>(nearest.size()) < kMinDots) return lattice;
+  int support = 0;
+  const Vec a = mode_step(nearest, &support);
+  const double period = norm(a);
+  if (period < 2.0 || support < static_cast<int>(nearest.size()) / 3) return lattice;
+  // The second axis: the commonest neighbour step at least 30° off the first.
+  std::vector<Vec> off_axis;
+  for (std::size_t i = 0; i < centres.size(); i += stride) {
+    near.clear();
+    neighbours(i, std::min<double>(kReach, 1.6 * period), &near);
+    for (const Vec& v : near)
+      if (std::abs(cross(a, v)) > 0.5 * period * norm(v)) off_axis.push_back(v);
+  }
+  if (static_cast<int>(off_axis.size()) < kMinDots) return lattice;
+  Vec b = mode_step(off_axis, &support);
+  // The shortest representative of b modulo a.
+  const double along = std::round((a.x * b.x + a.y * b.y) / (period * period));
+  b = {b.x - along * a.x, b.y - along * a.y};
+  const double cell = std::abs(cross(a, b));
+  if (cell < 4.0) return lattice;
+  // Every neighbour step of a lattice's dots is a whole lattice vector.
+  int whole = 0, all = 0;
+  for (std::size_t i = 0; i < centres.size(); i += stride) {
+    near.clear();
+    neighbours(i, std::min<double>(kReach, 1.6 * std::max(period, norm(b))), &near);
+    for (const Vec& v : near) {
+      const double i_a = cross(v, b) / cross(a, b), j_b = cross(a, v) / cross(a, b);
+      ++all;
+      whole += std::abs(i_a - std::round(i_a)) < 0.2 && std::abs(j_b - std::round(j_b)) < 0.2;
+    }
+  }
+  if (all == 0 || whole < kMinWholeShare * all) return lattice;
+  lattice.valid = true;
+  lattice.ax = a.x, lattice.ay = a.y, lattice.bx = b.x, lattice.by = b.y;
+  lattice.dots.assign(static_cast<std::size_t>(w) * h, 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (dot_of[static_cast<std::size_t>(labels.at<int>(y, x))])
+        lattice.dots[static_cast<std::size_t>(y) * w + x] = 1;
+  return lattice;
+}
+
+}  // namespace hair25d::completion::detail
