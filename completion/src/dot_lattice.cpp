@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "inpaint_internal.h"
+#include "raster.h"
 
 namespace hair25d::completion::detail {
 
@@ -61,32 +62,9 @@ Vec mode_step(const std::vector<Vec>& all, int* support) {
   return {sum.x / std::max(1, n), sum.y / std::max(1, n)};
 }
 
-}  // namespace
-
-DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const LabelMap& source,
-                            const std::vector<std::uint8_t>& ink) {
-  DotLattice lattice;
-  const int w = image.width(), h = image.height();
-  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      const bool usable = fill.data()[i] == 0 && (source.empty() || source.data()[i] != 0);
-      if (usable && ink[i]) mask.at<std::uint8_t>(y, x) = 255;
-    }
-  cv::Mat labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
-  std::vector<Vec> centres;
-  std::vector<int> dot_of(static_cast<std::size_t>(n), 0);
-  for (int k = 1; k < n; ++k) {
-    const int area = stats.at<int>(k, cv::CC_STAT_AREA);
-    const int bw = stats.at<int>(k, cv::CC_STAT_WIDTH), bh = stats.at<int>(k, cv::CC_STAT_HEIGHT);
-    if (area < kMinDotArea || area > kMaxDotArea || bw > kMaxDotSide || bh > kMaxDotSide) continue;
-    dot_of[static_cast<std::size_t>(k)] = 1;
-    centres.push_back({centroids.at<double>(k, 0), centroids.at<double>(k, 1)});
-  }
-  if (static_cast<int>(centres.size()) < kMinDots) return lattice;
-
+// The basis vectors a, b of the lattice the dot centres lie on; false when
+// they lie on none.
+bool fit_lattice(const std::vector<Vec>& centres, int w, int h, Vec* a_out, Vec* b_out) {
   // Dots binned by kBin px: a dot's neighbours within kReach px are in the
   // 5×5 bins round its own.
   constexpr int kBin = 8, kReach = 2 * kBin;
@@ -118,11 +96,11 @@ DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const Labe
       return p.x * p.x + p.y * p.y < q.x * q.x + q.y * q.y;
     }));
   }
-  if (static_cast<int>(nearest.size()) < kMinDots) return lattice;
+  if (static_cast<int>(nearest.size()) < kMinDots) return false;
   int support = 0;
-  const Vec a = mode_step(nearest, &support);
+  Vec a = mode_step(nearest, &support);
   const double period = norm(a);
-  if (period < 2.0 || support < static_cast<int>(nearest.size()) / 3) return lattice;
+  if (period < 2.0 || support < static_cast<int>(nearest.size()) / 3) return false;
   // The second axis: the commonest neighbour step at least 30° off the first.
   std::vector<Vec> off_axis;
   for (std::size_t i = 0; i < centres.size(); i += stride) {
@@ -131,13 +109,13 @@ DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const Labe
     for (const Vec& v : near)
       if (std::abs(cross(a, v)) > 0.5 * period * norm(v)) off_axis.push_back(v);
   }
-  if (static_cast<int>(off_axis.size()) < kMinDots) return lattice;
+  if (static_cast<int>(off_axis.size()) < kMinDots) return false;
   Vec b = mode_step(off_axis, &support);
   // The shortest representative of b modulo a.
   const double along = std::round((a.x * b.x + a.y * b.y) / (period * period));
   b = {b.x - along * a.x, b.y - along * a.y};
   const double cell = std::abs(cross(a, b));
-  if (cell < 4.0) return lattice;
+  if (cell < 4.0) return false;
   // Every neighbour step of a lattice's dots is a whole lattice vector.
   int whole = 0, all = 0;
   for (std::size_t i = 0; i < centres.size(); i += stride) {
@@ -149,14 +127,133 @@ DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const Labe
       whole += std::abs(i_a - std::round(i_a)) < 0.2 && std::abs(j_b - std::round(j_b)) < 0.2;
     }
   }
-  if (all == 0 || whole < kMinWholeShare * all) return lattice;
+  if (all == 0 || whole < kMinWholeShare * all) return false;
+  // Least squares over every step within kReach, v = i a + j b for the
+  // rounded lattice coordinates: the nearest steps alone are biased short
+  // where the centres are noisy (a dense tone's cores).
+  double sii = 0, sij = 0, sjj = 0, six = 0, siy = 0, sjx = 0, sjy = 0;
+  for (std::size_t i = 0; i < centres.size(); i += stride) {
+    near.clear();
+    neighbours(i, kReach, &near);
+    for (const Vec& v : near) {
+      const double fi = cross(v, b) / cross(a, b), fj = cross(a, v) / cross(a, b);
+      const double ri = std::round(fi), rj = std::round(fj);
+      if (std::abs(fi - ri) >= 0.2 || std::abs(fj - rj) >= 0.2) continue;
+      sii += ri * ri, sij += ri * rj, sjj += rj * rj;
+      six += ri * v.x, siy += ri * v.y, sjx += rj * v.x, sjy += rj * v.y;
+    }
+  }
+  const double det = sii * sjj - sij * sij;
+  if (det > 0) {
+    a = {(sjj * six - sij * sjx) / det, (sjj * siy - sij * sjy) / det};
+    b = {(sii * sjx - sij * six) / det, (sii * sjy - sij * siy) / det};
+  }
+  *a_out = a, *b_out = b;
+  return true;
+}
+
+// The dots of `mask` (components of min_area to kMaxDotArea px
+// and at most kMaxDotSide px each way): their centres, and per component
+// label whether it is one.
+std::vector<Vec> dots_of(const cv::Mat& mask, int min_area, int connectivity, cv::Mat* labels,
+                         std::vector<std::uint8_t>* is_dot) {
+  cv::Mat stats, centroids;
+  const int n =
+      cv::connectedComponentsWithStats(mask, *labels, stats, centroids, connectivity, CV_32S);
+  std::vector<Vec> centres;
+  is_dot->assign(static_cast<std::size_t>(n), 0);
+  for (int k = 1; k < n; ++k) {
+    const int area = stats.at<int>(k, cv::CC_STAT_AREA);
+    const int bw = stats.at<int>(k, cv::CC_STAT_WIDTH), bh = stats.at<int>(k, cv::CC_STAT_HEIGHT);
+    if (area < min_area || area > kMaxDotArea || bw > kMaxDotSide || bh > kMaxDotSide) continue;
+    (*is_dot)[static_cast<std::size_t>(k)] = 1;
+    centres.push_back({centroids.at<double>(k, 0), centroids.at<double>(k, 1)});
+  }
+  return centres;
+}
+
+}  // namespace
+
+DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const LabelMap& source,
+                            const std::vector<std::uint8_t>& ink) {
+  DotLattice lattice;
+  const int w = image.width(), h = image.height();
+  const auto at = [w](int x, int y) { return static_cast<std::size_t>(y) * w + x; };
+  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
+  std::vector<int> lumas;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = at(x, y);
+      const bool usable = fill.data()[i] == 0 && (source.empty() || source.data()[i] != 0);
+      if (!usable) continue;
+      const Rgba& c = image.data()[i];
+      const int l = (luma(c) * c.a + 255 * (255 - c.a)) / 255;
+      lumas.push_back(l);
+      if (ink[i]) mask.at<std::uint8_t>(y, x) = 255;
+    }
+  cv::Mat labels;
+  std::vector<std::uint8_t> is_dot;
+  Vec a{0, 0}, b{0, 0};
+  std::vector<Vec> centres = dots_of(mask, kMinDotArea, 8, &labels, &is_dot);
+  if (static_cast<int>(centres.size()) >= kMinDots && fit_lattice(centres, w, h, &a, &b)) {
+    lattice.dots.assign(static_cast<std::size_t>(w) * h, 0);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (is_dot[static_cast<std::size_t>(labels.at<int>(y, x))]) lattice.dots[at(x, y)] = 1;
+  } else {
+    // A dense tone: the dots touch through their anti-aliased rims, and the
+    // ink is one web (or, on a tone darker than half its paper, hardly ink
+    // at all: source_ink_options lowers ink_luma). Their cores (the darkest
+    // part of the way from the darkest sources to the paper) stay apart; an ink pixel is the tone's
+    // when its nearest core is a dot's within half a period (a line's own pixels are nearer the
+    // line's dark middle).
+    if (lumas.size() < static_cast<std::size_t>(kMinDots)) return lattice;
+    const auto percentile = [](std::vector<int>& v, double q) {
+      const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
+      std::nth_element(v.begin(), v.begin() + k, v.end());
+      return v[static_cast<std::size_t>(k)];
+    };
+    const int dark = percentile(lumas, 0.05), paper = percentile(lumas, 0.9);
+    if (paper - dark < kMinToneContrast) return lattice;
+    const int core_luma = dark + (paper - dark) * kCoreShare;
+    cv::Mat core(h, w, CV_8U, cv::Scalar(0));
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = at(x, y);
+        if (fill.data()[i] != 0 || (!source.empty() && source.data()[i] == 0)) continue;
+        const Rgba& c = image.data()[i];
+        if ((luma(c) * c.a + 255 * (255 - c.a)) / 255 < core_luma)
+          core.at<std::uint8_t>(y, x) = 255;
+      }
+    // 4-connected: dense dots' cores touch at corners.
+    centres = dots_of(core, 1, 4, &labels, &is_dot);
+    if (static_cast<int>(centres.size()) < kMinDots || !fit_lattice(centres, w, h, &a, &b))
+      return lattice;
+    cv::Mat distance, nearest;
+    cv::distanceTransform(~core, distance, nearest, cv::DIST_L2, cv::DIST_MASK_5,
+                          cv::DIST_LABEL_CCOMP);
+    // distanceTransform's numbers of the cores, read back at their pixels.
+    std::vector<int> core_label;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (core.at<std::uint8_t>(y, x)) {
+          const auto k = static_cast<std::size_t>(nearest.at<int>(y, x));
+          if (core_label.size() <= k) core_label.resize(k + 1, 0);
+          core_label[k] = labels.at<int>(y, x);
+        }
+    const double reach = 0.5 * std::min(norm(a), norm(b));
+    lattice.dots.assign(static_cast<std::size_t>(w) * h, 0);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        if (!mask.at<std::uint8_t>(y, x) || distance.at<float>(y, x) > reach) continue;
+        const int k = nearest.at<int>(y, x);
+        if (k > 0 && k < static_cast<int>(core_label.size()) &&
+            is_dot[static_cast<std::size_t>(core_label[static_cast<std::size_t>(k)])])
+          lattice.dots[at(x, y)] = 1;
+      }
+  }
   lattice.valid = true;
   lattice.ax = a.x, lattice.ay = a.y, lattice.bx = b.x, lattice.by = b.y;
-  lattice.dots.assign(static_cast<std::size_t>(w) * h, 0);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (dot_of[static_cast<std::size_t>(labels.at<int>(y, x))])
-        lattice.dots[static_cast<std::size_t>(y) * w + x] = 1;
   return lattice;
 }
 

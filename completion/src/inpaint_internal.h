@@ -62,6 +62,11 @@ struct DotLattice {
 // lattice vectors (within 0.2 of a cell each way).
 constexpr int kMinDotArea = 2, kMaxDotArea = 60, kMaxDotSide = 10, kMinDots = 30;
 constexpr double kMinWholeShare = 0.8;
+// A dense tone's dot cores: darker than this share of the way from the
+// sources' darkest pixels (5th percentile) to their paper (90th
+// percentile), which must be at least kMinToneContrast apart.
+constexpr double kCoreShare = 0.3;
+constexpr int kMinToneContrast = 64;
 // At most this many dots vote for the basis vectors.
 constexpr std::size_t kSample = 300;
 DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const LabelMap& source,
