@@ -155,6 +155,13 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     for (detail::Edge& e : detail::merge_edges(ctx, ctx.regions.at(id), mine))
       if (e.atoms.size() > 1) candidates.push_back(std::move(e));
   }
+  // Ink edges: join candidates only (never grown), ids past the atoms'.
+  int next_id = static_cast<int>(atoms.size());
+  for (const auto& [id, info] : ctx.regions)
+    for (detail::Edge& e : detail::find_ink_edges(ctx, info, next_id)) {
+      ++next_id;
+      candidates.push_back(std::move(e));
+    }
   report(progress, "completion", 0.2, "matching");
 
   // Case 1, then 2 and 3 for the edges left (§5.4).

@@ -39,6 +39,10 @@ struct Edge {
   // elsewhere (the side of a wide piece running between two occluders): its
   // tangents are only the normal of the chord p q.
   bool guessed = false;
+  // An *ink edge* (find_ink_edges): a run facing the regions `ink`, no
+  // occluders of it, across a cut of drawn ink only (with, for a whole cut,
+  // the occluded runs beside it); empty for an occluding edge.
+  std::set<int> ink;
 };
 
 struct Context {
@@ -77,6 +81,15 @@ struct Context {
 void describe_regions(Context& ctx);
 // Maximal boundary runs under one occluder each ("atoms"), ids from `first_id`.
 std::vector<Edge> find_edges(const Context& ctx, const RegionInfo& region, int first_id);
+// A strand crossed by the tip of another strand thinner than its outline
+// shows two pieces facing each other across ink only: no region lies between
+// them, so neither has an occluder there and no occluding edge faces the
+// other. Runs of the region's outline facing another region, unrelated to it,
+// across at least kMinInkGap px of ink (a line between two touching strands
+// is one outline wide, a crossing tip two), as edges with `ink` set; ids from
+// `first_id`. Case-1 joins pair them only with the other region's run
+// facing back (match_edges); never grown as roots or tips.
+std::vector<Edge> find_ink_edges(const Context& ctx, const RegionInfo& region, int first_id);
 // Neighbouring edges of one region (sorted by `begin`) merged where the
 // visible gap between them is at most merge_gap (§5.2 "ps and sq").
 std::vector<Edge> merge_edges(const Context& ctx, const RegionInfo& region,

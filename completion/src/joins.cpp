@@ -118,6 +118,14 @@ constexpr int kRarePaintSharing = 2;
 constexpr double kRarePaintFlatShare = 0.85;
 constexpr std::size_t kRarePaintRegions = 8;
 
+// Joins across a cut of ink only (`Edge::ink`, find_ink_edges): the pieces
+// face each other across a crossing tip, so their cut chords are short (at
+// most kMaxInkJoinGap px on average), and pieces of flat paint step at most
+// kMaxInkFlatStep RGB, back hair too (no occluder says which pieces lie
+// where, only the paint and the outline).
+constexpr double kMaxInkJoinGap = 16.0;
+constexpr double kMaxInkFlatStep = 0.5;
+
 double colour_step_cost(const PaintStep& s) {
   return (s.flat ? kFlatStepWeight : kColourStepWeight) * s.step / 30.0;
 }
@@ -195,7 +203,7 @@ Polyline join_patch(const Edge& a, const Edge& b) {
 // above no region (not in `front`) that the patch covers.
 double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const cv::Mat& face,
                 int* hidden, const std::set<int>* front = nullptr,
-                std::map<int, int>* lowest = nullptr) {
+                std::map<int, int>* lowest = nullptr, bool ink = false) {
   double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
   for (const Vec2& p : patch) {
     x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
@@ -220,9 +228,12 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       const int l = ctx.labels.at(gx, gy);
       if (l == ra || l == rb) continue;
       ++total;
-      if (l != 0 && (ctx.is_above(l, ra) || ctx.is_above(l, rb))) ++under;
       if (lowest && l != 0 && !front->count(l)) ++(*lowest)[l];
-      if (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ++under;
+      // Across a cut of ink only, the drawn ink is what lies over the gap.
+      if ((l != 0 && (ctx.is_above(l, ra) || ctx.is_above(l, rb))) ||
+          (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ||
+          (ink && ctx.original->at(gx, gy) == 0))
+        ++under;
     }
   *hidden = total;
   return total > 0 ? static_cast<double>(under) / total : 1.0;
@@ -288,7 +299,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   const double max_angle = o.max_join_angle_deg * M_PI / 180.0;
   std::vector<BankCrossings> crossings(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i)
-    if (edges[i].atoms.size() == 1) crossings[i] = cross_occluders(ctx, edges[i]);
+    if (edges[i].atoms.size() == 1 && edges[i].ink.empty())
+      crossings[i] = cross_occluders(ctx, edges[i]);
   // The learned scorer (join_scorer.h) sees candidates up to its band's top.
   const JoinScorerOptions& scorer = o.join_scorer;
   const bool scoring = scorer.enabled || ctx.join_log != nullptr;
@@ -340,10 +352,13 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       const Edge& b = edges[j];
       if (a.region == b.region) continue;
       if (ctx.occludes(a.region, b.region) || ctx.occludes(b.region, a.region)) continue;
+      // An ink edge joins only a region it faces across the ink.
+      const bool ink = !a.ink.empty() || !b.ink.empty();
+      if (ink && !a.ink.count(b.region) && !b.ink.count(a.region)) continue;
       const double colour = (a.colour - b.colour).norm();
       if (colour > o.max_colour_distance) continue;
       BankJoin bank;
-      if (a.atoms.size() == 1 && b.atoms.size() == 1)
+      if (a.atoms.size() == 1 && b.atoms.size() == 1 && !ink)
         bank = bank_join(crossings[i], crossings[j], a, b);
       // p_a ↔ q_b and p_b ↔ q_a: the outlines traverse both pieces the same way.
       const Vec2 c1 = b.q - a.p, c2 = a.q - b.p;
@@ -372,7 +387,15 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         if (nub(b) && side_a <= limit_one && (!one_sided || side_a < *one_sided))
           one_sided = side_a;
       }
-      const bool strand_like = cut_pair && (worst <= max_angle || one_sided);
+      // A cut of ink only runs across a strand, not along it: both pieces
+      // reach at least as deep behind it as a nub (pixels ≥ kNubDepth ×
+      // width²); a run along a strand's side beside another strand, ink
+      // between them all along, is as long as the strand and as shallow.
+      const bool across =
+          !ink || (ctx.regions.at(a.region).pixels >= kNubDepth * a.width * a.width &&
+                   ctx.regions.at(b.region).pixels >= kNubDepth * b.width * b.width &&
+                   0.5 * (c1.norm() + c2.norm()) <= kMaxInkJoinGap);
+      const bool strand_like = cut_pair && across && (worst <= max_angle || one_sided);
       if (!strand_like && bank.share < kMinBankShare) continue;
       Join join;
       join.edge_a = static_cast<int>(i);
@@ -386,7 +409,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       // linear pieces stepping more than their gradient explains.
       const bool other_paint = (step.flat && step.step > kMaxFlatStrandStep &&
                                 (front.count(a.region) > 0 || front.count(b.region) > 0)) ||
-                               step.off_gradient;
+                               step.off_gradient ||
+                               (ink && step.flat && step.step > kMaxInkFlatStep);
       if (strand_like && !other_paint) {
         // The hidden part keeps a strand's width: half-way along the joins its
         // width lies near the widths at the two cuts (criterion 3 of §5.1 seen
@@ -407,7 +431,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                0.5 * (1.0 - narrow / wide) + 0.5 * std::min(gap / wide, 3.0) + kBulgeWeight * bulge;
         // §5.1 matches edges "around a common occluder"; a gap under two
         // overlapping occluders is allowed but costs a little more.
-        bool common = false;
+        bool common = ink;  // the ink is the one occluder
         for (int occ : a.occluders) common = common || b.occluders.count(occ) > 0;
         if (!common) cost += kNoCommonOccluderCost;
         // A colour step the paint does not explain: two flat pieces of
@@ -430,7 +454,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           std::map<int, int> lowest;
           const double cover =
               coverage(ctx, join.patch, a.region, b.region, join.behind_face ? face : no_face,
-                       &hidden, &front, join.behind_face ? &lowest : nullptr);
+                       &hidden, &front, join.behind_face ? &lowest : nullptr, ink);
           const bool over_other_back =
               hidden > 0 &&
               other_back_share(a.region, b.region, lowest) / hidden > kMaxOtherBackShare;

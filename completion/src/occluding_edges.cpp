@@ -1,12 +1,24 @@
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <opencv2/imgproc.hpp>
+#include <set>
 
 #include "context.h"
 #include "raster.h"
 
 namespace hair25d::completion::detail {
 namespace {
+
+// Ink edges (find_ink_edges): the ink between two pieces, from the nearest
+// pixel of one to the nearest of the other (px), at least this much; each
+// searched for within kInkSearch px of the outline.
+constexpr double kMinInkGap = 5.0;
+constexpr int kInkSearch = 8;
+// How far straight out of the outline (outline-assigned labels) another
+// piece is looked for across ink (the drawing's own labels): a crossing
+// tip's ink is assigned to the tip's own region, not to the pieces.
+constexpr int kInkReach = 16;
 
 // Per contour point: the nearest occluder within reach, 0 if none, with a
 // majority filter so junction pixels do not split runs.
@@ -223,6 +235,142 @@ std::vector<Edge> find_edges(const Context& ctx, const RegionInfo& region, int f
     e.atoms = {first_id + static_cast<int>(edges.size())};
     edges.push_back(std::move(e));
   }
+  return edges;
+}
+
+std::vector<Edge> find_ink_edges(const Context& ctx, const RegionInfo& region, int first_id) {
+  std::vector<Edge> edges;
+  const auto& c = region.contour;
+  const int n = static_cast<int>(c.size());
+  if (n < 8) return edges;
+  const std::vector<int> occluded = occluder_labels(ctx, region);
+  // The nearest pixel of `label` in the drawing's own labels (outlines 0)
+  // within kInkSearch of (x, y); a large value when none.
+  auto nearest = [&](int x, int y, int label) {
+    int best = 1 << 30;
+    for (int dy = -kInkSearch; dy <= kInkSearch; ++dy)
+      for (int dx = -kInkSearch; dx <= kInkSearch; ++dx)
+        if (ctx.original->contains(x + dx, y + dy) && ctx.original->at(x + dx, y + dy) == label)
+          best = std::min(best, dx * dx + dy * dy);
+    return std::sqrt(static_cast<double>(best));
+  };
+  std::vector<int> raw(n, 0);
+  bool any = false;
+  for (int i = 0; i < n; ++i) {
+    if (occluded[i] != 0) continue;
+    // The region met first straight out of the outline (its normal, away
+    // from the region), across ink or the region's own assigned outline only.
+    const Vec2 t = centre(c[wrap(i + 3, n)]) - centre(c[wrap(i - 3, n)]);
+    if (t.norm() <= 0) continue;
+    Vec2 normal(-t.y(), t.x());
+    normal.normalize();
+    const Vec2 from = centre(c[i]);
+    if (ctx.label(from + 2.0 * normal) == region.id && ctx.label(from - 2.0 * normal) != region.id)
+      normal = -normal;
+    int best = 0;
+    for (double s = 1.0; s <= kInkReach; s += 0.5) {
+      const Vec2 at = from + s * normal;
+      const int x = static_cast<int>(std::floor(at.x())), y = static_cast<int>(std::floor(at.y()));
+      if (!ctx.original->contains(x, y)) break;
+      const int l = ctx.original->at(x, y);
+      if (l == 0 || l == region.id) continue;
+      if (ctx.regions.count(l) && !ctx.is_above(l, region.id) && !ctx.is_above(region.id, l))
+        best = l;
+      break;
+    }
+    if (best == 0) continue;
+    if (nearest(c[i].x, c[i].y, region.id) + nearest(c[i].x, c[i].y, best) < kMinInkGap) continue;
+    raw[i] = best;
+    any = true;
+  }
+  if (!any) return edges;
+  std::vector<int> ink = raw;
+  for (int i = 0; i < n; ++i) {
+    if (raw[i] == 0) continue;
+    std::map<int, int> votes;
+    for (int k = -2; k <= 2; ++k)
+      if (raw[wrap(i + k, n)] != 0) ++votes[raw[wrap(i + k, n)]];
+    int best = raw[i], most = 0;
+    for (auto [l, v] : votes)
+      if (v > most) most = v, best = l;
+    ink[i] = best;
+  }
+  // The outline beside an ink run is visible where neither an occluder nor
+  // ink faces it (make_edge fits the tangents there).
+  std::vector<int> labels(n, 0);
+  for (int i = 0; i < n; ++i) labels[i] = occluded[i] != 0 ? occluded[i] : -ink[i];
+  // (Negative: facing a region across ink; make_edge counts them occluders,
+  // taken out again below.)
+  int start = -1;
+  for (int i = 0; i < n && start < 0; ++i)
+    if (labels[i] == 0) start = i;
+  if (start < 0) return edges;
+  struct Run {
+    int begin, end, label;
+  };
+  std::vector<Run> runs;
+  for (int k = 1; k < n; ++k) {
+    const int i = start + k, l = ink[wrap(i, n)];
+    if (l == 0 || occluded[wrap(i, n)] != 0) continue;
+    if (!runs.empty() && runs.back().end == i - 1 && runs.back().label == l)
+      runs.back().end = i;
+    else
+      runs.push_back({i, i, l});
+  }
+  const int min_len = static_cast<int>(std::ceil(ctx.options->min_edge_length));
+  std::vector<int> run_atom(runs.size(), -1);
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const Run& r = runs[k];
+    if (r.end - r.begin + 1 < min_len) continue;
+    Edge e = make_edge(ctx, region, labels, r.begin, r.end);
+    e.occluders.clear();
+    e.ink = {r.label};
+    run_atom[k] = first_id + static_cast<int>(edges.size());
+    e.atoms = {run_atom[k]};
+    edges.push_back(std::move(e));
+  }
+  // A cut faces the other piece only in part (the crossing tip's own region
+  // or an occluder faces the rest): the whole run of hidden outline round
+  // each ink run, occluded or inked, visible gaps of at most merge_gap
+  // bridged, as one more candidate.
+  const int gap = static_cast<int>(std::ceil(ctx.options->merge_gap));
+  int next = first_id + static_cast<int>(edges.size());
+  std::vector<Edge> spans;
+  for (int k = 1; k < n;) {
+    const int i = start + k;
+    if (labels[wrap(i, n)] == 0) {
+      ++k;
+      continue;
+    }
+    int end = i, visible = 0;
+    for (int m = i + 1; m < start + n; ++m) {
+      if (labels[wrap(m, n)] != 0) {
+        end = m;
+        visible = 0;
+      } else if (++visible > gap) {
+        break;
+      }
+    }
+    k = end - start + 1;
+    std::set<int> faced;
+    std::vector<int> inner;
+    for (std::size_t r = 0; r < runs.size(); ++r)
+      if (runs[r].begin >= i && runs[r].end <= end) {
+        faced.insert(runs[r].label);
+        if (run_atom[r] >= 0) inner.push_back(run_atom[r]);
+      }
+    const bool single = inner.size() == 1 && faced.size() == 1 &&
+                        std::any_of(runs.begin(), runs.end(),
+                                    [&](const Run& r) { return r.begin == i && r.end == end; });
+    if (faced.empty() || single || end - i + 1 < min_len || end - i + 1 >= n - 2) continue;
+    Edge e = make_edge(ctx, region, labels, i, end);
+    std::erase_if(e.occluders, [](int l) { return l <= 0; });
+    e.ink = faced;
+    e.atoms = inner;
+    e.atoms.push_back(next++);
+    spans.push_back(std::move(e));
+  }
+  for (Edge& e : spans) edges.push_back(std::move(e));
   return edges;
 }
 

@@ -204,5 +204,57 @@ TEST(StrandJoins, PiecesOfOneRarePaintAreJoinedAcrossALongBendingGap) {
   EXPECT_EQ(joined_with_1(arch_under_band(kStrand)), (std::vector<int>{1}));
 }
 
+// A vertical strand (x 100..140) over a wide lowest region 4, crossed at y
+// 136..142 by `ink` — the tip of another strand thinner than its outline,
+// drawn as ink only — into the upper piece 1 (y 60..136) and the lower
+// piece 2 (y 142..230, in `lower`). No region lies between the pieces, so
+// neither lies under anything there.
+Drawing strand_cut_by_ink(Rgba lower) {
+  Drawing d = blank(250, 300);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kBack, 4);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y > 60 && y < 136; }, kStrand, 1);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y >= 142 && y < 230; }, lower, 2);
+  for (int y = 136; y < 142; ++y)
+    for (int x = 80; x < 160; ++x) {
+      d.image.at(x, y) = Rgba{20, 15, 10, 255};
+      d.regions.at(x, y) = 0;
+    }
+  d.relations = {below(4, 1), below(4, 2)};
+  return d;
+}
+
+// Two strands side by side (x 100..128 and 136..164, y 60..230) over a wide
+// lowest region 4, a band of ink 8 px wide between them all along.
+Drawing strands_beside_ink() {
+  Drawing d = blank(250, 300);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kBack, 4);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 128 && y > 60 && y < 230; }, kStrand, 1);
+  paint(
+      d, [](double x, double y) { return x > 136 && x < 164 && y > 60 && y < 230; }, kStrand, 2);
+  for (int y = 60; y < 230; ++y)
+    for (int x = 128; x < 136; ++x) {
+      d.image.at(x, y) = Rgba{20, 15, 10, 255};
+      d.regions.at(x, y) = 0;
+    }
+  d.relations = {below(4, 1), below(4, 2)};
+  return d;
+}
+
+TEST(StrandJoins, StrandCutByInkOnlyIsJoined) {
+  // The pieces face each other across 10 px of ink (their own outlines and
+  // the crossing tip) and no occluder: one strand, its sides running on.
+  EXPECT_EQ(joined_with_1(strand_cut_by_ink(kStrand)), (std::vector<int>{1, 2}));
+  // Another flat paint below the ink is another strand.
+  EXPECT_EQ(joined_with_1(strand_cut_by_ink(Rgba{206, 155, 114, 255})), (std::vector<int>{1}));
+  // Two strands side by side, ink between them all along: no cut across a
+  // strand, whatever the paint.
+  EXPECT_EQ(joined_with_1(strands_beside_ink()), (std::vector<int>{1}));
+}
+
 }  // namespace
 }  // namespace hair25d::completion
