@@ -259,7 +259,8 @@ std::vector<Edge> find_ink_edges(const Context& ctx, const RegionInfo& region, i
   for (int i = 0; i < n; ++i) {
     if (occluded[i] != 0) continue;
     // The region met first straight out of the outline (its normal, away
-    // from the region), across ink or the region's own assigned outline only.
+    // from the region) in the drawing's own labels, across ink (0) and the
+    // region's own pixels only.
     const Vec2 t = centre(c[wrap(i + 3, n)]) - centre(c[wrap(i - 3, n)]);
     if (t.norm() <= 0) continue;
     Vec2 normal(-t.y(), t.x());
