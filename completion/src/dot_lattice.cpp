@@ -172,6 +172,48 @@ std::vector<Vec> dots_of(const cv::Mat& mask, int min_area, int connectivity, cv
   return centres;
 }
 
+// An upper bound on the number of dots dots_of would find in `mask`: its
+// runs (of at most kMaxDotSide px) that touch no pixel of the row above.
+// Every component has at least one such run, its first, and a dot's first
+// run is no longer than the dot is wide. Far cheaper than the labelling:
+// where it is under kMinDots (a flat strand's lines and their cores) no
+// lattice can be found there.
+int dot_bound(const cv::Mat& mask, int connectivity) {
+  const int reach = connectivity == 8 ? 1 : 0;
+  int bound = 0;
+  for (int y = 0; y < mask.rows; ++y) {
+    const std::uint8_t* row = mask.ptr<std::uint8_t>(y);
+    const std::uint8_t* above = y > 0 ? mask.ptr<std::uint8_t>(y - 1) : nullptr;
+    for (int x = 0; x < mask.cols;) {
+      if (!row[x]) {
+        ++x;
+        continue;
+      }
+      const int x0 = x;
+      while (x < mask.cols && row[x]) ++x;
+      if (x - x0 > kMaxDotSide) continue;
+      bool joined = false;
+      if (above != nullptr)
+        for (int i = std::max(0, x0 - reach); i < std::min(mask.cols, x + reach) && !joined; ++i)
+          joined = above[i] != 0;
+      bound += !joined;
+    }
+  }
+  return bound;
+}
+
+// The q-th quantile of the values counted in `histogram` (`total` of them):
+// the value std::nth_element puts at position q·(total − 1).
+int percentile(const std::vector<std::size_t>& histogram, std::size_t total, double q) {
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(total - 1));
+  std::size_t seen = 0;
+  for (std::size_t v = 0; v < histogram.size(); ++v) {
+    seen += histogram[v];
+    if (seen > k) return static_cast<int>(v);
+  }
+  return static_cast<int>(histogram.size()) - 1;
+}
+
 }  // namespace
 
 DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const LabelMap& source,
@@ -180,7 +222,9 @@ DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const Labe
   const int w = image.width(), h = image.height();
   const auto at = [w](int x, int y) { return static_cast<std::size_t>(y) * w + x; };
   cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
-  std::vector<int> lumas;
+  // The sources' lumas, counted per value (for the dense tone's percentiles).
+  std::vector<std::size_t> lumas(256, 0);
+  std::size_t usable_count = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const std::size_t i = at(x, y);
@@ -188,13 +232,15 @@ DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const Labe
       if (!usable) continue;
       const Rgba& c = image.data()[i];
       const int l = (luma(c) * c.a + 255 * (255 - c.a)) / 255;
-      lumas.push_back(l);
+      ++lumas[static_cast<std::size_t>(l)];
+      ++usable_count;
       if (ink[i]) mask.at<std::uint8_t>(y, x) = 255;
     }
   cv::Mat labels;
   std::vector<std::uint8_t> is_dot;
   Vec a{0, 0}, b{0, 0};
-  std::vector<Vec> centres = dots_of(mask, kMinDotArea, 8, &labels, &is_dot);
+  std::vector<Vec> centres;
+  if (dot_bound(mask, 8) >= kMinDots) centres = dots_of(mask, kMinDotArea, 8, &labels, &is_dot);
   if (static_cast<int>(centres.size()) >= kMinDots && fit_lattice(centres, w, h, &a, &b)) {
     lattice.dots.assign(static_cast<std::size_t>(w) * h, 0);
     for (int y = 0; y < h; ++y)
@@ -207,13 +253,9 @@ DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const Labe
     // part of the way from the darkest sources to the paper) stay apart; an ink pixel is the tone's
     // when its nearest core is a dot's within half a period (a line's own pixels are nearer the
     // line's dark middle).
-    if (lumas.size() < static_cast<std::size_t>(kMinDots)) return lattice;
-    const auto percentile = [](std::vector<int>& v, double q) {
-      const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
-      std::nth_element(v.begin(), v.begin() + k, v.end());
-      return v[static_cast<std::size_t>(k)];
-    };
-    const int dark = percentile(lumas, 0.05), paper = percentile(lumas, 0.9);
+    if (usable_count < static_cast<std::size_t>(kMinDots)) return lattice;
+    const int dark = percentile(lumas, usable_count, 0.05);
+    const int paper = percentile(lumas, usable_count, 0.9);
     if (paper - dark < kMinToneContrast) return lattice;
     const int core_luma = dark + (paper - dark) * kCoreShare;
     cv::Mat core(h, w, CV_8U, cv::Scalar(0));
@@ -226,6 +268,7 @@ DotLattice find_dot_lattice(const Image& image, const LabelMap& fill, const Labe
           core.at<std::uint8_t>(y, x) = 255;
       }
     // 4-connected: dense dots' cores touch at corners.
+    if (dot_bound(core, 4) < kMinDots) return lattice;
     centres = dots_of(core, 1, 4, &labels, &is_dot);
     if (static_cast<int>(centres.size()) < kMinDots || !fit_lattice(centres, w, h, &a, &b))
       return lattice;
