@@ -157,12 +157,22 @@ std::vector<Landing> paths_between(const Context& ctx, int a, int b, const std::
         queue.push_back(i);
       }
   std::vector<Landing> out;
-  std::set<int> landed;
+  std::vector<std::uint8_t> landed(origin.size(), 0);
+  // `common` as a table by label (the search's inner loop).
+  std::vector<std::uint8_t> is_common(common.empty() ? 0 : std::max(0, *common.rbegin() + 1), 0);
+  for (int c : common)
+    if (c >= 0) is_common[static_cast<std::size_t>(c)] = 1;
+  const auto in_common = [&](int l) {
+    return l >= 0 && static_cast<std::size_t>(l) < is_common.size() &&
+           is_common[static_cast<std::size_t>(l)] != 0;
+  };
   const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
   while (!queue.empty()) {
     const int i = queue.front();
     queue.pop_front();
-    if (steps[i] > reach) continue;
+    // Breadth first, the steps never decrease along the queue: the rest is
+    // beyond reach too.
+    if (steps[i] > reach) break;
     const int x = i % w, y = i / w;
     for (int k = 0; k < 4; ++k) {
       const int nx = x + dx[k], ny = y + dy[k];
@@ -171,7 +181,8 @@ std::vector<Landing> paths_between(const Context& ctx, int a, int b, const std::
       if (origin[j] >= 0) continue;
       const int l = ctx.labels.at(nx + box.x, ny + box.y);
       if (l == b) {
-        if (crossed[i] && landed.insert(j).second) {
+        if (crossed[i] && !landed[j]) {
+          landed[j] = 1;
           const int o = origin[i];
           out.push_back({Vec2(o % w + box.x + 0.5, o / w + box.y + 0.5),
                          Vec2(nx + box.x + 0.5, ny + box.y + 0.5)});
@@ -179,7 +190,7 @@ std::vector<Landing> paths_between(const Context& ctx, int a, int b, const std::
         continue;
       }
       const bool zero = l == 0;
-      if (!zero && !common.count(l)) continue;
+      if (!zero && !in_common(l)) continue;
       if (zero && zeros[i] + 1 > kMaxZeroRun) continue;
       origin[j] = origin[i];
       steps[j] = steps[i] + 1;
