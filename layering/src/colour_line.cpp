@@ -58,6 +58,10 @@ double to_segment(const Rgb& c, const Rgb& a, const Rgb& b) {
   return std::sqrt(d2);
 }
 
+// Paper at or under this grey level (a quarter of the range) is dark paint:
+// black ink on it shows little in grey however plain it is.
+constexpr double kDarkPaper = 64.0;
+
 int label_at(const LabelMap& labels, double x, double y) {
   const int xi = static_cast<int>(std::floor(x)), yi = static_cast<int>(std::floor(y));
   if (xi < 0 || yi < 0 || xi >= labels.width() || yi >= labels.height()) return -1;
@@ -122,7 +126,13 @@ BoundaryLine colour_line(const Image& image, double line_width, const Polyline& 
     }
     const double grey_low = std::min(grey_left, grey_right) - darkest;
     const double grey_high = std::max(grey_left, grey_right) - darkest;
-    values.push_back(std::max(grey_low, std::min(farthest / std::sqrt(3.0), grey_high)));
+    // Where both paints are dark (black hair: two strands of one dark paint),
+    // neither side leaves the grey levels room for a line, so neither is a
+    // measure of how visible it is: the cap is then what black ink would
+    // show in grey against the brighter paint, its grey level.
+    const double bright = std::max(grey_left, grey_right);
+    const double cap = bright <= kDarkPaper ? std::max(grey_high, bright) : grey_high;
+    values.push_back(std::max(grey_low, std::min(farthest / std::sqrt(3.0), cap)));
     grey_values.push_back(grey_low);
   }
   if (values.empty()) return out;

@@ -22,7 +22,10 @@ namespace hair25d::layering::detail {
 // step, JPEG's chroma — lies on it). The sample's value is the lower side's
 // grey contrast lifted by that colour distance, at most up to the higher
 // side's: ink is as visible against paint as dark as it as, in grey, against
-// the other paint, never more. Colours are read bilinearly (paper: the pixel
+// the other paint, never more; where both papers are dark (grey level 64
+// or less: black hair, often one paint on both sides, so neither side sees
+// the line in grey) the cap is instead the brighter paper's grey level, the
+// most any ink could show in grey there. Colours are read bilinearly (paper: the pixel
 // whose label is read), translucent pixels over white. Median (contrast)
 // and lower quartile (contrast_low) of the values, but only where the
 // median lifted value is at least twice the median lower-side grey

@@ -70,6 +70,37 @@ TEST(ColourLine, InkOnPaintAsDarkAsItIsALine) {
               1e-9);
 }
 
+// Black hair: two strands of one dark paint with ink of its grey level
+// between them. Neither side sees the line in grey (0.5 levels both), so
+// the other side's grey contrast cannot cap the colour: the paper is too
+// dark for any ink to show much in grey, and the ink's colour distance to
+// the paint, (10, −10, 30)/√3 ≈ 19.1, is the line.
+TEST(ColourLine, InkBetweenTwoStrandsOfOneDarkPaintIsALine) {
+  TwoPaints d(true, false);
+  for (int y = 0; y < 43; ++y)
+    for (int x = 0; x < 61; ++x) d.image.at(x, y) = x == 29 || x == 30 ? kInk : kDark;
+  const int l = left_of(d);
+  ASSERT_NE(l, 0);
+  const detail::LineResponse grey(d.image, 2.0, 0, 0, 61, 43);
+  EXPECT_LT(grey.measure(d.boundary(), 3.0, d.labels, l, 3 - l).contrast, 1.0);
+  const detail::BoundaryLine c = d.colour(l, 3 - l);
+  EXPECT_NEAR(c.contrast, std::sqrt(1100.0 / 3.0), 0.5);
+  EXPECT_NEAR(c.contrast_low, c.contrast, 0.5);
+}
+
+// The same on light paint: ink of the paint's grey level but another hue
+// is no line the colour may lift past what the grey levels see (0 here).
+TEST(ColourLine, InkOfTheGreyOfOneLightPaintIsCappedByTheGrey) {
+  TwoPaints d(true, false);
+  for (int y = 0; y < 43; ++y)
+    for (int x = 0; x < 61; ++x)
+      d.image.at(x, y) = x == 29 || x == 30 ? Rgba{150, 160, 100, 255}   // grey 150.2
+                                            : Rgba{180, 140, 150, 255};  // grey 153.3
+  const int l = left_of(d);
+  ASSERT_NE(l, 0);
+  EXPECT_LT(d.colour(l, 3 - l).contrast, 4.0);
+}
+
 TEST(ColourLine, ToneStepAndBlendAreNoLine) {
   for (const bool blend : {false, true}) {
     const TwoPaints d(false, blend);
