@@ -100,19 +100,32 @@ BoundaryLine colour_line(const Image& image, double line_width, const Polyline& 
     // the rim of the other side's paint).
     Rgb paint_left{}, paint_right{};
     double grey_left = -1.0, grey_right = -1.0;
+    // On dark paint the ink may be the brighter (grey ink on black-purple
+    // paint), and the brightest point is then the line's rim or, on a thin
+    // strand, its other outline: there the paper is the first point beyond
+    // the line's cross-section.
+    Rgb far_left{}, far_right{};
+    double grey_far_left = -1.0, grey_far_right = -1.0;
     for (double s = 1.0; s <= reach + 1e-9; s += 1.0) {
       const Vec2 l = p + s * to_left, r = p - s * to_left;
       if (label_at(labels, l.x(), l.y()) == left) {
         const Rgb c = pixel_at(image, l.x(), l.y());
         if (grey_of(c) > grey_left) grey_left = grey_of(c), paint_left = c;
+        if (s > half && grey_far_left < 0.0) grey_far_left = grey_of(c), far_left = c;
       }
       if (label_at(labels, r.x(), r.y()) == right) {
         const Rgb c = pixel_at(image, r.x(), r.y());
         if (grey_of(c) > grey_right) grey_right = grey_of(c), paint_right = c;
+        if (s > half && grey_far_right < 0.0) grey_far_right = grey_of(c), far_right = c;
       }
     }
     const bool found_left = grey_left >= 0.0, found_right = grey_right >= 0.0;
     if (!found_left || !found_right) continue;
+    if (std::max(grey_left, grey_right) <= kDarkPaper && grey_far_left >= 0.0 &&
+        grey_far_right >= 0.0) {
+      grey_left = grey_far_left, paint_left = far_left;
+      grey_right = grey_far_right, paint_right = far_right;
+    }
     // The line's colour may lift the side where the grey levels see no line
     // (paint as dark as the ink) up to the contrast the grey levels see on
     // the other side, not beyond: where both sides see a faint line in grey

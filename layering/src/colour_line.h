@@ -25,12 +25,15 @@ namespace hair25d::layering::detail {
 // the other paint, never more; where both papers are dark (grey level 64
 // or less: black hair, often one paint on both sides, so neither side sees
 // the line in grey) the cap is instead the brighter paper's grey level, the
-// most any ink could show in grey there. Colours are read bilinearly (paper: the pixel
-// whose label is read), translucent pixels over white. Median (contrast)
-// and lower quartile (contrast_low) of the values, but only where the
-// median lifted value is at least twice the median lower-side grey
-// contrast — the colour sees a line the grey levels miss; otherwise, and
-// without samples with paper on both sides, 0. colour_difference is 0.
+// most any ink could show in grey there, and each side's paper is the
+// first point beyond the line's cross-section (grey ink on black paint may
+// be brighter than the paint: the brightest point is then the line's rim
+// or a thin strand's other outline). Colours
+// are read bilinearly (paper: the pixel whose label is read), translucent
+// pixels over white. Median (contrast) and lower quartile (contrast_low) of the values, but only
+// where the median lifted value is at least twice the median lower-side grey contrast — the colour
+// sees a line the grey levels miss; otherwise, and without samples with paper on both sides, 0.
+// colour_difference is 0.
 BoundaryLine colour_line(const Image& image, double line_width, const Polyline& curve, double skip,
                          const LabelMap& labels, int left, int right);
 

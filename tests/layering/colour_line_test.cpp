@@ -88,6 +88,37 @@ TEST(ColourLine, InkBetweenTwoStrandsOfOneDarkPaintIsALine) {
   EXPECT_NEAR(c.contrast_low, c.contrast, 0.5);
 }
 
+// Black-purple paint under grey ink that is brighter than it (grey 28
+// against 15.5): the brightest point beside the boundary is the line's own
+// rim, so the paper is read beyond the line's cross-section. The ink lies
+// (3, 23, −17)/√3 ≈ 16.6 off the paint; on paper this dark the lift is
+// capped at the paper's grey level, 15.5.
+TEST(ColourLine, InkBrighterThanBlackPaintIsALine) {
+  TwoPaints d(true, false);
+  for (int y = 0; y < 43; ++y)
+    for (int x = 0; x < 61; ++x)
+      d.image.at(x, y) = x == 29 || x == 30 ? Rgba{28, 28, 28, 255} : Rgba{25, 5, 45, 255};
+  const int l = left_of(d);
+  ASSERT_NE(l, 0);
+  const detail::BoundaryLine c = d.colour(l, 3 - l);
+  EXPECT_NEAR(c.contrast, 0.299 * 25 + 0.587 * 5 + 0.114 * 45, 0.5);
+  EXPECT_NEAR(c.contrast_low, c.contrast, 0.5);
+}
+
+// The same on a thin strand: 5 px right of the line runs the strand's
+// other outline, within the reach of the paper, brighter than the paint.
+// The paper is the paint just beyond the line, not that outline.
+TEST(ColourLine, InkBrighterThanBlackPaintOnAThinStrandIsALine) {
+  TwoPaints d(true, false);
+  for (int y = 0; y < 43; ++y)
+    for (int x = 0; x < 61; ++x)
+      d.image.at(x, y) =
+          x == 29 || x == 30 || x == 36 || x == 37 ? Rgba{28, 28, 28, 255} : Rgba{25, 5, 45, 255};
+  const int l = left_of(d);
+  ASSERT_NE(l, 0);
+  EXPECT_NEAR(d.colour(l, 3 - l).contrast, 0.299 * 25 + 0.587 * 5 + 0.114 * 45, 0.5);
+}
+
 // The same on light paint: ink of the paint's grey level but another hue
 // is no line the colour may lift past what the grey levels see (0 here).
 TEST(ColourLine, InkOfTheGreyOfOneLightPaintIsCappedByTheGrey) {
