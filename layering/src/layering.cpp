@@ -253,7 +253,15 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
       typical = c;
       if (acc >= 0.25 * total) break;
     }
-    const double floor = std::max(6.0, 4.0 * lines.noise_sigma());
+    // The floor is over the noise of the grey levels the lines are measured
+    // on (blurred at a quarter line width): 8 σ of them, which is 4 σ of the
+    // raw pixels at lines up to 2.4 px (the blur's least σ, 0.6) and less at
+    // wider ones, where the blur leaves less noise. A boundary with no line
+    // under noise reads about 1–2 σ of the blurred levels (the paper and the
+    // centre are extremes of noisy samples); a faint outline of 13–18 grey
+    // levels under a hair painted dark, beside noise of σ 6, read under the
+    // 4 σ of the raw pixels (17) at 4–5 px lines.
+    const double floor = std::max(6.0, 8.0 * lines.smoothed_noise_sigma());
     out.line_threshold = std::max(floor, options.line_threshold_fraction * typical);
   }
   // A line the grey levels miss (a black outline on paint as dark as it) is

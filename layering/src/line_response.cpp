@@ -463,6 +463,16 @@ void LineResponse::smooth(double line_width, int x0, int y0, int x1, int y1, boo
   }
 }
 
+double LineResponse::smoothed_noise_sigma() const {
+  const double sigma = grey_sigma(line_width_);
+  // The kernel cv::GaussianBlur makes for a float image at this σ.
+  const int ksize = static_cast<int>(std::lround(sigma * 4 * 2 + 1)) | 1;
+  const cv::Mat k = cv::getGaussianKernel(ksize, sigma, CV_64F);
+  double gain = 0.0;
+  for (int i = 0; i < ksize; ++i) gain += k.at<double>(i) * k.at<double>(i);
+  return noise_sigma() * gain;
+}
+
 void LineResponse::estimate_noise() {
   if (noise_w_ == 0) return;
   const cv::Mat raw(image_->height(), image_->width(), CV_32F, raw_.get());

@@ -144,6 +144,11 @@ class LineResponse {
   // (After the early blur it is estimated on a second core while the
   // caller measures lines, and waited for here.)
   double noise_sigma() const { return noise_.valid() ? noise_.get() : noise_sigma_; }
+  // The same noise after the blur at a quarter line width that the lines
+  // are measured on: σ × Σ k_i² of the blur's 1-D kernel (the 2-D kernel's
+  // weights are k_i k_j, so its gain on i.i.d. noise is (Σ k_i²)² in
+  // variance), about σ / (2√π × the blur's σ).
+  double smoothed_noise_sigma() const;
 
   // Line width estimated from the image alone: the most common width of dark
   // runs across rows and columns, for maps that carry no outlines.
