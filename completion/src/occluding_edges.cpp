@@ -20,6 +20,25 @@ constexpr int kInkSearch = 8;
 // tip's ink is assigned to the tip's own region, not to the pieces.
 constexpr int kInkReach = 16;
 
+// Each labelled point of a closed contour takes the label most of its five
+// neighbours (itself and two either side) carry, so that one stray pixel at a
+// junction does not split a run; unlabelled points stay 0.
+std::vector<int> majority_labels(const std::vector<int>& raw) {
+  const int n = static_cast<int>(raw.size());
+  std::vector<int> out = raw;
+  for (int i = 0; i < n; ++i) {
+    if (raw[i] == 0) continue;
+    std::map<int, int> votes;
+    for (int k = -2; k <= 2; ++k)
+      if (raw[wrap(i + k, n)] != 0) ++votes[raw[wrap(i + k, n)]];
+    int best = raw[i], most = 0;
+    for (auto [l, v] : votes)
+      if (v > most) most = v, best = l;
+    out[i] = best;
+  }
+  return out;
+}
+
 // Per contour point: the nearest occluder within reach, 0 if none, with a
 // majority filter so junction pixels do not split runs.
 std::vector<int> occluder_labels(const Context& ctx, const RegionInfo& region) {
@@ -38,18 +57,7 @@ std::vector<int> occluder_labels(const Context& ctx, const RegionInfo& region) {
       }
     raw[i] = best;
   }
-  std::vector<int> out = raw;
-  for (int i = 0; i < n; ++i) {
-    if (raw[i] == 0) continue;
-    std::map<int, int> votes;
-    for (int k = -2; k <= 2; ++k)
-      if (raw[wrap(i + k, n)] != 0) ++votes[raw[wrap(i + k, n)]];
-    int best = raw[i], most = 0;
-    for (auto [l, v] : votes)
-      if (v > most) most = v, best = l;
-    out[i] = best;
-  }
-  return out;
+  return majority_labels(raw);
 }
 
 // Builds an edge over contour indices begin..end (unwrapped, end >= begin).
@@ -285,17 +293,7 @@ std::vector<Edge> find_ink_edges(const Context& ctx, const RegionInfo& region, i
     any = true;
   }
   if (!any) return edges;
-  std::vector<int> ink = raw;
-  for (int i = 0; i < n; ++i) {
-    if (raw[i] == 0) continue;
-    std::map<int, int> votes;
-    for (int k = -2; k <= 2; ++k)
-      if (raw[wrap(i + k, n)] != 0) ++votes[raw[wrap(i + k, n)]];
-    int best = raw[i], most = 0;
-    for (auto [l, v] : votes)
-      if (v > most) most = v, best = l;
-    ink[i] = best;
-  }
+  const std::vector<int> ink = majority_labels(raw);
   // The outline beside an ink run is visible where neither an occluder nor
   // ink faces it (make_edge fits the tangents there).
   std::vector<int> labels(n, 0);
