@@ -84,7 +84,7 @@ BoundaryLine colour_line(const Image& image, double line_width, const Polyline& 
   const double reach = reaches.paper;
   const int span = std::max(2, static_cast<int>(std::lround(line_width)));
   const int stride = n > 40 ? 2 : 1;
-  std::vector<double> values, grey_values;
+  std::vector<double> values, grey_values, papers;
   double along = 0.0;
   for (int i = 0; i < n; ++i) {
     if (i > 0) along += (pts[i] - pts[i - 1]).norm();
@@ -144,6 +144,7 @@ BoundaryLine colour_line(const Image& image, double line_width, const Polyline& 
     // measure of how visible it is: the cap is then what black ink would
     // show in grey against the brighter paint, its grey level.
     const double bright = std::max(grey_left, grey_right);
+    papers.push_back(bright);
     const double cap = bright <= kDarkPaper ? std::max(grey_high, bright) : grey_high;
     values.push_back(std::max(grey_low, std::min(farthest / std::sqrt(3.0), cap)));
     grey_values.push_back(grey_low);
@@ -157,6 +158,7 @@ BoundaryLine colour_line(const Image& image, double line_width, const Polyline& 
   // Only where the colour sees at least twice the line the grey levels see
   // (read here on the same pixels): elsewhere the grey contrast stands.
   const double line = median(values);
+  out.paper = median(papers);
   if (median(grey_values) > 0.5 * line) return out;
   out.contrast = line;
   std::vector<double> sorted = values;

@@ -27,6 +27,9 @@ namespace hair25d::layering {
 namespace {
 
 constexpr double kClamp = 1e6;  // unary that pins a user-fixed boundary
+// Paper at or under this grey level is dark paint (colour_line.cpp): the
+// line threshold is lower there.
+constexpr double kDarkPaper = 64.0;
 
 std::string num(double v) {
   std::ostringstream s;
@@ -239,6 +242,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     rep.colour_difference = line.colour_difference;
     weighted.emplace_back(rep.line_contrast, rep.length);
   }
+  double noise_floor = 0.0;  // the automatic threshold's floor from the noise
   if (options.line_threshold > 0) {
     out.line_threshold = options.line_threshold;
   } else {
@@ -261,13 +265,23 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     // centre are extremes of noisy samples); a faint outline of 13–18 grey
     // levels under a hair painted dark, beside noise of σ 6, read under the
     // 4 σ of the raw pixels (17) at 4–5 px lines.
-    const double floor = std::max(6.0, 8.0 * lines.smoothed_noise_sigma());
+    noise_floor = 8.0 * lines.smoothed_noise_sigma();
+    const double floor = std::max(6.0, noise_floor);
     out.line_threshold = std::max(floor, options.line_threshold_fraction * typical);
   }
   // A line the grey levels miss (a black outline on paint as dark as it) is
   // looked for in colour (colour_line.h) on the boundaries under the
   // threshold, those of at least 4 line widths (on shorter ones the
   // cross-sections reach the lines of the junctions).
+  // On dark paint (both papers at grey level 64 or less, colour_line.h) the
+  // threshold is per boundary and lower: no ink shows more in grey than the
+  // paper's grey level, so between strands of black hair a plain outline
+  // reads 4–6 grey levels, under the drawing's floor of 6 (a dark backdrop)
+  // or far under a threshold set by a light backdrop's outlines (30 or
+  // more). There it is 4, or two thirds of the noise floor if more.
+  std::vector<double> threshold(nb, out.line_threshold);
+  const double dark_threshold =
+      std::min(out.line_threshold, std::max(4.0, 2.0 / 3.0 * noise_floor));
   for (int i = 0; i < nb; ++i) {
     const Boundary& b = bs[i];
     BoundaryReport& rep = out.boundaries[i];
@@ -277,7 +291,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     if (b.closed()) curve.push_back(curve.front());
     const detail::BoundaryLine seen = detail::colour_line(
         image, out.line_width, curve, 1.5 * out.line_width, out.labels, b.left, b.right);
-    if (seen.contrast >= out.line_threshold) {
+    if (options.line_threshold <= 0 && seen.paper > 0.0 && seen.paper <= kDarkPaper)
+      threshold[i] = dark_threshold;
+    if (seen.contrast >= threshold[i] && seen.contrast > rep.line_contrast) {
       rep.line_contrast = seen.contrast;
       rep.line_contrast_low = seen.contrast_low;
     }
@@ -287,7 +303,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     BoundaryReport& rep = out.boundaries[i];
     if (b.left == kOutsideLabel || b.right == kOutsideLabel) continue;
     rep.occluding =
-        rep.line_contrast >= out.line_threshold && !fixed_equal.contains(key(b.left, b.right));
+        rep.line_contrast >= threshold[i] && !fixed_equal.contains(key(b.left, b.right));
   }
 
   // --- Junction angles, Φ_J, Φ_R, Φ (§4.2–4.4). ---
@@ -539,8 +555,8 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     BoundaryReport& rep = out.boundaries[i];
     EqualCues& e = rep.equal_cues;
     e.length_widths = rep.length / out.line_width;
-    e.contrast_ratio = rep.line_contrast / out.line_threshold;
-    e.contrast_low_ratio = rep.line_contrast_low / out.line_threshold;
+    e.contrast_ratio = rep.line_contrast / threshold[i];
+    e.contrast_low_ratio = rep.line_contrast_low / threshold[i];
     e.colour_difference = rep.colour_difference;
     e.typical_colour_difference = typical_step;
     e.order_log_odds = rep.learned;

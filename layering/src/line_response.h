@@ -38,6 +38,9 @@ struct BoundaryLine {
   // Euclidean / √3) between the two sides just beyond the line: two halves of
   // one strand share their paint, an occluder often does not.
   double colour_difference = 0.0;
+  // colour_line only: median over samples of the brighter side's paper grey
+  // level (0 without samples), what black ink could show there at most.
+  double paper = 0.0;
 };
 
 // Grey levels of [x0, x0 + w) × [y0, y0 + h) of `image` into `out` (w × h,

@@ -196,5 +196,44 @@ TEST(ColourLine, LayeringCallsTheInkedBoundaryOccluding) {
     EXPECT_NE(rel.relation, Relation::kEqual) << rel.a << "|" << rel.b;
 }
 
+// Black hair drawn in near-neutral paint with ink a little darker: a plain
+// outline between strands reads only 4–6 grey levels, as no ink shows more
+// than the paint's grey level. On dark paper (64 or less) the threshold is
+// 4, not the drawing's floor of 6, so the outlines are occluding (before,
+// every pair came out "equal"); two regions of one paint meeting without
+// ink stay non-occluding.
+TEST(ColourLine, FaintInkOnBlackPaintIsOccludingUnderTheFloor) {
+  const int w = 90, h = 61;
+  constexpr Rgba kBlack{30, 28, 34, 255};  // grey level 29.3
+  constexpr Rgba kFaint{24, 22, 28, 255};  // grey level 23.3
+  Image image(w, h, kBlack);
+  LabelMap labels(w, h, 0);
+  auto strand = [&](int x0, int x1, int y0, int y1, int id) {
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const bool edge = x < x0 + 2 || x >= x1 - 2 || y < y0 + 2 || y >= y1 - 2;
+        image.at(x, y) = edge ? kFaint : kBlack;
+        labels.at(x, y) = edge ? 0 : id;
+      }
+  };
+  strand(8, 50, 6, 55, 1);
+  strand(48, 82, 6, 55, 2);
+  strand(30, 70, 20, 40, 3);
+  // Region 4: the lower part of strand 1 with no ink between them.
+  for (int y = 45; y < 53; ++y)
+    for (int x = 10; x < 30; ++x) labels.at(x, y) = 4;
+  const Result r = layer_regions(image, labels);
+  EXPECT_NEAR(r.line_threshold, 6.0, 0.5);
+  int inked = 0;
+  for (const BoundaryReport& b : r.boundaries) {
+    if (b.left <= 0 || b.right <= 0) continue;
+    const bool split = b.left == 4 || b.right == 4;
+    if (!split) ++inked;
+    EXPECT_EQ(b.occluding, !split) << b.left << "|" << b.right << " contrast " << b.line_contrast
+                                   << " threshold " << r.line_threshold;
+  }
+  EXPECT_GE(inked, 3);
+}
+
 }  // namespace
 }  // namespace hair25d::layering
