@@ -58,10 +58,6 @@ double to_segment(const Rgb& c, const Rgb& a, const Rgb& b) {
   return std::sqrt(d2);
 }
 
-// Paper at or under this grey level (a quarter of the range) is dark paint:
-// black ink on it shows little in grey however plain it is.
-constexpr double kDarkPaper = 64.0;
-
 int label_at(const LabelMap& labels, double x, double y) {
   const int xi = static_cast<int>(std::floor(x)), yi = static_cast<int>(std::floor(y));
   if (xi < 0 || yi < 0 || xi >= labels.width() || yi >= labels.height()) return -1;

@@ -9,6 +9,11 @@
 
 namespace hair25d::layering::detail {
 
+// Paper at or under this grey level (a quarter of the range) is dark paint:
+// black ink on it shows little in grey however plain it is (colour_line,
+// and the per-boundary line threshold of layer_regions).
+inline constexpr double kDarkPaper = 64.0;
+
 // Along `curve` (pixel corners, `skip` pixels left out at each end, one
 // sample per pixel, every other one on boundaries over 40 px, as
 // LineResponse::measure samples), per sample: paper on each side is, as for

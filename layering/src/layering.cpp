@@ -27,9 +27,6 @@ namespace hair25d::layering {
 namespace {
 
 constexpr double kClamp = 1e6;  // unary that pins a user-fixed boundary
-// Paper at or under this grey level is dark paint (colour_line.cpp): the
-// line threshold is lower there.
-constexpr double kDarkPaper = 64.0;
 
 std::string num(double v) {
   std::ostringstream s;
@@ -291,7 +288,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     if (b.closed()) curve.push_back(curve.front());
     const detail::BoundaryLine seen = detail::colour_line(
         image, out.line_width, curve, 1.5 * out.line_width, out.labels, b.left, b.right);
-    if (options.line_threshold <= 0 && seen.paper > 0.0 && seen.paper <= kDarkPaper)
+    if (options.line_threshold <= 0 && seen.paper > 0.0 && seen.paper <= detail::kDarkPaper)
       threshold[i] = dark_threshold;
     if (seen.contrast >= threshold[i] && seen.contrast > rep.line_contrast) {
       rep.line_contrast = seen.contrast;
