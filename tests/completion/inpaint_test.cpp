@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "hair25d/core/error.h"
+#include "synthetic.h"
 
 namespace hair25d::completion {
 namespace {
@@ -340,18 +341,10 @@ struct ToneStrand {
   static bool eye(int x, int y) { return (x - 52) * (x - 52) + (y - 70) * (y - 70) <= 36; }
   // Dots of `radius` periods.
   explicit ToneStrand(double radius) {
-    const double c = std::cos(kAngle) / kPeriod, s = std::sin(kAngle) / kPeriod;
     for (int y = 8; y < kH - 8; ++y)
       for (int x = 8; x < kW - 8; ++x) {
-        int in = 0;
-        for (int sy = 0; sy < 4; ++sy)
-          for (int sx = 0; sx < 4; ++sx) {
-            const double px = x + (sx + 0.5) / 4 - 0.5, py = y + (sy + 0.5) / 4 - 0.5;
-            const double u = c * px + s * py, v = -s * px + c * py;
-            const double fu = u - std::round(u), fv = v - std::round(v);
-            in += fu * fu + fv * fv < radius * radius;
-          }
-        const auto grey = static_cast<std::uint8_t>(std::lround(215 - in / 16.0 * (215 - 25)));
+        const double k = test::dot_cover(x, y, kPeriod, radius, kAngle);
+        const auto grey = static_cast<std::uint8_t>(std::lround(215 - k * (215 - 25)));
         image.at(x, y) = eye(x, y) ? Rgba{20, 20, 25, 255} : Rgba{grey, grey, grey, 255};
         (hidden(x, y) ? fill : source).at(x, y) = 1;
       }

@@ -362,19 +362,10 @@ TEST(ToneJoins, StrandPiecesOfOneToneAreJoinedBeyondThePlainCost) {
 // periods on a square lattice of `period` px turned by `angle` rad,
 // anti-aliased (4 x 4 samples a pixel), over a region's pixels.
 void round_dots(Drawing& d, int region, double period, double radius, double angle) {
-  const double c = std::cos(angle) / period, s = std::sin(angle) / period;
   for (int y = 0; y < d.image.height(); ++y)
     for (int x = 0; x < d.image.width(); ++x) {
       if (d.regions.at(x, y) != region) continue;
-      int in = 0;
-      for (int sy = 0; sy < 4; ++sy)
-        for (int sx = 0; sx < 4; ++sx) {
-          const double px = x + (sx + 0.5) / 4 - 0.5, py = y + (sy + 0.5) / 4 - 0.5;
-          const double u = c * px + s * py, v = -s * px + c * py;
-          const double fu = u - std::round(u), fv = v - std::round(v);
-          in += fu * fu + fv * fv < radius * radius;
-        }
-      const double k = in / 16.0;
+      const double k = test::dot_cover(x, y, period, radius, angle);
       const auto mix = [&](int paper, int ink) {
         return static_cast<std::uint8_t>(std::lround(paper + k * (ink - paper)));
       };

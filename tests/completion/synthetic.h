@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <optional>
 
@@ -62,6 +63,22 @@ inline void paint_skin(Drawing& d, const std::function<bool(double, double)>& in
       d.image.at(x, y) = border ? Rgba{20, 15, 10, 255} : colour;
       d.regions.at(x, y) = 0;
     }
+}
+
+// Screentone as the generator draws it: the share of pixel (x, y) covered by
+// round dots of `radius` periods on a square lattice of `period` px turned by
+// `angle` rad (4 x 4 samples a pixel, so 0, 1/16, ..., 1).
+inline double dot_cover(int x, int y, double period, double radius, double angle) {
+  const double c = std::cos(angle) / period, s = std::sin(angle) / period;
+  int in = 0;
+  for (int sy = 0; sy < 4; ++sy)
+    for (int sx = 0; sx < 4; ++sx) {
+      const double px = x + (sx + 0.5) / 4 - 0.5, py = y + (sy + 0.5) / 4 - 0.5;
+      const double u = c * px + s * py, v = -s * px + c * py;
+      const double fu = u - std::round(u), fv = v - std::round(v);
+      in += fu * fu + fv * fv < radius * radius;
+    }
+  return in / 16.0;
 }
 
 inline RegionRelation below(int a, int b) { return {a, b, Relation::kBelow, 1.0, false, false}; }
