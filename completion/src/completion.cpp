@@ -1,7 +1,6 @@
 #include "hair25d/completion/completion.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <future>
 #include <numeric>
@@ -332,40 +331,47 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     for (detail::Edge& e : detail::merge_edges(ctx, ctx.regions.at(id), open))
       open_edges.push_back(std::move(e));
   }
-  std::vector<detail::Growth> growths(open_edges.size());
-  {
-    std::atomic<std::size_t> next_edge{0}, grown{0};
-    const auto grow = [&](bool reports_progress) {
-      for (std::size_t k = next_edge++; k < open_edges.size(); k = next_edge++) {
-        growths[k] = detail::grow_edge(ctx, open_edges[k]);
-        const std::size_t n = ++grown;
-        if (reports_progress)
-          report(progress, "completion", 0.2 + 0.4 * n / open_edges.size(), "growing");
-      }
-    };
-    std::future<void> other;
-    if (options.threads > 1 && open_edges.size() > 1)
-      other = std::async(std::launch::async, grow, false);
-    grow(true);
-    if (other.valid()) other.get();
-  }
-  for (std::size_t k = 0; k < open_edges.size(); ++k) {
-    const detail::Edge& e = open_edges[k];
-    const detail::Growth& g = growths[k];
-    const int r = new_report(e, EdgeCase::kNotCompleted);
-    if (g.area.size() < 3) continue;
-    reports[r].completion = g.tip ? EdgeCase::kTip : EdgeCase::kRoot;
-    reports[r].stop = g.stop;
-    pieces.areas.push_back({e.region, g.area, !g.tip, r});
-    (g.tip ? result.tips : result.roots) += 1;
-  }
-
   std::map<int, std::vector<int>> groups;
   for (const auto& [id, info] : ctx.regions) groups[strands.find(id)].push_back(id);
   for (auto& [root, members] : groups) pieces.groups.push_back(members);
 
-  report(progress, "completion", 0.6, "strands");
-  result.strands = detail::assemble_strands(ctx, pieces, &reports, &result.strand_inpaint);
+  // Each open edge's report, in the edges' order, filled in when it has grown.
+  std::vector<int> growth_report(open_edges.size());
+  for (std::size_t k = 0; k < open_edges.size(); ++k)
+    growth_report[k] = new_report(open_edges[k], EdgeCase::kNotCompleted);
+  std::vector<detail::Growth> growths(open_edges.size());
+  std::vector<detail::PieceArea> grown(open_edges.size());
+  const auto grow = [&](std::size_t k) -> const detail::PieceArea* {
+    const detail::Edge& e = open_edges[k];
+    const detail::Growth& g = growths[k] = detail::grow_edge(ctx, e);
+    if (g.area.size() < 3) return nullptr;
+    EdgeReport& r = reports[growth_report[k]];
+    r.completion = g.tip ? EdgeCase::kTip : EdgeCase::kRoot;
+    r.stop = g.stop;
+    grown[k] = {e.region, g.area, !g.tip, growth_report[k]};
+    return &grown[k];
+  };
+  // Longest edges first: the longest growths take longest.
+  std::vector<std::size_t> grow_order(open_edges.size());
+  std::vector<int> grown_region(open_edges.size());
+  for (std::size_t k = 0; k < open_edges.size(); ++k)
+    grow_order[k] = k, grown_region[k] = open_edges[k].region;
+  std::stable_sort(grow_order.begin(), grow_order.end(), [&](std::size_t a, std::size_t b) {
+    return open_edges[a].points.size() > open_edges[b].points.size();
+  });
+  // Cases 2 and 3: every open edge grows on its own (grow_edge reads the
+  // context only); a strand is assembled as soon as its regions' edges have
+  // grown, beside the growing of the others (assemble_strands).
+  report(progress, "completion", 0.2, "growing");
+  result.strands = detail::assemble_strands(
+      ctx, pieces, grown_region, grow_order, grow,
+      [&](std::size_t done) {
+        report(progress, "completion", 0.2 + 0.65 * done / open_edges.size(),
+               done < open_edges.size() ? "growing" : "strands");
+      },
+      &reports, &result.strand_inpaint);
+  for (const detail::Growth& g : growths)
+    if (g.area.size() >= 3) (g.tip ? result.tips : result.roots) += 1;
   report(progress, "completion", 0.85, "background");
   if (background.valid())
     result.background = background.get();

@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
 #include <future>
+#include <map>
+#include <mutex>
 #include <opencv2/imgproc.hpp>
 
 #include "hair25d/completion/inpaint.h"
@@ -160,15 +164,12 @@ Polyline strand_outline(const cv::Mat& mask, const Eigen::Vector2i& origin) {
   return outline;
 }
 
-std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPieces& pieces,
-                                              std::vector<EdgeReport>* reports,
-                                              InpaintResult* inpainted) {
+namespace {
+
+// The strands, largest boxes first: two workers each take the next strand, so
+// that one big strand does not leave the other worker idle at the end.
+std::vector<std::size_t> largest_first(const Context& ctx, const StrandPieces& pieces) {
   const std::size_t n = pieces.groups.size();
-  std::vector<CompletedStrand> out(n);
-  // Strands are independent (each edge report belongs to one strand): two
-  // workers each take the next strand, the largest boxes first, so that one
-  // big strand does not leave the other worker idle at the end; counters are
-  // summed afterwards.
   std::vector<std::size_t> order(n);
   std::vector<long> area(n, 0);
   for (std::size_t g = 0; g < n; ++g) {
@@ -180,6 +181,27 @@ std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPi
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return area[a] > area[b]; });
+  return order;
+}
+
+void add_counts(const InpaintResult (&counts)[2], InpaintResult* inpainted) {
+  for (const InpaintResult& c : counts) {
+    inpainted->filled += c.filled;
+    inpainted->patches += c.patches;
+    inpainted->unfilled += c.unfilled;
+  }
+}
+
+}  // namespace
+
+std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPieces& pieces,
+                                              std::vector<EdgeReport>* reports,
+                                              InpaintResult* inpainted) {
+  const std::size_t n = pieces.groups.size();
+  std::vector<CompletedStrand> out(n);
+  // Strands are independent (each edge report belongs to one strand): two
+  // workers each take the next strand; counters are summed afterwards.
+  const std::vector<std::size_t> order = largest_first(ctx, pieces);
   std::atomic<std::size_t> next{0};
   InpaintResult counts[2];
   auto work = [&](InpaintResult* count) {
@@ -200,11 +222,114 @@ std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPi
   } else {
     work(&counts[0]);
   }
-  for (const InpaintResult& c : counts) {
-    inpainted->filled += c.filled;
-    inpainted->patches += c.patches;
-    inpainted->unfilled += c.unfilled;
+  add_counts(counts, inpainted);
+  return out;
+}
+
+std::vector<CompletedStrand> assemble_strands(
+    const Context& ctx, const StrandPieces& pieces, const std::vector<int>& late_region,
+    const std::vector<std::size_t>& late_order,
+    const std::function<const PieceArea*(std::size_t)>& make_late,
+    const std::function<void(std::size_t)>& on_made, std::vector<EdgeReport>* reports,
+    InpaintResult* inpainted) {
+  const std::size_t n = pieces.groups.size(), m = late_region.size();
+  std::vector<const PieceArea*> late(m, nullptr);
+  if (ctx.options->threads <= 1) {
+    for (std::size_t i = 0; i < m; ++i) {
+      late[late_order[i]] = make_late(late_order[i]);
+      on_made(i + 1);
+    }
+    StrandPieces all = pieces;
+    for (const PieceArea* a : late)
+      if (a != nullptr) all.areas.push_back(*a);
+    return assemble_strands(ctx, all, reports, inpainted);
   }
+  std::vector<CompletedStrand> out(n);
+  const std::vector<std::size_t> order = largest_first(ctx, pieces);
+  std::map<int, std::size_t> group_of;
+  for (std::size_t g = 0; g < n; ++g)
+    for (int r : pieces.groups[g]) group_of[r] = g;
+  std::vector<int> waiting(n, 0);  // late areas of the strand's regions not made yet
+  for (int r : late_region)
+    if (auto it = group_of.find(r); it != group_of.end()) ++waiting[it->second];
+  // Shared under `mu`: the next late area, the strands taken, the late areas made.
+  std::mutex mu;
+  std::condition_variable changed;
+  std::size_t next_late = 0, made = 0;
+  std::vector<char> taken(n, 0);
+  std::exception_ptr failure;
+  InpaintResult counts[2];
+  const auto is_member = [&](const std::vector<int>& members, int region) {
+    return std::find(members.begin(), members.end(), region) != members.end();
+  };
+  // Late areas first (they free the strands waiting for them), then the
+  // largest strand whose late areas are all made.
+  auto work = [&](InpaintResult* count, bool caller) {
+    std::unique_lock<std::mutex> lock(mu);
+    while (!failure) {
+      if (next_late < m) {
+        const std::size_t k = late_order[next_late++];
+        lock.unlock();
+        const PieceArea* a = nullptr;
+        try {
+          a = make_late(k);
+        } catch (...) {
+          lock.lock();
+          failure = std::current_exception();
+          break;
+        }
+        lock.lock();
+        late[k] = a;
+        if (auto it = group_of.find(late_region[k]); it != group_of.end()) --waiting[it->second];
+        ++made;
+        if (caller) {
+          const std::size_t done = made;
+          lock.unlock();
+          on_made(done);
+          lock.lock();
+        }
+        changed.notify_all();
+        continue;
+      }
+      std::size_t pick = n;
+      bool left = false;
+      for (std::size_t g : order) {
+        if (taken[g]) continue;
+        left = true;
+        if (waiting[g] == 0) {
+          pick = g;
+          break;
+        }
+      }
+      if (!left) break;
+      if (pick == n) {
+        changed.wait(lock);
+        continue;
+      }
+      taken[pick] = 1;
+      const std::vector<int>& members = pieces.groups[pick];
+      std::vector<const PieceArea*> areas;
+      for (const PieceArea& a : pieces.areas)
+        if (is_member(members, a.region)) areas.push_back(&a);
+      for (const PieceArea* a : late)
+        if (a != nullptr && is_member(members, a->region)) areas.push_back(a);
+      lock.unlock();
+      try {
+        out[pick] = build_strand(ctx, members, areas, reports, count);
+      } catch (...) {
+        lock.lock();
+        failure = std::current_exception();
+        break;
+      }
+      lock.lock();
+    }
+    changed.notify_all();
+  };
+  auto other = std::async(std::launch::async, work, &counts[1], false);
+  work(&counts[0], true);
+  other.get();
+  if (failure) std::rethrow_exception(failure);
+  add_counts(counts, inpainted);
   return out;
 }
 

@@ -2,6 +2,7 @@
 // textures, and filling the background (private).
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "context.h"
@@ -55,6 +56,21 @@ Polyline strand_outline(const cv::Mat& mask, const Eigen::Vector2i& origin);
 std::vector<CompletedStrand> assemble_strands(const Context& ctx, const StrandPieces& pieces,
                                               std::vector<EdgeReport>* reports,
                                               InpaintResult* inpainted);
+
+// assemble_strands with areas still to be made: late area k completes region
+// late_region[k] and is made by make_late(k) (null: none), each k once, in
+// `late_order`. On two workers (Options::threads > 1) each strand is built as
+// soon as the late areas of its regions are made, while the other worker may
+// still be making one (a long growth left it idle while every strand waited).
+// The same strands as making every late area first and then assemble_strands
+// with them appended to pieces.areas in order of k. on_made(done) is called on
+// the calling thread with the number of late areas made so far.
+std::vector<CompletedStrand> assemble_strands(
+    const Context& ctx, const StrandPieces& pieces, const std::vector<int>& late_region,
+    const std::vector<std::size_t>& late_order,
+    const std::function<const PieceArea*(std::size_t)>& make_late,
+    const std::function<void(std::size_t)>& on_made, std::vector<EdgeReport>* reports,
+    InpaintResult* inpainted);
 
 // What the background takes for hair: the regions, their drawn outline and
 // rim, and what the hair encloses; and the head behind it.
