@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <opencv2/core.hpp>
 
 #include "hair25d/core/error.h"
 #include "hair25d/segment/mesh.h"
@@ -7,13 +8,15 @@
 namespace hair25d::segment {
 namespace {
 
-// Calls put(x, y) for every pixel whose centre lies in the triangle (closed:
-// pixels on a shared edge go to whichever triangle comes later).
+// Calls put(x, y) for every pixel of rows [top, bottom) whose centre lies in
+// the triangle (closed: pixels on a shared edge go to whichever triangle comes
+// later).
 template <class Put>
-void scan_triangle(const Vec2& a, const Vec2& b, const Vec2& c, int width, int height, Put put) {
+void scan_triangle(const Vec2& a, const Vec2& b, const Vec2& c, int width, int top, int bottom,
+                   Put put) {
   const double ymin = std::min({a.y(), b.y(), c.y()}), ymax = std::max({a.y(), b.y(), c.y()});
-  const int y0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5)));
-  const int y1 = std::min(height - 1, static_cast<int>(std::floor(ymax - 0.5)));
+  const int y0 = std::max(top, static_cast<int>(std::ceil(ymin - 0.5)));
+  const int y1 = std::min(bottom - 1, static_cast<int>(std::floor(ymax - 0.5)));
   const Vec2 v[3] = {a, b, c};
   for (int y = y0; y <= y1; ++y) {
     const double yc = y + 0.5;
@@ -45,16 +48,29 @@ void check(const TriMesh2& mesh, int width, int height, const char* what) {
   mesh.validate(what);
 }
 
+// Every triangle in order, put(t, x, y) for its pixels: bands of rows on the
+// cores, each band's pixels written in the triangles' order (the same map).
+template <class Put>
+void scan_mesh(const TriMesh2& mesh, int width, int height, Put put) {
+  constexpr int kBandRows = 128;
+  const int bands = (height + kBandRows - 1) / kBandRows;
+  cv::parallel_for_(cv::Range(0, bands), [&](const cv::Range& range) {
+    for (int band = range.start; band < range.end; ++band) {
+      const int top = band * kBandRows, bottom = std::min(height, top + kBandRows);
+      for (int t = 0; t < mesh.triangle_count(); ++t)
+        scan_triangle(mesh.V.row(mesh.F(t, 0)).transpose(), mesh.V.row(mesh.F(t, 1)).transpose(),
+                      mesh.V.row(mesh.F(t, 2)).transpose(), width, top, bottom,
+                      [&](int x, int y) { put(t, x, y); });
+    }
+  });
+}
+
 }  // namespace
 
 LabelMap rasterize_triangles(const TriMesh2& mesh, int width, int height) {
   check(mesh, width, height, "segment::rasterize_triangles");
   LabelMap out(width, height, -1);
-  for (int t = 0; t < mesh.triangle_count(); ++t) {
-    scan_triangle(mesh.V.row(mesh.F(t, 0)).transpose(), mesh.V.row(mesh.F(t, 1)).transpose(),
-                  mesh.V.row(mesh.F(t, 2)).transpose(), width, height,
-                  [&](int x, int y) { out.at(x, y) = t; });
-  }
+  scan_mesh(mesh, width, height, [&](int t, int x, int y) { out.at(x, y) = t; });
   return out;
 }
 
@@ -66,11 +82,7 @@ LabelMap rasterize_triangle_values(const TriMesh2& mesh, const std::vector<int>&
                 " values for " + std::to_string(mesh.triangle_count()) +
                 " triangles; must be one per triangle");
   LabelMap out(width, height, fill);
-  for (int t = 0; t < mesh.triangle_count(); ++t) {
-    scan_triangle(mesh.V.row(mesh.F(t, 0)).transpose(), mesh.V.row(mesh.F(t, 1)).transpose(),
-                  mesh.V.row(mesh.F(t, 2)).transpose(), width, height,
-                  [&](int x, int y) { out.at(x, y) = values[t]; });
-  }
+  scan_mesh(mesh, width, height, [&](int t, int x, int y) { out.at(x, y) = values[t]; });
   return out;
 }
 
