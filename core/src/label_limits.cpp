@@ -34,37 +34,54 @@ std::int64_t count_regions(const LabelMap& labels, std::int64_t stop) {
 }
 
 // 4-connected pieces of equal non-zero labels, counting no further than
-// `stop`: a flood fill per piece, stopped as soon as the count is known to
-// be too many, so a map of a million one-pixel regions costs one pass.
+// `stop`: the rows' runs of one label, joined (union-find) to the runs of the
+// same label they touch in the row above; a piece is a run less the joins.
+// One pass over the pixels, and as many runs as pixels at worst.
 std::int64_t count_pieces(const LabelMap& labels, std::int64_t stop) {
   const int w = labels.width(), h = labels.height();
   const int* v = labels.data();
-  std::vector<bool> seen(labels.size(), false);
-  std::vector<std::int64_t> stack;
+  struct Run {
+    int x0, x1;  // [x0, x1)
+    int label;
+  };
+  std::vector<Run> above, row;
+  std::vector<std::int64_t> parent;
+  std::vector<std::int64_t> above_id, row_id;
+  const auto find = [&](std::int64_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
   std::int64_t count = 0;
-  for (std::size_t start = 0; start < labels.size(); ++start) {
-    if (v[start] == 0 || seen[start]) continue;
-    if (++count >= stop) return count;
-    const int l = v[start];
-    seen[start] = true;
-    stack.assign(1, static_cast<std::int64_t>(start));
-    while (!stack.empty()) {
-      const std::int64_t i = stack.back();
-      stack.pop_back();
-      const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
-      const auto visit = [&](std::int64_t j) {
-        if (v[j] == l && !seen[j]) {
-          seen[j] = true;
-          stack.push_back(j);
-        }
-      };
-      if (x > 0) visit(i - 1);
-      if (x + 1 < w) visit(i + 1);
-      if (y > 0) visit(i - w);
-      if (y + 1 < h) visit(i + w);
+  for (int y = 0; y < h; ++y) {
+    const int* r = v + static_cast<std::size_t>(y) * w;
+    row.clear();
+    row_id.clear();
+    for (int x = 0; x < w;) {
+      const int l = r[x];
+      int e = x + 1;
+      while (e < w && r[e] == l) ++e;
+      if (l != 0) {
+        row.push_back({x, e, l});
+        row_id.push_back(static_cast<std::int64_t>(parent.size()));
+        parent.push_back(static_cast<std::int64_t>(parent.size()));
+        ++count;
+      }
+      x = e;
     }
+    // Runs of both rows are sorted by x: walk them together.
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      while (j < above.size() && above[j].x1 <= row[i].x0) ++j;
+      for (std::size_t k = j; k < above.size() && above[k].x0 < row[i].x1; ++k) {
+        if (above[k].label != row[i].label) continue;
+        const std::int64_t a = find(above_id[k]), b = find(row_id[i]);
+        if (a != b) parent[a] = b, --count;
+      }
+    }
+    std::swap(above, row);
+    std::swap(above_id, row_id);
   }
-  return count;
+  return std::min(count, stop);
 }
 
 }  // namespace
