@@ -13,11 +13,14 @@ std::vector<std::string> hair_region_warnings(const LabelMap& regions, const std
   };
   std::map<int, Reach> reach;
   const int w = regions.width(), h = regions.height();
+  Reach* entry = nullptr;  // a run of one label looks its entry up once
+  int last = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const int l = regions.at(x, y);
       if (l <= 0) continue;
-      Reach& r = reach[l];
+      if (entry == nullptr || l != last) entry = &reach[l], last = l;
+      Reach& r = *entry;
       ++r.area;
       r.left |= x == 0, r.right |= x == w - 1, r.top |= y == 0, r.bottom |= y == h - 1;
     }
