@@ -54,13 +54,17 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
   // completed part never shows where the drawing is visible.
   Vec2 root_sum(0, 0);
   int root_count = 0;
-  cv::Mat area(box.height, box.width, CV_8U);
+  cv::Mat area(box.height, box.width, CV_8U, cv::Scalar(0));
+  const cv::Rect crop(0, 0, box.width, box.height);
   for (const PieceArea* a : areas) {
-    area.setTo(0);
+    // The polygon paints within its box (and a pixel round it, for the
+    // rounding): only that part is cleared before and scanned after.
+    cv::Rect part = polygon_box(a->polygon);
+    part = cv::Rect(part.x - box.x - 2, part.y - box.y - 2, part.width + 4, part.height + 4) & crop;
     fill_polygon(area, a->polygon, box.tl(), 1);
     int added = 0;
-    for (int y = 0; y < box.height; ++y)
-      for (int x = 0; x < box.width; ++x) {
+    for (int y = part.y; y < part.y + part.height; ++y)
+      for (int x = part.x; x < part.x + part.width; ++x) {
         if (!area.at<std::uint8_t>(y, x) || mask.at<std::uint8_t>(y, x) == 1) continue;
         // Nothing drawn hides it where the sheet is transparent.
         if (ctx.image->at(x + box.x, y + box.y).a < 128) continue;
@@ -71,6 +75,7 @@ CompletedStrand build_strand(const Context& ctx, const std::vector<int>& members
         mask.at<std::uint8_t>(y, x) = 2;
         if (a->root) root_sum += Vec2(x + box.x + 0.5, y + box.y + 0.5), ++root_count;
       }
+    area(part).setTo(0);
     if (a->edge >= 0 && a->edge < static_cast<int>(reports->size()))
       (*reports)[a->edge].hidden_pixels += added;
   }
