@@ -160,11 +160,14 @@ void describe_regions(Context& ctx) {
     int coloured = 0;
   };
   std::map<int, Acc> acc;
+  Acc* run = nullptr;  // a run of one label looks its entry up once
+  int run_label = 0;
   for (int y = 0; y < L.height(); ++y)
     for (int x = 0; x < L.width(); ++x) {
       const int l = L.at(x, y);
       if (l == 0) continue;
-      Acc& a = acc[l];
+      if (run == nullptr || l != run_label) run = &acc[l], run_label = l;
+      Acc& a = *run;
       a.x0 = std::min(a.x0, x), a.y0 = std::min(a.y0, y);
       a.x1 = std::max(a.x1, x), a.y1 = std::max(a.y1, y);
       ++a.n;

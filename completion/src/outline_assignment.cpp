@@ -1,4 +1,4 @@
-#include <deque>
+#include <vector>
 
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
@@ -12,17 +12,23 @@ LabelMap assign_outline_pixels(const Image& image, const LabelMap& regions, int 
   LabelMap out = regions;
   const int w = regions.width(), h = regions.height();
   std::vector<int> dist(static_cast<std::size_t>(w) * h, -1);
-  std::deque<int> queue;
-  for (int i = 0; i < w * h; ++i)
-    if (regions.data()[i] != 0) {
-      dist[i] = 0;
+  // The queue (a vector read from `head`): first every region pixel with an
+  // unlabelled 4-neighbour, in index order; a region pixel whose neighbours
+  // are all labelled would add nothing, so it is left out.
+  std::vector<int> queue;
+  const int* in = regions.data();
+  for (int i = 0; i < w * h; ++i) {
+    if (in[i] == 0) continue;
+    dist[i] = 0;
+    const int x = i % w, y = i / w;
+    if ((x > 0 && in[i - 1] == 0) || (x + 1 < w && in[i + 1] == 0) || (y > 0 && in[i - w] == 0) ||
+        (y + 1 < h && in[i + w] == 0))
       queue.push_back(i);
-    }
+  }
   // Breadth-first growth: an outline pixel between two regions goes to the
   // one it is nearer to, so the line is split down its middle.
-  while (!queue.empty()) {
-    const int i = queue.front();
-    queue.pop_front();
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int i = queue[head];
     if (dist[i] >= reach) continue;
     const int x = i % w, y = i / w;
     static constexpr int kDx[4] = {1, -1, 0, 0}, kDy[4] = {0, 0, 1, -1};
