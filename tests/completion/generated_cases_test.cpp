@@ -198,5 +198,50 @@ TEST(GeneratedCases, ScreentoneTailIsNoBackHair) {
   expect_at_least("screentone, seeds 104 and 207", total, 0.8, 0.33);
 }
 
+// The strands are grown and assembled on two workers, a strand as soon as the
+// edges of its regions have grown (beside the growing of the others): the
+// result is that of one worker, growing every edge and then assembling.
+TEST(GeneratedCases, TwoWorkersGiveTheResultOfOne) {
+  for (std::uint64_t seed : {4u, 5u}) {
+    const AnnotatedCase c =
+        generated(560, 420, 16, seed,
+                  seed == 4 ? generator::Shading::kFlat : generator::Shading::kScreentone);
+    const Input in = test::input_from_case(c);
+    Options one;
+    one.threads = 1;
+    Options two = one;
+    two.threads = 2;
+    const Result a = complete_strands(in, one);
+    const Result b = complete_strands(in, two);
+    SCOPED_TRACE(seed);
+    ASSERT_EQ(a.strands.size(), b.strands.size());
+    for (std::size_t i = 0; i < a.strands.size(); ++i) {
+      const CompletedStrand& x = a.strands[i];
+      const CompletedStrand& y = b.strands[i];
+      EXPECT_EQ(x.regions, y.regions);
+      EXPECT_EQ(x.origin, y.origin);
+      EXPECT_TRUE(x.mask == y.mask) << "strand " << i;
+      EXPECT_TRUE(x.texture == y.texture) << "strand " << i;
+      EXPECT_EQ(x.outline, y.outline);
+      EXPECT_EQ(x.body, y.body);
+      EXPECT_EQ(x.root_hint.has_value(), y.root_hint.has_value());
+      if (x.root_hint && y.root_hint) EXPECT_EQ(*x.root_hint, *y.root_hint);
+      EXPECT_EQ(x.completed_pixels, y.completed_pixels);
+    }
+    ASSERT_EQ(a.edges.size(), b.edges.size());
+    for (std::size_t i = 0; i < a.edges.size(); ++i) {
+      EXPECT_EQ(a.edges[i].region, b.edges[i].region);
+      EXPECT_EQ(a.edges[i].completion, b.edges[i].completion);
+      EXPECT_EQ(a.edges[i].stop, b.edges[i].stop);
+      EXPECT_EQ(a.edges[i].hidden_pixels, b.edges[i].hidden_pixels);
+    }
+    EXPECT_TRUE(a.background == b.background);
+    EXPECT_EQ(a.roots, b.roots);
+    EXPECT_EQ(a.tips, b.tips);
+    EXPECT_EQ(a.strand_inpaint.filled, b.strand_inpaint.filled);
+    EXPECT_EQ(a.summary, b.summary);
+  }
+}
+
 }  // namespace
 }  // namespace hair25d::completion
