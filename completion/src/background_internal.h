@@ -53,8 +53,10 @@ void draw_strokes(Image& image, const Mask& hole, const std::vector<Stroke>& str
 // Flat fill: every hole pixel takes the colour of the nearest known flat
 // pixel (not ink, not next to ink) reachable without crossing `barrier`
 // (geodesic, chamfer 5-7); pixels cut off by barriers then take the nearest
-// filled colour across them. Seams are straightened by a median of radius
-// `seam_radius` away from barriers. `seed` (if not null) receives, per hole
+// filled colour across them. Borders between materials of clearly different
+// colours are rounded by a majority vote over a disc (steps and spikes go),
+// then seams are straightened by a median of radius `seam_radius` away from
+// barriers. `seed` (if not null) receives, per hole
 // pixel, the index of the known pixel its colour came from (−1 if none).
 // `drawing_edges` says which sides of `image` are the drawing's own edges
 // (kLeftEdge | kTopEdge | kRightEdge | kBottomEdge; the rest are a crop's):
@@ -65,10 +67,13 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
               std::vector<int>* seed,
               int drawing_edges = kLeftEdge | kTopEdge | kRightEdge | kBottomEdge);
 
-// Draws a line of `colour` and `width` along the seams of the flat fill in
-// `filled` between two colours that `original` (the drawing, hole unknown)
-// keeps apart with ink; not on `barrier` pixels. Returns the seam pixels.
+// Draws a line along the seams of the flat fill in `filled` between two
+// colours that `original` (the drawing, hole unknown) keeps apart with ink
+// (colours within two 16-level steps counted as one); not on `barrier`
+// pixels. The line takes the colour and width of that ink in the drawing,
+// `fallback_colour` and `fallback_width` when no ink pixel was crossed.
+// Returns the seam pixels.
 int ink_seams(Image& filled, const Image& original, const Mask& hole, const Mask& ink,
-              const Mask& barrier, const Rgba& colour, double width);
+              const Mask& barrier, const Rgba& fallback_colour, double fallback_width);
 
 }  // namespace hair25d::completion::detail

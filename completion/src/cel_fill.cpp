@@ -352,6 +352,152 @@ Materials find_materials(const Image& image, const Mask& hole, const Mask& ink, 
   return m;
 }
 
+// The geodesic fill's borders between materials are bisectors between
+// scattered seeds: stairs, and spikes where a sliver of one colour seen
+// between two strands reached into the paper (sylvie's shoulder). A
+// majority vote over a disc, repeated (a discrete curvature flow), rounds
+// them off: a hole pixel on a border takes the material most of the disc
+// holds, from a neighbour of that material (so it never jumps a drawn
+// line); known pixels vote and stay. `origin` of a changed pixel becomes
+// its neighbour's.
+void smooth_borders(const Image& image, const Mask& hole, const Mask& barrier, const Materials& m,
+                    std::vector<int>& origin) {
+  const int w = image.width(), h = image.height();
+  constexpr int kRadius = 5;  // px: spikes and steps thinner than the disc go
+  constexpr int kRounds = 6;
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  std::vector<int> cls(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!hole[i])
+      cls[i] = m.label[i];
+    else if (!barrier[i] && origin[i] >= 0)
+      cls[i] = m.label[static_cast<std::size_t>(origin[i])];
+  }
+  std::vector<std::pair<int, int>> disc;
+  for (int dy = -kRadius; dy <= kRadius; ++dy)
+    for (int dx = -kRadius; dx <= kRadius; ++dx)
+      if (dx * dx + dy * dy <= kRadius * kRadius + kRadius) disc.emplace_back(dx, dy);
+  std::vector<std::ptrdiff_t> offset;
+  for (const auto& [dx, dy] : disc) offset.push_back(static_cast<std::ptrdiff_t>(dy) * w + dx);
+  auto movable = [&](std::size_t i) { return hole[i] && !barrier[i] && cls[i] > 0; };
+  // A pixel with an 8-neighbour of another material.
+  auto on_border = [&](int x, int y) {
+    const int c = cls[static_cast<std::size_t>(y) * w + x];
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx, ny = y + dy;
+        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+        const int d = cls[static_cast<std::size_t>(ny) * w + nx];
+        if (d > 0 && d != c) return true;
+      }
+    return false;
+  };
+  // The first borders: pairs of 8-neighbours of two materials of clearly
+  // different colours (a border within soft shading is not seen), each pair
+  // looked at once (right, lower left, lower, lower right).
+  auto colour_of = [&](std::size_t i) -> const Rgba& {
+    return image.data()[hole[i] ? static_cast<std::size_t>(origin[i]) : i];
+  };
+  auto contrast = [&](std::size_t i, std::size_t j) {
+    const Rgba &a = colour_of(i), &b = colour_of(j);
+    if ((a.a < 128) != (b.a < 128)) return true;
+    return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b) > 48;
+  };
+  Mask border(n, 0);
+  for (int y = 0; y < h; ++y) {
+    const int* row = cls.data() + static_cast<std::size_t>(y) * w;
+    const int* below = y + 1 < h ? row + w : nullptr;
+    for (int x = 0; x < w; ++x) {
+      const int c = row[x];
+      if (c <= 0) continue;
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      auto differ = [&](int d, std::size_t j) {
+        if (d > 0 && d != c && (hole[i] || hole[j]) && contrast(i, j)) border[i] = border[j] = 1;
+      };
+      if (x + 1 < w) differ(row[x + 1], i + 1);
+      if (below != nullptr) {
+        if (x > 0) differ(below[x - 1], i + w - 1);
+        differ(below[x], i + w);
+        if (x + 1 < w) differ(below[x + 1], i + w + 1);
+      }
+    }
+  }
+  std::vector<int> stamp(n, -1), todo, next;
+  for (std::size_t i = 0; i < n; ++i)
+    if (border[i] && movable(i)) todo.push_back(static_cast<int>(i));
+  std::vector<int> changes;
+  std::vector<std::pair<int, int>> votes;
+  for (int round = 0; round < kRounds && !todo.empty(); ++round) {
+    changes.clear();
+    for (const int i : todo) {
+      const int x = i % w, y = i / w, own = cls[static_cast<std::size_t>(i)];
+      const bool inside = x >= kRadius && y >= kRadius && x + kRadius < w && y + kRadius < h;
+      // Most border pixels hold half their disc or more: they stay.
+      int mine = 0, all = 0;
+      for (std::size_t k = 0; k < disc.size(); ++k) {
+        const auto [dx, dy] = disc[k];
+        if (!inside && (x + dx < 0 || y + dy < 0 || x + dx >= w || y + dy >= h)) continue;
+        const int c = cls[static_cast<std::size_t>(i + offset[k])];
+        all += c > 0;
+        mine += c == own;
+      }
+      if (2 * mine >= all) continue;
+      votes.clear();
+      for (std::size_t k = 0; k < disc.size(); ++k) {
+        const auto [dx, dy] = disc[k];
+        if (!inside && (x + dx < 0 || y + dy < 0 || x + dx >= w || y + dy >= h)) continue;
+        const int c = cls[static_cast<std::size_t>(i + offset[k])];
+        if (c <= 0) continue;
+        auto it = std::find_if(votes.begin(), votes.end(), [c](auto& v) { return v.first == c; });
+        if (it == votes.end())
+          votes.emplace_back(c, 1);
+        else
+          ++it->second;
+      }
+      int best = own, best_count = 0, own_count = 0;
+      for (const auto& [c, k] : votes) {
+        if (c == own) own_count = k;
+        if (k > best_count) best = c, best_count = k;
+      }
+      if (best == own || best_count <= own_count) continue;
+      // Take it from a neighbour of that material (4-neighbours first).
+      int from = -1;
+      const int nx[8] = {x - 1, x + 1, x, x, x - 1, x + 1, x - 1, x + 1};
+      const int ny[8] = {y, y, y - 1, y + 1, y - 1, y - 1, y + 1, y + 1};
+      for (int pass = 0; pass < 2 && from < 0; ++pass)
+        for (int k = 0; k < 8 && from < 0; ++k) {
+          if (nx[k] < 0 || ny[k] < 0 || nx[k] >= w || ny[k] >= h) continue;
+          const std::size_t j = static_cast<std::size_t>(ny[k]) * w + nx[k];
+          if (cls[j] != best) continue;
+          if (pass == 0 && hole[j] && origin[j] >= 0 && !barrier[j])
+            from = origin[j];
+          else if (pass == 1 && !hole[j])
+            from = static_cast<int>(j);
+        }
+      if (from < 0) continue;
+      // In place: the border moves on within the round, and a pixel cannot
+      // flip back and forth with its neighbour.
+      cls[static_cast<std::size_t>(i)] = best;
+      origin[static_cast<std::size_t>(i)] = from;
+      changes.push_back(i);
+    }
+    next.clear();
+    for (const int i : changes) {
+      const int x = i % w, y = i / w;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int qx = x + dx, qy = y + dy;
+          if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
+          const std::size_t j = static_cast<std::size_t>(qy) * w + qx;
+          if (stamp[j] == round || !movable(j) || !on_border(qx, qy)) continue;
+          stamp[j] = round;
+          next.push_back(static_cast<int>(j));
+        }
+    }
+    todo.swap(next);
+  }
+}
+
 }  // namespace
 
 int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barrier, int seam_radius,
@@ -418,6 +564,7 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
     }
     propagate(w, h, all, reached, {}, origin, &materials);
   }
+  smooth_borders(image, hole, barrier, materials, origin);
   int unreached = 0;
   Image filled = image;
   for (std::size_t i = 0; i < n; ++i)

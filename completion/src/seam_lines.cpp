@@ -9,9 +9,14 @@
 #include <vector>
 
 #include "background_internal.h"
+#include "raster.h"
 
 namespace hair25d::completion::detail {
 namespace {
+
+// Keys this near (RGB, in 16-level steps) count as one colour in the pair
+// counts: two steps in one channel, or one in each of three.
+constexpr double kNearKey = 40.0;
 
 // 4 bits a channel: anti-aliasing and compression noise fall into one key;
 // every mostly transparent pixel is one key (a transparent sheet).
@@ -27,6 +32,14 @@ double key_distance(int a, int b) {
   return 16.0 * std::sqrt(dr * dr + dg * dg + db * db);
 }
 
+// key_distance(a, b) <= kNearKey without the square root.
+bool near_key(int a, int b) {
+  if (a == kTransparent || b == kTransparent) return a == b;
+  const int dr = ((a >> 8) & 15) - ((b >> 8) & 15), dg = ((a >> 4) & 15) - ((b >> 4) & 15),
+            db = (a & 15) - (b & 15);
+  return 256 * (dr * dr + dg * dg + db * db) <= static_cast<int>(kNearKey * kNearKey);
+}
+
 std::uint32_t pair_key(int a, int b) {
   return static_cast<std::uint32_t>(std::min(a, b)) << 13 |
          static_cast<std::uint32_t>(std::max(a, b));
@@ -34,6 +47,9 @@ std::uint32_t pair_key(int a, int b) {
 
 struct PairCount {
   int direct = 0, inked = 0;
+  // Over the inked crossings: the darkest pixel's colour and the ink's
+  // length along the scan, summed.
+  long r = 0, g = 0, b = 0, a = 0, ink_px = 0, crossings = 0;
 };
 
 constexpr double kMinContrast = 40.0;  // RGB distance of colours that need a border at all
@@ -41,11 +57,12 @@ constexpr double kMinContrast = 40.0;  // RGB distance of colours that need a bo
 // Along rows and columns of the known pixels: consecutive stable colours
 // (two pixels alike) within 12 px, and whether ink lay between them.
 std::unordered_map<std::uint32_t, PairCount> count_pairs(const Image& image, const Mask& hole,
-                                                         const Mask& near_ink) {
+                                                         const Mask& ink, const Mask& near_ink) {
   const int w = image.width(), h = image.height();
   std::unordered_map<std::uint32_t, PairCount> pairs;
   auto scan = [&](int length, auto index) {
-    int stable = -1, stable_at = -100, run_key = -1, run = 0;
+    int stable = -1, stable_at = -100, run_key = -1, run = 0, ink_px = 0, darkest = 256;
+    Rgba dark{};
     bool ink_between = false;
     for (int t = 0; t < length; ++t) {
       const std::size_t i = index(t);
@@ -54,8 +71,14 @@ std::unordered_map<std::uint32_t, PairCount> count_pairs(const Image& image, con
         continue;
       }
       if (near_ink[i]) {
+        if (!ink_between) ink_px = 0, darkest = 256;
         ink_between = true;
         run_key = -1, run = 0;
+        if (ink[i]) {
+          ++ink_px;
+          if (luma(image.data()[i]) < darkest)
+            darkest = luma(image.data()[i]), dark = image.data()[i];
+        }
         continue;
       }
       const int key = colour_key(image.data()[i]);
@@ -67,6 +90,10 @@ std::unordered_map<std::uint32_t, PairCount> count_pairs(const Image& image, con
           key_distance(key, stable) >= kMinContrast) {
         PairCount& c = pairs[pair_key(key, stable)];
         (ink_between ? c.inked : c.direct) += 1;
+        if (ink_between && ink_px > 0) {
+          c.r += dark.r, c.g += dark.g, c.b += dark.b, c.a += dark.a, c.ink_px += ink_px;
+          ++c.crossings;
+        }
       }
       stable = key, stable_at = t, ink_between = false;
     }
@@ -82,7 +109,7 @@ std::unordered_map<std::uint32_t, PairCount> count_pairs(const Image& image, con
 }  // namespace
 
 int ink_seams(Image& filled, const Image& original, const Mask& hole, const Mask& ink,
-              const Mask& barrier, const Rgba& colour, double width) {
+              const Mask& barrier, const Rgba& fallback_colour, double fallback_width) {
   const int w = filled.width(), h = filled.height();
   // Candidates first (most neighbours in a flat fill are equal): hole pixels
   // whose right or lower neighbour has a clearly different colour.
@@ -108,18 +135,51 @@ int ink_seams(Image& filled, const Image& original, const Mask& hole, const Mask
   cv::Mat ink_m(h, w, CV_8U, const_cast<std::uint8_t*>(ink.data())), near_m;
   cv::dilate(ink_m, near_m, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
   const Mask near_ink(near_m.datastart, near_m.dataend);
-  const auto pairs = count_pairs(original, hole, near_ink);
+  const auto pairs = count_pairs(original, hole, ink, near_ink);
   // Seam pixels: 0 in `away` (distance transform input), on the box of the seams.
   int x0 = w, y0 = h, x1 = -1, y1 = -1, seams = 0;
   std::vector<cv::Point> marks;
+  PairCount ink_sum;
+  // A fill colour is counted together with the drawing's colours near it: a
+  // shirt's soft shading spreads its border with the paper over many keys,
+  // each seen only a few times along the visible outline (sylvie's shoulder
+  // got no line where its lighter blue met the paper).
+  std::unordered_map<std::uint32_t, PairCount> near_pairs;
+  auto counts = [&](int a, int b) -> const PairCount& {
+    const std::uint32_t key = pair_key(a, b);
+    auto it = near_pairs.find(key);
+    if (it != near_pairs.end()) return it->second;
+    PairCount sum;
+    for (const auto& [k, c] : pairs) {
+      const int p = static_cast<int>(k >> 13), q = static_cast<int>(k & 0x1fff);
+      if ((near_key(a, p) && near_key(b, q)) || (near_key(a, q) && near_key(b, p)))
+        sum.inked += c.inked, sum.direct += c.direct, sum.r += c.r, sum.g += c.g, sum.b += c.b,
+            sum.a += c.a, sum.ink_px += c.ink_px, sum.crossings += c.crossings;
+    }
+    return near_pairs.emplace(key, sum).first->second;
+  };
   for (const Candidate& c : candidates) {
-    auto it = pairs.find(pair_key(c.a, c.b));
-    if (it == pairs.end() || it->second.inked < 5 || it->second.inked <= 2 * it->second.direct)
-      continue;
+    const PairCount& count = counts(c.a, c.b);
+    if (count.inked < 5 || count.inked <= 2 * count.direct) continue;
     marks.emplace_back(c.x, c.y);
+    ink_sum.crossings += count.crossings, ink_sum.r += count.r, ink_sum.g += count.g,
+        ink_sum.b += count.b, ink_sum.a += count.a, ink_sum.ink_px += count.ink_px;
     x0 = std::min(x0, c.x), y0 = std::min(y0, c.y), x1 = std::max(x1, c.x), y1 = std::max(y1, c.y);
   }
   if (marks.empty()) return 0;
+  // The line the drawing puts between those colours: its darkest pixels'
+  // colour and its width along the scans (a slanted line is crossed longer,
+  // hence 0.8). Lucy's dress met the paper along a thick black line, the
+  // colour of the black hair's line ends, where her own lines are thin.
+  Rgba colour = fallback_colour;
+  double width = fallback_width;
+  if (ink_sum.crossings > 0) {
+    const long k = ink_sum.crossings;
+    colour = {static_cast<std::uint8_t>(ink_sum.r / k), static_cast<std::uint8_t>(ink_sum.g / k),
+              static_cast<std::uint8_t>(ink_sum.b / k), static_cast<std::uint8_t>(ink_sum.a / k)};
+    width =
+        std::clamp(0.8 * static_cast<double>(ink_sum.ink_px) / static_cast<double>(k), 1.0, 4.0);
+  }
   // Distance to the nearest seam pixel, only as far as the line reaches
   // (a distance transform of the seams' whole box costs more).
   const int reach = static_cast<int>(std::ceil(0.5 * width)) + 2;
