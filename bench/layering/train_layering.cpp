@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -81,6 +82,7 @@ int main(int argc, char** argv) {
   double ridge = 1.0;
   bool length_weighted = false;
   double same_ridge = 1.0;
+  int dark_from = -1;
   app.add_option("--cases", cases, "generated drawings")->check(CLI::PositiveNumber);
   app.add_option("--seed", seed, "seed of the first drawing");
   app.add_option("--ridge", ridge, "L2 penalty")->check(CLI::NonNegativeNumber);
@@ -93,6 +95,8 @@ int main(int argc, char** argv) {
   app.add_option("--dump", dump, "write the order samples' features here and stop");
   app.add_option("--write", write, "write layering/src/learned_weights.cpp here");
   app.add_flag("--length-weighted", length_weighted, "weight boundaries by sqrt(length)");
+  app.add_option("--dark-from", dark_from,
+                 "drawings from this one on in dark_style (hair about as dark as the ink)");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<Sample> samples, same_samples;
@@ -105,7 +109,9 @@ int main(int argc, char** argv) {
     hair25d::AnnotatedCase c;
     layering::Result r;
     try {
-      c = generator::generate_case(hair25d::layering_training::training_style(i, seed));
+      c = generator::generate_case(dark_from >= 0 && i >= dark_from
+                                       ? hair25d::layering_training::dark_style(i, seed)
+                                       : hair25d::layering_training::training_style(i, seed));
       r = layering::layer_regions(c.image, c.regions, options);
     } catch (const hair25d::Error& e) {
       std::fprintf(stderr, "case %d skipped: %s\n", i, e.what());
@@ -223,23 +229,26 @@ int main(int argc, char** argv) {
   if (write.empty()) return 0;
   // The whole of learned_weights.cpp, so that the committed constants are
   // exactly what this program printed.
+  const std::string dark_note =
+      dark_from >= 0 ? " --dark-from " + std::to_string(dark_from) : std::string();
   std::FILE* f = std::fopen(write.c_str(), "w");
   if (f == nullptr) {
     std::fprintf(stderr, "cannot write %s\n", write.c_str());
     return 1;
   }
-  std::fprintf(f,
-               "#include \"hair25d/layering/learned_metric.h\"\n\n"
-               "namespace hair25d::layering {\n\n"
-               "// Written by bench/layering/train_layering.cpp on generated drawings only\n"
-               "// (never the annotated cases), Release build:\n"
-               "//   train_layering --cases %d --seed %llu --ridge %g --same-ridge %g --write ...\n"
-               "// %zu occluding boundaries between hair regions of known order; sign right\n"
-               "// on them: paper Φ %.1f%%, these %.1f%%. Order as in learned_terms.\n"
-               "const LearnedTerms& learned_weights() {\n"
-               "  static constexpr LearnedTerms kWeights = {",
-               cases, static_cast<unsigned long long>(seed), ridge, same_ridge, samples.size(),
-               100.0 * right_paper / samples.size(), 100.0 * right_learned / samples.size());
+  std::fprintf(
+      f,
+      "#include \"hair25d/layering/learned_metric.h\"\n\n"
+      "namespace hair25d::layering {\n\n"
+      "// Written by bench/layering/train_layering.cpp on generated drawings only\n"
+      "// (never the annotated cases), Release build:\n"
+      "//   train_layering --cases %d --seed %llu --ridge %g --same-ridge %g%s --write ...\n"
+      "// %zu occluding boundaries between hair regions of known order; sign right\n"
+      "// on them: paper Φ %.1f%%, these %.1f%%. Order as in learned_terms.\n"
+      "const LearnedTerms& learned_weights() {\n"
+      "  static constexpr LearnedTerms kWeights = {",
+      cases, static_cast<unsigned long long>(seed), ridge, same_ridge, dark_note.c_str(),
+      samples.size(), 100.0 * right_paper / samples.size(), 100.0 * right_learned / samples.size());
   for (int k = 0; k < w.size(); ++k)
     std::fprintf(f, "%s%s%.6g", k ? "," : "", k % 6 ? " " : "\n      ", w[k]);
   std::fprintf(f,
