@@ -170,14 +170,6 @@ constexpr int kMinMassRays = 3;
 // with a colour step <= 10 mostly 0.02–0.26 (strand tips on the face), two
 // 0.32 and 0.43 (a bang lying on the face, in the back hair's colour).
 constexpr double kMinMassDepthRatio = 0.3;
-// Two pieces whose own paint is linear and whose joint field (a gradient)
-// misses them by more than this are painted by two gradients, two strands,
-// though the windows at the cuts step little (session 13: the chosen mass
-// joins of gradient 201-216 and 301-316, right ones 0-0.88 where the field
-// says something, wrong ones 0.90, 9.0, 9.3, 24.1; at 3 or 6, gradient
-// 201-216 0.959 / 0.704 -> 0.970 / 0.704, 301-316 0.881 / 0.831 -> 0.894 /
-// 0.834, 101-116 unchanged; at 1.5 101-116 0.979 / 0.852 -> 0.979 / 0.841).
-constexpr double kMinOtherFieldStep = 3.0;
 
 struct MassRay {
   int index = 0;  // along the outline

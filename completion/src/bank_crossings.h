@@ -41,6 +41,15 @@ inline constexpr double kMaxMassColourStep = 10.0;
 // 101-116, the field without its gates: right candidates 0-0.75 (two 1.75,
 // 2.13), wrong ones 1.45 and up).
 inline constexpr double kMaxMassFieldStep = 1.0;
+// Two pieces whose own paint is linear and whose joint field (a gradient)
+// misses them by more than this are painted by two gradients, two strands,
+// though the windows at the cuts step little (session 13: the chosen mass
+// joins of gradient 201-216 and 301-316, right ones 0-0.88 where the field
+// says something, wrong ones 0.90, 9.0, 9.3, 24.1; at 3 or 6, gradient
+// 201-216 0.959 / 0.704 -> 0.970 / 0.704, 301-316 0.881 / 0.831 -> 0.894 /
+// 0.834, 101-116 unchanged; at 1.5 101-116 0.979 / 0.852 -> 0.979 / 0.841).
+// The mass joins, and since session 16 the face joins, refuse such pairs.
+inline constexpr double kMinOtherFieldStep = 3.0;
 
 // On a cel drawing the two pieces' flat paint (RegionCels::step) must step
 // at most this much (the body joins' limit too): pieces of one strand share

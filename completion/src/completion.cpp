@@ -295,6 +295,16 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     // the back's paint join it across the face (session 14, dev seeds
     // 2000-2099: 4 wrong links of flat drawings, 9 pairs).
     if (fields.cels().judge(j.region_a, j.region_b).other) continue;
+    // Pieces painted by two gradients (both linear, the joint field missing
+    // them by more than kMinOtherFieldStep) are two strands, as for the
+    // mass joins: on gradient drawings 2000-2099 and 3000-3099 the face
+    // joins made 11 right links and 16 wrong ones (back hair to tails and
+    // to strands lying on the face); the field said something on 7 of the
+    // right ones (0-0.06) and 12 of the wrong ones (3.6-41) (session 16).
+    if (!tones.screentone()) {
+      const double field = fields.step(j.region_a, j.region_b);
+      if (std::isfinite(field) && field > detail::kMinOtherFieldStep) continue;
+    }
     if (!try_join(j.region_a, j.region_b)) continue;
     EdgeReport ra, rb;
     ra.region = j.region_a, ra.p = j.pa, ra.q = j.qa, ra.joined_region = j.region_b;

@@ -4,8 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
-#include <functional>
 
 #include "hair25d/completion/completion.h"
 #include "synthetic.h"
@@ -79,28 +77,16 @@ TEST(BodyJoins, BackHairOnBothSidesOfTheNeckIsJoinedBehindIt) {
   EXPECT_EQ(test::regions_with(run(paper), 1), (std::vector<int>{1}));
 }
 
-// Repaints the drawn pixels of `region` in `d` with colour(x).
-void repaint(Drawing& d, int region, const std::function<Rgba(double)>& colour) {
-  for (int y = 0; y < d.image.height(); ++y)
-    for (int x = 0; x < d.image.width(); ++x)
-      if (d.regions.at(x, y) == region) d.image.at(x, y) = colour(x);
-}
-
 // A horizontal gradient: 0.4 RGB a px along x on every channel from
 // kBack at x = 150.
-Rgba along_x(double x) {
-  const auto c = [&](int base) {
-    return static_cast<std::uint8_t>(std::lround(base + 0.4 * (x - 150)));
-  };
-  return Rgba{c(kBack.r), c(kBack.g), c(kBack.b), 255};
-}
+Rgba along_x(double x) { return test::along_x(kBack, 150, 0.4, x); }
 
 TEST(BodyJoins, PiecesOfTwoGradientsAreNotJoinedBehindTheNeck) {
   // One gradient over both pieces carries on behind the neck: joined,
   // though the windows at the neck's sides step ~27 RGB.
   Drawing one = back_hair_behind_the_neck(kBack);
-  repaint(one, 1, along_x);
-  repaint(one, 2, along_x);
+  test::repaint(one, 1, [](int x, int) { return along_x(x); });
+  test::repaint(one, 2, [](int x, int) { return along_x(x); });
   EXPECT_EQ(test::regions_with(run(one), 1), (std::vector<int>{1, 2}));
   // The right piece mirrors the left one's gradient about the neck's
   // middle: the windows at the neck's sides are one colour, but no linear
@@ -108,8 +94,8 @@ TEST(BodyJoins, PiecesOfTwoGradientsAreNotJoinedBehindTheNeck) {
   // two locks. The windows alone joined them (gradient 2000-2099: 5 wrong
   // body joins, no right one).
   Drawing mirrored = back_hair_behind_the_neck(kBack);
-  repaint(mirrored, 1, along_x);
-  repaint(mirrored, 2, [](double x) { return along_x(360 - x); });
+  test::repaint(mirrored, 1, [](int x, int) { return along_x(x); });
+  test::repaint(mirrored, 2, [](int x, int) { return along_x(360 - x); });
   EXPECT_EQ(test::regions_with(run(mirrored), 1), (std::vector<int>{1}));
 }
 

@@ -141,6 +141,27 @@ TEST(FaceJoins, PiecesOfOtherFlatPaintsAreNotJoined) {
   EXPECT_EQ(strand_with(same, 1)->regions, (std::vector<int>{1, 2}));
 }
 
+TEST(FaceJoins, PiecesOfTwoGradientsAreNotJoined) {
+  // One gradient over both pieces (0.2 RGB a px along x) carries on behind
+  // the face: joined, though the pieces' mean colours lie ~52 RGB apart.
+  const auto gradient = [](int x, int) { return test::along_x(kBack, 180, 0.2, x); };
+  Drawing one = face_over_back_hair(kBack);
+  test::repaint(one, 1, gradient);
+  test::repaint(one, 2, gradient);
+  ASSERT_NE(strand_with(run(one), 1), nullptr);
+  EXPECT_EQ(strand_with(run(one), 1)->regions, (std::vector<int>{1, 2}));
+  // The right piece leaves the face's middle in the same colour but at
+  // 0.45 RGB a px: within max_colour_distance, but no linear field paints
+  // both pieces: two locks (gradient 2000-2099 and 3000-3099: 16 wrong face
+  // joins of 27, tails and strands lying on the face joined to the back
+  // hair).
+  Drawing two = face_over_back_hair(kBack);
+  test::repaint(two, 1, gradient);
+  test::repaint(two, 2, [](int x, int) { return test::along_x(kBack, 180, 0.45, x); });
+  ASSERT_NE(strand_with(run(two), 1), nullptr);
+  EXPECT_EQ(strand_with(run(two), 1)->regions, (std::vector<int>{1}));
+}
+
 TEST(FaceJoins, PiecesAboveOtherHairAreNotBackHair) {
   // The same band, but each piece lies over a lock of hair (4, 5) at the
   // canvas sides: they are front hair, not the bottom layer.

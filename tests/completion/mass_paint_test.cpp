@@ -22,13 +22,6 @@ using test::paint;
 using test::kBack;
 using test::kFan;
 
-// Repaints the drawn pixels of `region` with colour(x, y).
-void repaint(Drawing& d, int region, const std::function<Rgba(int, int)>& colour) {
-  for (int y = 0; y < d.image.height(); ++y)
-    for (int x = 0; x < d.image.width(); ++x)
-      if (d.regions.at(x, y) == region) d.image.at(x, y) = colour(x, y);
-}
-
 // The back hair's gradient: lighter to the right and down (0.46 RGB a px
 // along x), plus `offset` a channel.
 Rgba gradient(int x, int y, int offset) {

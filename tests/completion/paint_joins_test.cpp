@@ -33,15 +33,6 @@ Rgba scaled(Rgba c, double k) {
 // (test::strand_under_band): only a strand join can join 1 and 2.
 Drawing strand_under_band() { return test::strand_under_band(kBack, kBase); }
 
-// Repaints the drawn (labelled) pixels of `region` where `where(x, y)` holds.
-void repaint(
-    Drawing& d, int region, const std::function<Rgba(int, int)>& colour,
-    const std::function<bool(int, int)>& where = [](int, int) { return true; }) {
-  for (int y = 0; y < d.image.height(); ++y)
-    for (int x = 0; x < d.image.width(); ++x)
-      if (d.regions.at(x, y) == region && where(x, y)) d.image.at(x, y) = colour(x, y);
-}
-
 // Cel paint: `base` with a shadow band (0.72 of it) down the left 15 px.
 void cel(Drawing& d, int region, Rgba base) {
   repaint(d, region, [base](int x, int) { return x < 115 ? scaled(base, 0.72) : base; });

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <optional>
 
@@ -63,6 +64,25 @@ inline void paint_skin(Drawing& d, const std::function<bool(double, double)>& in
       d.image.at(x, y) = border ? Rgba{20, 15, 10, 255} : colour;
       d.regions.at(x, y) = 0;
     }
+}
+
+// Repaints the drawn (labelled) pixels of `region` where `where(x, y)`
+// holds with colour(x, y).
+inline void repaint(
+    Drawing& d, int region, const std::function<Rgba(int, int)>& colour,
+    const std::function<bool(int, int)>& where = [](int, int) { return true; }) {
+  for (int y = 0; y < d.image.height(); ++y)
+    for (int x = 0; x < d.image.width(); ++x)
+      if (d.regions.at(x, y) == region && where(x, y)) d.image.at(x, y) = colour(x, y);
+}
+
+// A horizontal gradient through `base` at x = `x0`, `slope` RGB a px on
+// every channel.
+inline Rgba along_x(Rgba base, double x0, double slope, double x) {
+  const auto c = [&](std::uint8_t v) {
+    return static_cast<std::uint8_t>(std::clamp(std::lround(v + slope * (x - x0)), 0L, 255L));
+  };
+  return Rgba{c(base.r), c(base.g), c(base.b), 255};
 }
 
 // Screentone as the generator draws it: the share of pixel (x, y) covered by
