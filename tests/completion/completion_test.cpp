@@ -85,6 +85,29 @@ TEST(Completion, IntersectingPiecesAreJoinedUnderTheOccluder) {
   EXPECT_GT(hair_coloured, 0.9 * s->completed_pixels);
 }
 
+// The layering's relations are measured (a score) or, between regions that
+// do not touch, only its drawing order (score 0). Neither a chain of weak
+// measured orders (1 above the blob 4 above 2) nor an unmeasured order keeps
+// two pieces out of one strand, and an unmeasured "equal" makes no strand of
+// two regions; firm orders still keep them apart.
+TEST(Completion, WeakOrUnmeasuredRelationsDoNotDecideStrands) {
+  Drawing d = crossed_bands();
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 60 && y > 120 && y < 160; }, kFront, 4);
+  const auto strand_of_1 = [&](const std::vector<RegionRelation>& extra) {
+    Drawing with = d;
+    with.relations.insert(with.relations.end(), extra.begin(), extra.end());
+    const Result r = run(with, Vec2(150, 300));
+    const CompletedStrand* s = strand_with(r, 1);
+    return s != nullptr ? s->regions : std::vector<int>{};
+  };
+  const std::vector<int> joined{1, 2}, apart{1};
+  EXPECT_EQ(strand_of_1({{1, 4, Relation::kAbove, 0.4}, {4, 2, Relation::kAbove, 0.6}}), joined);
+  EXPECT_EQ(strand_of_1({{1, 4, Relation::kAbove, 3.0}, {4, 2, Relation::kAbove, 2.5}}), apart);
+  EXPECT_EQ(strand_of_1({{1, 2, Relation::kAbove, 0.0}}), joined);
+  EXPECT_EQ(strand_of_1({{1, 4, Relation::kEqual, 0.0}}), joined);
+}
+
 // A wide piece (a cap, the back hair) cut by a strand lying over it, where
 // the cut runs between two other occluders: no side outline reaches the cut,
 // so only the banks of the strand facing each other tell that the two

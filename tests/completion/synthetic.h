@@ -101,7 +101,9 @@ inline double dot_cover(int x, int y, double period, double radius, double angle
   return in / 16.0;
 }
 
-inline RegionRelation below(int a, int b) { return {a, b, Relation::kBelow, 1.0, false, false}; }
+// Drawn relations, as certain as the user's (a weak measured one would not
+// keep two pieces out of one strand: completion.cpp kFirmRelationScore).
+inline RegionRelation below(int a, int b) { return {a, b, Relation::kBelow, 1.0, true, false}; }
 
 // A vertical strand over a wide lowest region 4 (x 20..230, y 20..280, in
 // `back`), cut in two by a band 3 lying over it (x 40..210, y 118..162):
