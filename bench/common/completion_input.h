@@ -1,5 +1,7 @@
 // A completion input from a generated case, with the generator's exact
 // relations standing in for layering (benchmarks time one stage at a time).
+// They are certain, so user-fixed: a weak measured relation keeps no two
+// pieces out of one strand (completion.cpp), and score 1.0 alone is weak.
 #pragma once
 
 #include "hair25d/completion/completion.h"
@@ -12,7 +14,8 @@ inline completion::Input completion_input(const AnnotatedCase& c) {
   completion::Input in;
   in.image = &c.image;
   in.regions = &c.regions;
-  for (const AnnotatedPair& p : c.pairs) in.relations.push_back({p.a, p.b, p.relation, 1.0});
+  for (const AnnotatedPair& p : c.pairs)
+    in.relations.push_back({p.a, p.b, p.relation, 1.0, true, false});
   in.head_center = c.head_center;
   return in;
 }

@@ -34,9 +34,10 @@ fs::path scratch(const std::string& name) {
   return p;
 }
 
+// The annotation's relations, certain (user-fixed) as in RestPose.
 std::vector<RegionRelation> relations_of(const AnnotatedCase& c) {
   std::vector<RegionRelation> out;
-  for (const AnnotatedPair& p : c.pairs) out.push_back({p.a, p.b, p.relation, 1.0});
+  for (const AnnotatedPair& p : c.pairs) out.push_back({p.a, p.b, p.relation, 1.0, true, false});
   return out;
 }
 
