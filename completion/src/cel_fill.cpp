@@ -149,6 +149,8 @@ namespace {
 
 // Steps beyond a material's reach into the hole cost this many times more.
 constexpr int kBeyondReach = 16;
+// Alpha at or under this is a transparent sheet's paper, not a colour.
+constexpr std::uint8_t kFaintAlpha = 15;
 
 // The known materials around the hole (connected known, non-ink areas) and
 // how far (chamfer units) each plausibly continues behind the hair.
@@ -526,7 +528,7 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
       // Half-transparent pixels are the anti-aliased rim of a drawing on a
       // transparent sheet, not a colour of it.
       const std::uint8_t a = image.data()[i].a;
-      if (!near_ink.data[i] && (a >= 240 || a <= 15)) {
+      if (!near_ink.data[i] && (a >= 240 || a <= kFaintAlpha)) {
         origin[i] = static_cast<int>(i);
         seeds.push_back(static_cast<int>(i));
       }
@@ -569,9 +571,14 @@ int flat_fill(Image& image, const Mask& hole, const Mask& ink, const Mask& barri
   Image filled = image;
   for (std::size_t i = 0; i < n; ++i)
     if (hole[i]) {
-      if (origin[i] >= 0)
-        filled.data()[i] = image.data()[static_cast<std::size_t>(origin[i])];
-      else
+      if (origin[i] >= 0) {
+        Rgba c = image.data()[static_cast<std::size_t>(origin[i])];
+        // A seed this faint is a transparent sheet's paper under the last
+        // step of an anti-aliased rim: it fills with the sheet. Spread with
+        // its alpha of 1-15 it left faint grey squares on lucy's paper.
+        if (c.a <= kFaintAlpha) c.a = 0;
+        filled.data()[i] = c;
+      } else
         ++unreached;
     }
   // A median straightens the Voronoi seams between colours and removes the

@@ -133,6 +133,24 @@ TEST(Background, TransparentSheetStaysTransparent) {
   EXPECT_GT(paper, 1000);
 }
 
+// A drawing on a transparent sheet ends in an anti-aliased rim whose last
+// step is nearly transparent (alpha 2 on lucy); next to the hole that step
+// is the nearest known colour of the paper's side. The hole's paper must
+// still be the sheet (alpha 0), not that faint colour spread over it.
+TEST(Background, FaintRimOnATransparentSheetFillsWithTheSheet) {
+  Face f(Rgba{0, 0, 0, 0});
+  for (int x = 28; x < 234; ++x) f.drawing.at(x, Face::kBandTop - 3) = Rgba{90, 140, 190, 2};
+  const BackgroundResult r = fill_background(f.drawing, f.hole);
+  int paper = 0;
+  for (int y = 0; y < Face::kH; ++y)
+    for (int x = 0; x < Face::kW; ++x)
+      if (f.hole.at(x, y) && f.circle_distance(x, y) > 5) {
+        ++paper;
+        EXPECT_EQ(r.image.at(x, y).a, 0) << x << "," << y;
+      }
+  EXPECT_GT(paper, 1000);
+}
+
 // Skin left of x = 100, paper right of it, an ink line 3 px wide between;
 // a hole over the lower part swallows the line's end. With `floor`, a
 // horizontal ink line runs along the hole's lower rim (a collar).
