@@ -424,14 +424,14 @@ void smooth_borders(const Image& image, const Mask& hole, const Mask& barrier, c
       }
     }
   }
-  std::vector<int> stamp(n, -1), todo, next;
+  std::vector<int> stamp(n, -1), pending, next;
   for (std::size_t i = 0; i < n; ++i)
-    if (border[i] && movable(i)) todo.push_back(static_cast<int>(i));
+    if (border[i] && movable(i)) pending.push_back(static_cast<int>(i));
   std::vector<int> changes;
   std::vector<std::pair<int, int>> votes;
-  for (int round = 0; round < kRounds && !todo.empty(); ++round) {
+  for (int round = 0; round < kRounds && !pending.empty(); ++round) {
     changes.clear();
-    for (const int i : todo) {
+    for (const int i : pending) {
       const int x = i % w, y = i / w, own = cls[static_cast<std::size_t>(i)];
       const bool inside = x >= kRadius && y >= kRadius && x + kRadius < w && y + kRadius < h;
       // Most border pixels hold half their disc or more: they stay.
@@ -496,7 +496,7 @@ void smooth_borders(const Image& image, const Mask& hole, const Mask& barrier, c
           next.push_back(static_cast<int>(j));
         }
     }
-    todo.swap(next);
+    pending.swap(next);
   }
 }
 
