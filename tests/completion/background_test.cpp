@@ -766,9 +766,9 @@ struct Shoulder {
   static bool strand(int x, int y) {
     return x >= 20 && x < 240 && y >= 40 && y < 170 && (x + y / 2) % 19 < 14;
   }
-  // `stubs`: three black lines 3 px wide hanging from the strands into the
+  // `hanging_lines`: three black lines 3 px wide hanging from the strands into the
   // paper (other things' lines ending on the hole, as lucy's black locks).
-  explicit Shoulder(const Rgba& ink = kInk, bool shade = false, bool stubs = false) {
+  explicit Shoulder(const Rgba& ink = kInk, bool shade = false, bool hanging_lines = false) {
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) {
         const double d = outline_distance(x + 0.5, y + 0.5);
@@ -776,7 +776,8 @@ struct Shoulder {
         Rgba c = d < 0 ? shirt : kPaper;
         const double line = std::clamp(2.0 - std::abs(d), 0.0, 1.0);  // 3 px + AA rim
         if (line > 0) c = mix(c, ink, line);
-        if (stubs && y < 42 && y >= 8 && (x % 60 == 40 || x % 60 == 41 || x % 60 == 42) && x < 200)
+        if (hanging_lines && y < 42 && y >= 8 && (x % 60 == 40 || x % 60 == 41 || x % 60 == 42) &&
+            x < 200)
           c = Rgba{10, 10, 10, 255};
         if (strand(x, y)) c = kHair;
         drawing.at(x, y) = c;
