@@ -14,6 +14,7 @@
 #include "hair25d/core/error.h"
 #include "join_paint.h"
 #include "raster.h"
+#include "seam_joins.h"
 #include "strand_assembly.h"
 
 namespace hair25d::completion {
@@ -148,9 +149,32 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     }
   }
   const std::set<std::pair<int, int>> touching = touching_pairs(ctx.labels);
+  // The drawing's tones and paint fields, measured once for all join passes
+  // (region paint only: no relation is read).
+  detail::RegionTones tones(ctx);
+  detail::RegionFields fields(ctx);
+  // Seams (seam_joins.h): two touching pieces of one paint that the
+  // layering orders weakly, whose side outlines run on across the line
+  // between them, are halves of one strand as an `equal` pair is.
+  std::map<std::pair<int, int>, Relation> direct;
+  for (const RegionRelation& r : input.relations)
+    if (!unmeasured(r, touching)) direct[{r.a, r.b}] = r.relation;
+  const auto directly_above = [&](int x, int y) {
+    auto it = direct.find({x, y});
+    if (it != direct.end()) return it->second == Relation::kAbove;
+    it = direct.find({y, x});
+    return it != direct.end() && it->second == Relation::kBelow;
+  };
+  std::set<std::pair<int, int>> seams;
+  for (const RegionRelation& r : input.relations) {
+    if (unmeasured(r, touching) || r.relation == Relation::kEqual || firm(r)) continue;
+    if (detail::one_paint(tones, fields, r.a, r.b) &&
+        detail::seam_geometry(ctx, r.a, r.b, directly_above))
+      seams.insert({r.a, r.b});
+  }
   for (const RegionRelation& r : input.relations) {
     if (unmeasured(r, touching)) continue;
-    if (r.relation == Relation::kEqual) {
+    if (r.relation == Relation::kEqual || seams.count({r.a, r.b})) {
       // Same depth and touching: halves of one strand (counted once per two
       // groups made one, so the summary adds up: regions - strands).
       if (strands.find(r.a) != strands.find(r.b)) ++result.equal_merges;
@@ -265,9 +289,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // joins of back hair may run behind it, and face joins (below) join pieces
   // seen on opposite sides of it.
   const detail::Face face = options.face_joins ? drawn_face : detail::Face{};
-  // The drawing's tones and paint fields, measured once for all join passes.
-  detail::RegionTones tones(ctx);
-  detail::RegionFields fields(ctx);
   const std::vector<detail::Join> joins =
       detail::match_edges(ctx, candidates, face.mask, tones, try_join);
   std::set<int> joined_atoms;

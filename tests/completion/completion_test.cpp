@@ -108,6 +108,37 @@ TEST(Completion, WeakOrUnmeasuredRelationsDoNotDecideStrands) {
   EXPECT_EQ(strand_of_1({{1, 4, Relation::kEqual, 0.0}}), joined);
 }
 
+// A horizontal band of one paint cut across by a drawn line (pieces 1, x
+// 20..150, and 2, x 150..280, y 60..100, each outlined: 4 px of ink between
+// them) whose side outlines run on straight across it, the pieces ordered
+// by `order` (1 above 2); or, `tee`, piece 2 a vertical band (x 150..190, y
+// 10..150) that piece 1's sides end on.
+std::vector<int> strand_of_cut_band(const RegionRelation& order, Rgba second = kHair,
+                                    bool tee = false) {
+  Drawing d = blank(300, 170);
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, kHair, 1);
+  if (tee)
+    paint(
+        d, [](double x, double y) { return x >= 150 && x < 190 && y > 10 && y < 150; }, second, 2);
+  else
+    paint(
+        d, [](double x, double y) { return x >= 150 && x < 280 && y > 60 && y < 100; }, second, 2);
+  d.relations = {order};
+  return test::regions_with(run(d, Vec2(150, 300)), 1);
+}
+
+TEST(Completion, WeaklyOrderedPiecesOfOneStrandCutByALineAreJoined) {
+  const std::vector<int> joined{1, 2}, apart{1};
+  EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kAbove, 0.8}), joined);
+  EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kBelow, -1.5}), joined);
+  // A firm order, another paint, or a T (piece 1 ends on a strand lying
+  // across it) keep the pieces apart.
+  EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kAbove, 3.0}), apart);
+  EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kAbove, 0.8}, Rgba{185, 160, 100, 255}), apart);
+  EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kBelow, -0.8}, kHair, true), apart);
+}
+
 // A wide piece (a cap, the back hair) cut by a strand lying over it, where
 // the cut runs between two other occluders: no side outline reaches the cut,
 // so only the banks of the strand facing each other tell that the two
