@@ -292,6 +292,53 @@ cv::Mat face_lines(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& hair,
   return lines;
 }
 
+// Dark pixels hanging along the hair off the head (`head` may be empty):
+// within the hair's outline band (`near`) but farther than kSpur px,
+// through dark pixels, from any dark pixel beyond the band. A line of the
+// drawing crosses the band to reach the hair; what runs along it is the
+// hair's (a thin lock the segmentation missed, the converging outlines at
+// a lock's tips) even when it touches such a line: whole pieces within the
+// band go with the hair already, and these stayed as dark fragments on
+// sylvie's shirt and a notch in its outline. With their anti-aliased rim
+// (1 px, not dark).
+cv::Mat hanging_spurs(const cv::Mat& dark, const cv::Mat& near, const cv::Mat& head) {
+  constexpr int kSpur = 10;
+  const int w = dark.cols, h = dark.rows;
+  cv::Mat dist(h, w, CV_32S, cv::Scalar(-1));
+  std::vector<cv::Point> queue;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (dark.at<std::uint8_t>(y, x) &&
+          (!near.at<std::uint8_t>(y, x) || (!head.empty() && head.at<std::uint8_t>(y, x)))) {
+        dist.at<int>(y, x) = 0;
+        queue.emplace_back(x, y);
+      }
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const cv::Point p = queue[k];
+    const int d = dist.at<int>(p);
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = p.x + dx, y = p.y + dy;
+        if (x < 0 || y < 0 || x >= w || y >= h || !dark.at<std::uint8_t>(y, x) ||
+            dist.at<int>(y, x) >= 0)
+          continue;
+        dist.at<int>(y, x) = d + 1;
+        queue.emplace_back(x, y);
+      }
+  }
+  // Pieces wholly within the band (never reached) are left to the rules
+  // for whole pieces.
+  cv::Mat spurs(h, w, CV_8U, cv::Scalar(0));
+  bool any = false;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (dist.at<int>(y, x) > kSpur) spurs.at<std::uint8_t>(y, x) = 255, any = true;
+  if (!any) return spurs;
+  cv::Mat rim;
+  cv::dilate(spurs, rim, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3)));
+  return spurs | (rim & ~dark & near);
+}
+
 }  // namespace
 
 BackgroundHole background_hole(const Context& ctx, const Face& face) {
@@ -556,11 +603,12 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
     for (std::size_t k = 0; k < fill.size(); ++k)
       wedge_goes[k] &= fill[k] && 2 * line[k] >= size[k] && size[k] >= kMinWedge;
   }
+  const cv::Mat spurs = hanging_spurs(dark, near, head.mask);
   cv::Mat holes(h, w, CV_8U, cv::Scalar(0));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       holes.at<std::uint8_t>(y, x) =
-          hair.at<std::uint8_t>(y, x) ||
+          hair.at<std::uint8_t>(y, x) || spurs.at<std::uint8_t>(y, x) ||
           (dark.at<std::uint8_t>(y, x) &&
            (!beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] ||
             (!wedge_parts.empty() &&

@@ -252,8 +252,8 @@ std::vector<Stroke> continue_lines(const std::vector<LineEnd>& ends, const Mask&
   }
 
   // Unpaired ends between two different flat colours: continue them, so the
-  // two colours stay apart along a drawn line, when they reach ink or a line
-  // already drawn.
+  // two colours stay apart along a drawn line, when they reach ink, a line
+  // already drawn or the drawing's edge.
   Mask drawn = stroke_barrier(strokes, width, height);
   for (std::size_t a = 0; a < ends.size(); ++a) {
     const LineEnd& e = ends[a];
@@ -272,7 +272,14 @@ std::vector<Stroke> continue_lines(const std::vector<LineEnd>& ends, const Mask&
       dir = rotate(dir, kappa);
       turned += std::abs(kappa);
       const int x = static_cast<int>(std::floor(q.x())), y = static_cast<int>(std::floor(q.y()));
-      if (!r.inside(x, y) || turned > std::numbers::pi / 2) break;
+      if (!r.inside(x, y)) {
+        // The hole runs off the crop only where it reaches the drawing's
+        // edge (the crop is the hole's box and a margin): the line runs on
+        // off the drawing, as the body under hair hanging off its edge.
+        met_line = entered;
+        break;
+      }
+      if (turned > std::numbers::pi / 2) break;
       const std::size_t i = r.at(x, y);
       if (!hole[i]) {
         if (!entered && len < 4) continue;

@@ -203,13 +203,46 @@ TEST(Background, UnpairedLineBetweenTwoColoursIsContinuedToTheNextLine) {
     EXPECT_LT(darkest_near_line(r.image, y), 110) << "row " << y;
 }
 
+// The hole ends in plain colours below (no line there): a continuation
+// would meet nothing and show as a stray line.
 TEST(Background, UnpairedLineMeetingNothingIsNotContinued) {
-  const Border b(true);  // the hole runs off the sheet
+  Border b(true);
+  for (int y = Border::kHoleBottom; y < Border::kH; ++y)
+    for (int x = 0; x < Border::kW; ++x) {
+      b.drawing.at(x, y) = x < Border::kLine ? kSkin : kPaper;
+      b.hole.at(x, y) = 0;
+    }
   BackgroundOptions o;
   o.ink_seams = false;
   const BackgroundResult r = fill_background(b.drawing, b.hole, o);
   EXPECT_EQ(r.line_ends, 1);
   EXPECT_EQ(r.extended_lines, 0);
+}
+
+// Session 17: the hole runs off the drawing's lower edge (hair hanging over
+// a body that goes on below it): an outline entering it with its other end
+// nowhere visible is continued to the edge, so the two colours stay apart
+// along a line. Before, a continuation reaching the edge counted as meeting
+// nothing and was dropped.
+TEST(Background, UnpairedLineRunningOffTheDrawingIsContinuedToItsEdge) {
+  Border b(true);
+  // The hole: the lowest 50 rows, within the extension's 60 px.
+  constexpr int kTop = Border::kH - 50;
+  for (int y = Border::kHoleTop; y < kTop; ++y)
+    for (int x = 0; x < Border::kW; ++x) {
+      b.drawing.at(x, y) = std::abs(x - Border::kLine) <= 1 ? kInk
+                           : x < Border::kLine              ? kSkin
+                                                            : kPaper;
+      b.hole.at(x, y) = 0;
+    }
+  BackgroundOptions o;
+  o.ink_seams = false;  // the continued line alone
+  const BackgroundResult r = fill_background(b.drawing, b.hole, o);
+  expect_known_untouched(b.drawing, r.image, b.hole);
+  EXPECT_EQ(r.line_ends, 1);
+  EXPECT_EQ(r.extended_lines, 1);
+  for (int y = kTop; y < Border::kH; ++y)
+    EXPECT_LT(darkest_near_line(r.image, y), 110) << "row " << y;
 }
 
 TEST(Background, ShadingBorderWithoutInkGetsNoLine) {
@@ -853,6 +886,45 @@ TEST(Background, HiddenOutlineIsDrawnInTheDrawingsLineAlongShading) {
     EXPECT_GE(lined, columns * 9 / 10) << "shade " << shade;
     EXPECT_GE(navy, lined * 9 / 10) << "shade " << shade;
   }
+}
+
+// Session 17: a thin dark lock the segmentation missed hangs beside a strand
+// over a shirt (sylvie's left shoulder), 5 px from the strand's outline,
+// and its lower end touches a crease of the shirt that runs away from the
+// hair. Before, the lock and the crease were one dark piece reaching beyond
+// the hair's outline band, so all of it stayed: a dark fragment on the shirt
+// where the hair was. Now what runs along the hair more than 10 px (through
+// dark pixels) from anything beyond the band goes with the hair; the crease
+// beyond the band stays as drawn. (The strand is wide and the head centre
+// in its middle: no face, whose lines are left alone.)
+TEST(BackgroundAtRest, DarkSpurAlongTheHairGoesTheLineItHangsFromStays) {
+  constexpr int kW = 240, kH = 200;
+  constexpr Rgba kShirt{108, 183, 234, 255}, kLine{70, 35, 60, 255};
+  test::Drawing d{Image(kW, kH, Rgba{190, 220, 225, 255}), LabelMap(kW, kH, 0), {}};
+  test::paint_skin(d, [](double x, double y) { return y > 100 && x > 10 && x < 230; }, kShirt);
+  auto lock = [](int x, int y) { return x >= 104 && x < 106 && y >= 110 && y < 160; };
+  auto crease = [](int x, int y) {
+    return y >= 158 && y < 194 && std::abs((x - 104) - (y - 158)) <= 1;
+  };
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      if (lock(x, y) || crease(x, y)) d.image.at(x, y) = kLine;
+  test::paint(
+      d, [](double x, double y) { return x > 20 && x < 100 && y > 5 && y < 195; }, kHair, 1);
+  Options o;
+  o.inpaint_strands = false;
+  const Result r = complete_strands(test::input_of(d, Vec2(60, 100)), o);
+  int lock_pixels = 0, lock_dark = 0, crease_pixels = 0, crease_kept = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (lock(x, y) && y < 140) ++lock_pixels, lock_dark += luma(r.background.at(x, y)) < 120;
+      if (crease(x, y) && x >= 116)
+        ++crease_pixels, crease_kept += r.background.at(x, y) == d.image.at(x, y);
+    }
+  ASSERT_EQ(lock_pixels, 60);
+  EXPECT_EQ(lock_dark, 0) << "the lock stayed on the shirt";
+  ASSERT_GT(crease_pixels, 50);
+  EXPECT_EQ(crease_kept, crease_pixels) << "the crease beyond the hair's band was taken";
 }
 
 }  // namespace
