@@ -301,7 +301,8 @@ cv::Mat face_lines(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& hair,
 // band go with the hair already, and these stayed as dark fragments on
 // sylvie's shirt and a notch in its outline. With their anti-aliased rim
 // (1 px, not dark).
-cv::Mat hanging_spurs(const cv::Mat& dark, const cv::Mat& near, const cv::Mat& head) {
+cv::Mat hanging_spurs(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& near,
+                      const cv::Mat& head) {
   constexpr int kSpur = 10;
   const int w = dark.cols, h = dark.rows;
   cv::Mat dist(h, w, CV_32S, cv::Scalar(-1));
@@ -327,13 +328,87 @@ cv::Mat hanging_spurs(const cv::Mat& dark, const cv::Mat& near, const cv::Mat& h
       }
   }
   // Pieces wholly within the band (never reached) are left to the rules
-  // for whole pieces.
+  // for whole pieces. Only lines of the hair's colour or of its outline's
+  // (`own`) go, not thick dark areas nor lines of another colour (the navy
+  // sailor collar lying along wikipe-tan's twin tails, 2-4 px wide between
+  // its white stripes, lost strips of itself).
   cv::Mat spurs(h, w, CV_8U, cv::Scalar(0));
   bool any = false;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      if (dist.at<int>(y, x) > kSpur) spurs.at<std::uint8_t>(y, x) = 255, any = true;
+      if (dist.at<int>(y, x) > kSpur && own.at<std::uint8_t>(y, x))
+        spurs.at<std::uint8_t>(y, x) = 255, any = true;
   if (!any) return spurs;
+  // A piece that turns back from its foot (more than 120° from the line
+  // behind it) is the far side of a drawn shape's corner, not a line
+  // hanging off: trimmed, the end of a collar's outline on wikipe-tan, which
+  // turns back along her twin tail, lost its join across the tail and the
+  // shirt rose over the collar. Per piece: the direction from the line
+  // behind its foot (kStem px back along the geodesic) to the foot, against
+  // the one from the foot into the piece (as far again). On the three real
+  // drawings the pieces that go ran on within 25° of their line (sylvie's
+  // fleck on the shirt, the lock tips' outlines in wikipe-tan's notch
+  // between shirt and collar); the one kept turned by 180°.
+  constexpr int kStem = 8;
+  constexpr double kTurnBack = -0.5;  // cos 120°
+  cv::Mat parts;
+  const int n = cv::connectedComponents(spurs, parts, 8, CV_32S);
+  struct Sums {
+    cv::Point2d stem{0, 0}, foot{0, 0}, tip{0, 0};
+    int stems = 0, feet = 0, tips = 0;
+  };
+  std::vector<Sums> sums(static_cast<std::size_t>(n));
+  // The line behind each piece: back from its foot along falling distance.
+  cv::Mat owner(h, w, CV_32S, cv::Scalar(0));
+  std::vector<cv::Point> front;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int k = parts.at<int>(y, x);
+      if (k == 0) continue;
+      const int d = dist.at<int>(y, x);
+      if (d <= kSpur + kStem) sums[k].tip += cv::Point2d(x, y), ++sums[k].tips;
+      if (d != kSpur + 1) continue;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if (u < 0 || v < 0 || u >= w || v >= h || dist.at<int>(v, u) != kSpur ||
+              owner.at<int>(v, u) != 0)
+            continue;
+          owner.at<int>(v, u) = k;
+          front.emplace_back(u, v);
+        }
+    }
+  for (std::size_t q = 0; q < front.size(); ++q) {
+    const cv::Point p = front[q];
+    const int k = owner.at<int>(p), d = dist.at<int>(p);
+    if (d == kSpur) sums[k].foot += cv::Point2d(p), ++sums[k].feet;
+    if (d == kSpur - kStem) {
+      sums[k].stem += cv::Point2d(p), ++sums[k].stems;
+      continue;
+    }
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int u = p.x + dx, v = p.y + dy;
+        if (u < 0 || v < 0 || u >= w || v >= h || dist.at<int>(v, u) != d - 1 ||
+            owner.at<int>(v, u) != 0)
+          continue;
+        owner.at<int>(v, u) = k;
+        front.emplace_back(u, v);
+      }
+  }
+  std::vector<std::uint8_t> turns_back(static_cast<std::size_t>(n), 0);
+  for (int k = 1; k < n; ++k) {
+    const Sums& m = sums[k];
+    if (m.stems == 0 || m.feet == 0 || m.tips == 0) continue;
+    const cv::Point2d foot = m.foot / m.feet;
+    const cv::Point2d a = foot - m.stem / m.stems, b = m.tip / m.tips - foot;
+    const double na = std::hypot(a.x, a.y), nb = std::hypot(b.x, b.y);
+    if (na > 1e-9 && nb > 1e-9 && a.dot(b) / (na * nb) < kTurnBack) turns_back[k] = 1;
+  }
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (turns_back[static_cast<std::size_t>(parts.at<int>(y, x))])
+        spurs.at<std::uint8_t>(y, x) = 0;
   cv::Mat rim;
   cv::dilate(spurs, rim, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3)));
   return spurs | (rim & ~dark & near);
@@ -434,7 +509,9 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
   // colour beyond the labelled pixels (generated seed 50: black wedges
   // along a diagonal lock stayed on the face as if they were eyes).
   cv::Mat outline_coloured(h, w, CV_8U, cv::Scalar(0));
-  if (!head.mask.empty()) {
+  // The same off the head too: what may hang along the hair (spurs below).
+  cv::Mat line_coloured(h, w, CV_8U, cv::Scalar(0));
+  {
     std::vector<Rgba> assigned;
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
@@ -447,8 +524,9 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
           if (dark.at<std::uint8_t>(y, x) && colour_distance(image.at(x, y), line) <= kLineColour)
-            outline_coloured.at<std::uint8_t>(y, x) = 255;
+            line_coloured.at<std::uint8_t>(y, x) = 255;
     }
+    if (!head.mask.empty()) outline_coloured = line_coloured.clone();
   }
   // The face's thick dark features that the hair's outline pixels took
   // where the bangs touch them (an eye's upper lash line: thick, dark, not
@@ -603,12 +681,12 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
     for (std::size_t k = 0; k < fill.size(); ++k)
       wedge_goes[k] &= fill[k] && 2 * line[k] >= size[k] && size[k] >= kMinWedge;
   }
-  const cv::Mat spurs = hanging_spurs(dark, near, head.mask);
+  const cv::Mat spurs = hanging_spurs(dark, line_coloured | hair_coloured, near, head.mask);
   cv::Mat holes(h, w, CV_8U, cv::Scalar(0));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       holes.at<std::uint8_t>(y, x) =
-          hair.at<std::uint8_t>(y, x) || spurs.at<std::uint8_t>(y, x) ||
+          hair.at<std::uint8_t>(y, x) ||
           (dark.at<std::uint8_t>(y, x) &&
            (!beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] ||
             (!wedge_parts.empty() &&
@@ -627,6 +705,9 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
   }
   if (!features.empty()) holes &= ~features;
   take_islands(holes);
+  // After the islands: a spur gone leaves what it bordered known (a collar's
+  // stripes along wikipe-tan's twin tail were enclosed by the hole and went).
+  holes |= spurs;
   return {std::move(holes), head};
 }
 

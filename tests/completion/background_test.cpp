@@ -888,20 +888,20 @@ TEST(Background, HiddenOutlineIsDrawnInTheDrawingsLineAlongShading) {
   }
 }
 
-// Session 17: a thin dark lock the segmentation missed hangs beside a strand
-// over a shirt (sylvie's left shoulder), 5 px from the strand's outline,
-// and its lower end touches a crease of the shirt that runs away from the
-// hair. Before, the lock and the crease were one dark piece reaching beyond
-// the hair's outline band, so all of it stayed: a dark fragment on the shirt
-// where the hair was. Now what runs along the hair more than 10 px (through
-// dark pixels) from anything beyond the band goes with the hair; the crease
-// beyond the band stays as drawn. (The strand is wide and the head centre
-// in its middle: no face, whose lines are left alone.)
+// Session 17: a thin dark lock the segmentation missed (drawn in the hair's
+// outline ink) hangs beside a strand over a shirt (sylvie's left shoulder),
+// 5 px from the strand's outline, and its lower end touches a crease of the
+// shirt that runs away from the hair. Before, the lock and the crease were one dark piece reaching
+// beyond the hair's outline band, so all of it stayed: a dark fragment on the shirt where the hair
+// was. Now what runs along the hair more than 10 px (through dark pixels) from anything beyond the
+// band goes with the hair; the crease beyond the band stays as drawn. (The strand is wide and the
+// head centre in its middle: no face, whose lines are left alone.)
 TEST(BackgroundAtRest, DarkSpurAlongTheHairGoesTheLineItHangsFromStays) {
   constexpr int kW = 240, kH = 200;
-  constexpr Rgba kShirt{108, 183, 234, 255}, kLine{70, 35, 60, 255};
+  constexpr Rgba kShirt{108, 183, 234, 255}, kLine{30, 22, 18, 255};  // the outline's ink
   test::Drawing d{Image(kW, kH, Rgba{190, 220, 225, 255}), LabelMap(kW, kH, 0), {}};
-  test::paint_skin(d, [](double x, double y) { return y > 100 && x > 10 && x < 230; }, kShirt);
+  test::paint_skin(
+      d, [](double x, double y) { return y > 100 && x > 10 && x < 230; }, kShirt);
   auto lock = [](int x, int y) { return x >= 104 && x < 106 && y >= 110 && y < 160; };
   auto crease = [](int x, int y) {
     return y >= 158 && y < 194 && std::abs((x - 104) - (y - 158)) <= 1;
