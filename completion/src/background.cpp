@@ -339,76 +339,42 @@ cv::Mat hanging_spurs(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& ne
       if (dist.at<int>(y, x) > kSpur && own.at<std::uint8_t>(y, x))
         spurs.at<std::uint8_t>(y, x) = 255, any = true;
   if (!any) return spurs;
-  // A piece that turns back from its foot (more than 120° from the line
-  // behind it) is the far side of a drawn shape's corner, not a line
-  // hanging off: trimmed, the end of a collar's outline on wikipe-tan, which
-  // turns back along her twin tail, lost its join across the tail and the
-  // shirt rose over the collar. Per piece: the direction from the line
-  // behind its foot (kStem px back along the geodesic) to the foot, against
-  // the one from the foot into the piece (as far again). On the three real
-  // drawings the pieces that go ran on within 25° of their line (sylvie's
-  // fleck on the shirt, the lock tips' outlines in wikipe-tan's notch
-  // between shirt and collar); the one kept turned by 180°.
-  constexpr int kStem = 8;
-  constexpr double kTurnBack = -0.5;  // cos 120°
+  // A piece whose feet (its pixels' neighbours at the limit) lie in two
+  // places or more joins two lines beyond the band: a drawn shape's
+  // outline running along the hair between them (wikipe-tan's collar along
+  // her twin tail: trimmed, its end lost its join across the tail and the
+  // shirt rose over the collar), not a line hanging off one.
   cv::Mat parts;
   const int n = cv::connectedComponents(spurs, parts, 8, CV_32S);
-  struct Sums {
-    cv::Point2d stem{0, 0}, foot{0, 0}, tip{0, 0};
-    int stems = 0, feet = 0, tips = 0;
-  };
-  std::vector<Sums> sums(static_cast<std::size_t>(n));
-  // The line behind each piece: back from its foot along falling distance.
-  cv::Mat owner(h, w, CV_32S, cv::Scalar(0));
-  std::vector<cv::Point> front;
+  cv::Mat feet(h, w, CV_32S, cv::Scalar(0));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const int k = parts.at<int>(y, x);
-      if (k == 0) continue;
-      const int d = dist.at<int>(y, x);
-      if (d <= kSpur + kStem) sums[k].tip += cv::Point2d(x, y), ++sums[k].tips;
-      if (d != kSpur + 1) continue;
+      if (k == 0 || dist.at<int>(y, x) != kSpur + 1) continue;
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const int u = x + dx, v = y + dy;
-          if (u < 0 || v < 0 || u >= w || v >= h || dist.at<int>(v, u) != kSpur ||
-              owner.at<int>(v, u) != 0)
-            continue;
-          owner.at<int>(v, u) = k;
-          front.emplace_back(u, v);
+          if (u >= 0 && v >= 0 && u < w && v < h && dist.at<int>(v, u) == kSpur)
+            feet.at<int>(v, u) = k;
         }
     }
-  for (std::size_t q = 0; q < front.size(); ++q) {
-    const cv::Point p = front[q];
-    const int k = owner.at<int>(p), d = dist.at<int>(p);
-    if (d == kSpur) sums[k].foot += cv::Point2d(p), ++sums[k].feet;
-    if (d == kSpur - kStem) {
-      sums[k].stem += cv::Point2d(p), ++sums[k].stems;
-      continue;
+  cv::Mat places;
+  cv::connectedComponents(feet != 0, places, 8, CV_32S);
+  std::vector<int> first(static_cast<std::size_t>(n), 0);
+  std::vector<std::uint8_t> bridge(static_cast<std::size_t>(n), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int k = feet.at<int>(y, x), place = places.at<int>(y, x);
+      if (k == 0) continue;
+      auto& f = first[static_cast<std::size_t>(k)];
+      if (f == 0)
+        f = place;
+      else if (f != place)
+        bridge[static_cast<std::size_t>(k)] = 1;
     }
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int u = p.x + dx, v = p.y + dy;
-        if (u < 0 || v < 0 || u >= w || v >= h || dist.at<int>(v, u) != d - 1 ||
-            owner.at<int>(v, u) != 0)
-          continue;
-        owner.at<int>(v, u) = k;
-        front.emplace_back(u, v);
-      }
-  }
-  std::vector<std::uint8_t> turns_back(static_cast<std::size_t>(n), 0);
-  for (int k = 1; k < n; ++k) {
-    const Sums& m = sums[k];
-    if (m.stems == 0 || m.feet == 0 || m.tips == 0) continue;
-    const cv::Point2d foot = m.foot / m.feet;
-    const cv::Point2d a = foot - m.stem / m.stems, b = m.tip / m.tips - foot;
-    const double na = std::hypot(a.x, a.y), nb = std::hypot(b.x, b.y);
-    if (na > 1e-9 && nb > 1e-9 && a.dot(b) / (na * nb) < kTurnBack) turns_back[k] = 1;
-  }
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      if (turns_back[static_cast<std::size_t>(parts.at<int>(y, x))])
-        spurs.at<std::uint8_t>(y, x) = 0;
+      if (bridge[static_cast<std::size_t>(parts.at<int>(y, x))]) spurs.at<std::uint8_t>(y, x) = 0;
   cv::Mat rim;
   cv::dilate(spurs, rim, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3)));
   return spurs | (rim & ~dark & near);

@@ -906,17 +906,25 @@ TEST(BackgroundAtRest, DarkSpurAlongTheHairGoesTheLineItHangsFromStays) {
   auto crease = [](int x, int y) {
     return y >= 158 && y < 194 && std::abs((x - 104) - (y - 158)) <= 1;
   };
+  // A box drawn in the same ink whose side runs along the strand (both its
+  // ends leave the band): a shape's outline, it stays.
+  auto box = [](int x, int y) {
+    const bool across = (y == 25 || y == 26 || y == 84 || y == 85) && x >= 104 && x < 130;
+    return across || (x >= 104 && x < 106 && y >= 25 && y < 86);
+  };
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x)
-      if (lock(x, y) || crease(x, y)) d.image.at(x, y) = kLine;
+      if (lock(x, y) || crease(x, y) || box(x, y)) d.image.at(x, y) = kLine;
   test::paint(
       d, [](double x, double y) { return x > 20 && x < 100 && y > 5 && y < 195; }, kHair, 1);
   Options o;
   o.inpaint_strands = false;
   const Result r = complete_strands(test::input_of(d, Vec2(60, 100)), o);
-  int lock_pixels = 0, lock_dark = 0, crease_pixels = 0, crease_kept = 0;
+  int lock_pixels = 0, lock_dark = 0, crease_pixels = 0, crease_kept = 0, side = 0, side_kept = 0;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
+      if (box(x, y) && x < 106 && y > 30 && y < 80)
+        ++side, side_kept += r.background.at(x, y) == d.image.at(x, y);
       if (lock(x, y) && y < 140) ++lock_pixels, lock_dark += luma(r.background.at(x, y)) < 120;
       if (crease(x, y) && x >= 116)
         ++crease_pixels, crease_kept += r.background.at(x, y) == d.image.at(x, y);
@@ -925,6 +933,8 @@ TEST(BackgroundAtRest, DarkSpurAlongTheHairGoesTheLineItHangsFromStays) {
   EXPECT_EQ(lock_dark, 0) << "the lock stayed on the shirt";
   ASSERT_GT(crease_pixels, 50);
   EXPECT_EQ(crease_kept, crease_pixels) << "the crease beyond the hair's band was taken";
+  ASSERT_EQ(side, 98);
+  EXPECT_EQ(side_kept, side) << "the box's side along the strand was taken";
 }
 
 }  // namespace
