@@ -306,14 +306,27 @@ cv::Mat hanging_spurs(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& ne
   constexpr int kSpur = 10;
   const int w = dark.cols, h = dark.rows;
   cv::Mat dist(h, w, CV_32S, cv::Scalar(-1));
+  // Distance 0: dark pixels beyond the band, or on the head; only those
+  // next to a dark pixel in the band (not on the head) lead on.
+  auto seed = [&](int x, int y) {
+    return !near.at<std::uint8_t>(y, x) || (!head.empty() && head.at<std::uint8_t>(y, x));
+  };
   std::vector<cv::Point> queue;
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (dark.at<std::uint8_t>(y, x) &&
-          (!near.at<std::uint8_t>(y, x) || (!head.empty() && head.at<std::uint8_t>(y, x)))) {
-        dist.at<int>(y, x) = 0;
-        queue.emplace_back(x, y);
-      }
+    for (int x = 0; x < w; ++x) {
+      if (!dark.at<std::uint8_t>(y, x) || !seed(x, y)) continue;
+      dist.at<int>(y, x) = 0;
+      bool leads = false;
+      for (int dy = -1; dy <= 1 && !leads; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if (u >= 0 && v >= 0 && u < w && v < h && dark.at<std::uint8_t>(v, u) && !seed(u, v)) {
+            leads = true;
+            break;
+          }
+        }
+      if (leads) queue.emplace_back(x, y);
+    }
   for (std::size_t k = 0; k < queue.size(); ++k) {
     const cv::Point p = queue[k];
     const int d = dist.at<int>(p);
