@@ -298,8 +298,9 @@ cv::Mat face_lines(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& hair,
 // drawing crosses the band to reach the hair; what runs along it is the
 // hair's (a thin lock the segmentation missed, the converging outlines at
 // a lock's tips) even when it touches such a line: whole pieces within the
-// band go with the hair already, and these stayed as dark fragments on
-// sylvie's shirt and a notch in its outline. With their anti-aliased rim
+// band go with the hair already, and these stayed (a red fleck on sylvie's
+// shirt; dark dashes on wikipe-tan's collar stripes, beside which the paper
+// reached in between her shirt and collar). With their anti-aliased rim
 // (1 px, not dark).
 cv::Mat hanging_spurs(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& near,
                       const cv::Mat& head) {
