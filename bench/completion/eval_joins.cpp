@@ -15,6 +15,9 @@
 #include "hair25d/generator/generator.h"
 #include "hair25d/layering/layering.h"
 #include "join_upper_bound.h"
+#ifdef HAIR25D_HAVE_PIPELINE
+#include "hair25d/pipeline/joint_layering.h"
+#endif
 
 namespace {
 
@@ -60,14 +63,23 @@ void print_bound(const std::string& name, const completion::test::UpperBound& b)
       b.other_linked, b.other_pairs);
 }
 
-void score(const AnnotatedCase& c, bool predicted, const completion::Options& options,
+// Which relations completion is given.
+enum class Relations { kAnnotated, kPredicted, kJoint };
+
+void score(const AnnotatedCase& c, Relations relations, const completion::Options& options,
            const std::string& name, const std::string& overlay, bool bound, std::FILE* csv,
            Total* total) {
   completion::Input in = completion::test::input_from_case(c);
-  if (predicted) {
+  if (relations != Relations::kAnnotated) {
     in.relations.clear();  // a failed layering leaves no relations, not the annotation's
     try {
-      in.relations = layering::layer_regions(c.image, c.regions).relations;
+#ifdef HAIR25D_HAVE_PIPELINE
+      if (relations == Relations::kJoint)
+        in.relations =
+            pipeline::layer_with_joins(c.image, c.regions, {}, options).layering.relations;
+      else
+#endif
+        in.relations = layering::layer_regions(c.image, c.regions).relations;
       if (!overlay.empty()) print_relation_errors(c, in.relations, name);
     } catch (const std::exception& e) {
       std::printf("%s: layering failed (%s); no relations\n", name.c_str(), e.what());
@@ -120,8 +132,10 @@ int main(int argc, char** argv) {
   std::string overlay, annotated, relations = "annotated", shading = "flat";
   int width = 800, height = 640, strands = 20, seed = 1, count = 4;
   app.add_option("--annotated", annotated, "Folder of annotated cases (else generated ones)");
-  app.add_option("--relations", relations, "annotated (the case's pairs) or predicted (layering)")
-      ->check(CLI::IsMember({"annotated", "predicted"}));
+  app.add_option("--relations", relations,
+                 "annotated (the case's pairs), predicted (layering) or joint (layering's "
+                 "revised with the joins, pipeline/joint_layering.h)")
+      ->check(CLI::IsMember({"annotated", "predicted", "joint"}));
   app.add_option("--width", width, "Generated drawing width")->check(CLI::Range(64, 8192));
   app.add_option("--height", height, "Generated drawing height")->check(CLI::Range(64, 8192));
   app.add_option("--strands", strands, "Generated strands")->check(CLI::Range(1, 400));
@@ -172,7 +186,15 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  const bool predicted = relations == "predicted";
+  const Relations predicted = relations == "predicted" ? Relations::kPredicted
+                              : relations == "joint"   ? Relations::kJoint
+                                                       : Relations::kAnnotated;
+#ifndef HAIR25D_HAVE_PIPELINE
+  if (predicted == Relations::kJoint) {
+    std::fprintf(stderr, "eval_joins: --relations joint needs the pipeline library\n");
+    return 1;
+  }
+#endif
   Total total;
   try {
     if (!annotated.empty()) {

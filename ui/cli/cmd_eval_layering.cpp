@@ -1,4 +1,5 @@
-// hair25d eval-layering CASES_DIR [--json REPORT.json] [--from-strokes] [--overlays DIR]:
+// hair25d eval-layering CASES_DIR [--json REPORT.json] [--from-strokes] [--overlays DIR]
+// [--with-joins]:
 // layering accuracy over annotated cases, printed like the paper's Table 1.
 #include <cstdio>
 #include <filesystem>
@@ -20,6 +21,7 @@ struct EvalLayeringArgs {
   std::string json_path;
   std::string overlays_dir;
   bool from_strokes = false;
+  bool with_joins = false;
 };
 
 // The mark write_folder_atomically leaves in the overlays folder.
@@ -44,6 +46,9 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
                       "wrong pairs ringed in red");
   cmd->add_flag("--from-strokes", args->from_strokes,
                 "Layer regions segmented from each case's strokes.json instead of regions.png");
+  cmd->add_flag("--with-joins", args->with_joins,
+                "Score the relations revised by completion's strand joins (the pieces of one "
+                "strand at one depth, weak relations to a strand's pieces made to agree)");
   cmd->callback([args, json, overlays, &common] {
     // Given but empty (a script's unset variable) is not "not given": the
     // report or the overlays would silently go nowhere.
@@ -64,6 +69,7 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
     }
     pipeline::LayeringEvalOptions options;
     options.from_strokes = args->from_strokes;
+    options.with_joins = args->with_joins;
     const std::vector<std::filesystem::path> cases = find_annotated_cases(args->cases_dir);
     const bool json_to_stdout = args->json_path == "-";
     if (!args->json_path.empty() && !json_to_stdout) {

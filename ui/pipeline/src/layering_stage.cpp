@@ -27,6 +27,14 @@ LayeringCaseResult evaluate_one(const AnnotatedCase& c, const LayeringEvalOption
     check_label_map(regions, c.folder.string() + ": the region map");
     const auto start = std::chrono::steady_clock::now();
     result = layering::layer_regions(c.image, regions, options.layering);
+    if (options.with_joins) {
+      // The joins grouped with the layering's relations, and the relations
+      // revised to agree with them (joint_layering.h).
+      const std::vector<std::vector<int>> strands =
+          join_strand_groups(c.image, regions, result->relations);
+      revise_with_strands(regions.labels(), strands, options.joint, &result->relations,
+                          &result->depth);
+    }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out.score = layering::score_relations(c, result->relations);

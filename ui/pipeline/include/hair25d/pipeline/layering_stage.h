@@ -11,6 +11,7 @@
 #include "hair25d/core/progress.h"
 #include "hair25d/layering/evaluation.h"
 #include "hair25d/layering/layering.h"
+#include "hair25d/pipeline/joint_layering.h"
 
 namespace hair25d::pipeline {
 
@@ -31,6 +32,10 @@ struct LayeringEvalOptions {
   // When not empty: one overlay per case, <dir>/<case>.png, wrong pairs ringed.
   std::filesystem::path overlays_dir;
   layering::Options layering;
+  // Score the relations revised by completion's strand joins
+  // (joint_layering.h) instead of the layering's own.
+  bool with_joins = false;
+  JointOptions joint;
 };
 
 struct LayeringCaseResult {
