@@ -160,7 +160,7 @@ int main(int argc, char** argv) {
                "no joins of back-hair pieces through the regions above both");
   app.add_option("--min-join-coverage", options.min_join_coverage,
                  "completion::Options::min_join_coverage");
-  app.add_flag("--join-scorer", options.join_scorer.enabled,
+  app.add_flag("--join-scorer,!--no-join-scorer", options.join_scorer.enabled,
                "decide strand joins in the cost band by the learned scorer (join_scorer.h)");
   app.add_option("--scorer-band-low", options.join_scorer.band_low, "JoinScorerOptions::band_low");
   app.add_option("--scorer-band-high", options.join_scorer.band_high,

@@ -168,6 +168,14 @@ JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, con
   f[35] = t.rare_paint ? 1.0f : 0.0f;
   f[36] = static_cast<float>(std::clamp(t.tone_cost, -3.0, 3.0));
   f[37] = t.one_sided ? 1.0f : 0.0f;
+  // Session 17: the dots' tone match the tone cost sums into one number,
+  // its continuous steps, and whether one occluder hides the whole gap.
+  f[38] = t.tone_match > 0 ? 1.0f : 0.0f;
+  f[39] = t.tone_match < 0 ? 1.0f : 0.0f;
+  f[40] = t.mass_step >= 0 ? static_cast<float>(std::min(t.mass_step, 0.5)) : 0.6f;
+  f[41] = static_cast<float>(std::min(t.dark_step, 0.3));
+  f[42] = static_cast<float>(t.top_occluder);
+  f[43] = static_cast<float>(std::min(t.patch_occluders, 4)) / 4.0f;
   return f;
 }
 

@@ -29,6 +29,13 @@ struct JoinTerms {
   bool rare_paint = false;         // one flat paint few regions share
   double tone_cost = 0;            // `tone_join_cost` (screentone)
   bool one_sided = false;          // a nub's tangents left out
+  // Session 17: what the tone cost and the cover leave out (screentone: the
+  // dots' match and its continuous steps; the occluders over the patch).
+  int tone_match = 0;       // RegionTones::match: 1 same, −1 other, 0 unknown
+  double mass_step = -1;    // RegionTones::mass_step, −1 unknown / not screentone
+  double dark_step = 0;     // |tone(a) − tone(b)| (screentone)
+  double top_occluder = 1;  // share of the covered patch under its largest occluder
+  int patch_occluders = 0;  // occluders holding ≥ 10 % of the covered patch
 };
 
 // Every input but the rivals' (indices 27–30, filled by `add_rival_features`).

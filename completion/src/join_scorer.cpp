@@ -51,7 +51,13 @@ constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
                                                "shading_continues",
                                                "rare_paint",
                                                "tone_cost",
-                                               "one_sided"};
+                                               "one_sided",
+                                               "tone_same",
+                                               "tone_other",
+                                               "mass_step",
+                                               "dark_step",
+                                               "top_occluder",
+                                               "patch_occluders"};
 
 std::string num(double v) {
   std::ostringstream s;

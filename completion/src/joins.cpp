@@ -203,7 +203,8 @@ Polyline join_patch(const Edge& a, const Edge& b) {
 // above no region (not in `front`) that the patch covers.
 double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const cv::Mat& face,
                 int* hidden, const std::set<int>* front = nullptr,
-                std::map<int, int>* lowest = nullptr, bool ink = false) {
+                std::map<int, int>* lowest = nullptr, bool ink = false,
+                std::map<int, int>* under_by = nullptr) {
   double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
   for (const Vec2& p : patch) {
     x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
@@ -232,11 +233,32 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       // Across a cut of ink only, the drawn ink is what lies over the gap.
       if ((l != 0 && (ctx.is_above(l, ra) || ctx.is_above(l, rb))) ||
           (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ||
-          (ink && ctx.original->at(gx, gy) == 0))
+          (ink && ctx.original->at(gx, gy) == 0)) {
         ++under;
+        if (under_by) ++(*under_by)[l];  // the face and the ink count as 0
+      }
     }
   *hidden = total;
   return total > 0 ? static_cast<double>(under) / total : 1.0;
+}
+
+// The scorer's inputs of session 17 (join_features.h): the dots' tone match
+// and steps on a screentone drawing, and how the covered part of the patch
+// (`under_by`: pixels per occluder) falls to its occluders.
+void add_scorer_terms(RegionTones& tones, int ra, int rb, const std::map<int, int>& under_by,
+                      JoinTerms* t) {
+  if (tones.screentone()) {
+    const RegionTones::Match m = tones.match(ra, rb);
+    t->tone_match = m == RegionTones::Match::kSame ? 1 : m == RegionTones::Match::kOther ? -1 : 0;
+    const double step = tones.mass_step(ra, rb);
+    t->mass_step = std::isfinite(step) ? step : -1.0;
+    t->dark_step = std::abs(tones.tone(ra) - tones.tone(rb));
+  }
+  int total = 0, top = 0;
+  for (const auto& [l, n] : under_by) total += n, top = std::max(top, n);
+  t->top_occluder = total > 0 ? static_cast<double>(top) / total : 1.0;
+  t->patch_occluders = 0;
+  for (const auto& [l, n] : under_by) t->patch_occluders += 10 * n >= total;
 }
 
 // The learned scorer decides the strand joins whose hand cost lies in its
@@ -451,17 +473,17 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           join.patch = join_patch(a, b);
           int hidden = 0;
           join.behind_face = !face.empty() && !front.count(a.region) && !front.count(b.region);
-          std::map<int, int> lowest;
-          const double cover =
-              coverage(ctx, join.patch, a.region, b.region, join.behind_face ? face : no_face,
-                       &hidden, &front, join.behind_face ? &lowest : nullptr, ink);
+          std::map<int, int> lowest, under_by;
+          const double cover = coverage(
+              ctx, join.patch, a.region, b.region, join.behind_face ? face : no_face, &hidden,
+              &front, join.behind_face ? &lowest : nullptr, ink, scoring ? &under_by : nullptr);
           const bool over_other_back =
               hidden > 0 &&
               other_back_share(a.region, b.region, lowest) / hidden > kMaxOtherBackShare;
           cost = cover < o.min_join_coverage || over_other_back
                      ? std::numeric_limits<double>::infinity()
                      : cost + 3.0 * (1.0 - cover);
-          if (scoring && std::isfinite(cost))
+          if (scoring && std::isfinite(cost)) {
             terms = JoinTerms{mean_angle / max_angle,
                               worst_angle / max_angle,
                               colour / o.max_colour_distance,
@@ -480,6 +502,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                               rare,
                               tone_cost,
                               one_sided.has_value()};
+            add_scorer_terms(tones, a.region, b.region, under_by, &*terms);
+          }
         }
       }
       // Across the banks of one occluder the rays themselves are the hidden

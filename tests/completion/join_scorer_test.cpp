@@ -186,6 +186,34 @@ TEST(JoinScorer, FeaturesReadThePaintTermsOfTheHandCost) {
   EXPECT_NEAR(h->hand_cost - s->hand_cost, 1.5, 1e-6);
 }
 
+// Session 17: whether one occluder hides the whole gap. The band of
+// `banded` under one occluder, and under two side by side (3 over x
+// 130-150, 4 over 150-170), each above both pieces.
+TEST(JoinScorer, FeaturesCountTheOccludersOverTheGap) {
+  const Result one = recorded(banded(false), Vec2(150, 300));
+  Drawing d = banded(false);
+  paint(
+      d, [](double x, double y) { return x >= 150 && x < 170 && y > 10 && y < 150; },
+      Rgba{90, 140, 160, 255}, 4);
+  d.relations = {below(1, 3), below(2, 3), below(1, 4), below(2, 4)};
+  const Result two = recorded(d, Vec2(150, 300));
+  const JoinCandidate* c1 = candidate(one, 1, 2);
+  const JoinCandidate* c2 = candidate(two, 1, 2);
+  ASSERT_NE(c1, nullptr);
+  ASSERT_NE(c2, nullptr);
+  EXPECT_FLOAT_EQ(c1->features[feature("top_occluder")], 1.0f);
+  EXPECT_FLOAT_EQ(c1->features[feature("patch_occluders")], 0.25f);
+  EXPECT_NEAR(c2->features[feature("top_occluder")], 0.5, 0.1);
+  EXPECT_FLOAT_EQ(c2->features[feature("patch_occluders")], 0.5f);
+  // No screentone: the dots' inputs say unknown.
+  for (const JoinCandidate* c : {c1, c2}) {
+    EXPECT_EQ(c->features[feature("tone_same")], 0.0f);
+    EXPECT_EQ(c->features[feature("tone_other")], 0.0f);
+    EXPECT_FLOAT_EQ(c->features[feature("mass_step")], 0.6f);
+    EXPECT_EQ(c->features[feature("dark_step")], 0.0f);
+  }
+}
+
 TEST(JoinScorer, FeaturesDoNotChangeUnderMirrorOrTransposition) {
   const Drawing d = banded(false);
   const Result base = recorded(d, Vec2(150, 300));
