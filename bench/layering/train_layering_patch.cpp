@@ -542,7 +542,18 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 1.0));
   app.add_flag("--distil-logit", mean_logit,
                "with --teachers: the probability of the teachers' mean log-odds instead");
+  std::string coarse = "none";
+  app.add_option("--coarse", coarse,
+                 "with --grey: which networks also read the coarse scale (patch_model.h, "
+                 "kPatchCoarse × the radius)")
+      ->check(CLI::IsMember({"none", "order", "same", "both"}));
   CLI11_PARSE(app, argc, argv);
+  const bool coarse_order = coarse == "order" || coarse == "both";
+  const bool coarse_same = coarse == "same" || coarse == "both";
+  if (coarse != "none" && !grey) {
+    std::fprintf(stderr, "--coarse needs --grey\n");
+    return 1;
+  }
 
   if (!use_adam && detail::kPatchMembers != 1) {
     std::fprintf(stderr,
@@ -616,7 +627,10 @@ int main(int argc, char** argv) {
     throw hair25d::Error(
         "train_layering_patch: --grey needs --adam, --order-scales 2 and one file");
   const int label_inputs = order_scales * detail::kPatchScaleInputs;
-  const int used = parts == 1 ? (grey ? detail::kPatchInputs : label_inputs) : d;
+  const int used = parts == 1
+                       ? (grey ? (coarse_order ? detail::kPatchInputs : detail::kPatchCoarseStart)
+                               : label_inputs)
+                       : d;
   auto net = std::make_unique<detail::PatchNet>();
   std::vector<double> score(records.size(), 0.0);
   cv::Ptr<cv::ml::ANN_MLP> mlp;
@@ -644,6 +658,7 @@ int main(int argc, char** argv) {
             "train_layering_patch: --grey-dropout and --wide-dropout exclude "
             "each other");
       adam.fine_inputs = detail::kPatchLabelInputs;
+      adam.dropout_end = detail::kPatchCoarseStart;  // the grey channel only
       adam.wide_dropout = grey_dropout;
     }
     adam.seed = seed;
@@ -774,8 +789,9 @@ int main(int argc, char** argv) {
   std::string same_report;
   const detail::SameDepthNet same =
       train_same_depth(records, split, same_iterations, seed, use_adam ? &adam : nullptr,
-                       grey ? detail::kPatchInputs : detail::kPatchLabelInputs, &same_report,
-                       teachers.empty() ? nullptr : &soft.same);
+                       grey ? (coarse_same ? detail::kPatchInputs : detail::kPatchCoarseStart)
+                            : detail::kPatchLabelInputs,
+                       &same_report, teachers.empty() ? nullptr : &soft.same);
   char method_buffer[200];
   if (use_adam)
     std::snprintf(method_buffer, sizeof method_buffer,
@@ -791,6 +807,7 @@ int main(int argc, char** argv) {
     std::snprintf(method_buffer, sizeof method_buffer, "--iterations %d --same-iterations %d",
                   iterations, same_iterations);
   std::string method = method_buffer;
+  if (coarse != "none") method += " --coarse " + coarse;
   if (thin_weight != 1.0) {
     char text[40];
     std::snprintf(text, sizeof text, " --thin-weight %g", thin_weight);

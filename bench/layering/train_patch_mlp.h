@@ -40,6 +40,9 @@ struct MlpOptions {
   double soft_share = 1.0;
 
   int fine_inputs = hair25d::layering::detail::kPatchScaleInputs;
+  // ... up to this input (exclusive; -1: to the last one), so that a grey
+  // channel dropout leaves the coarse scale after it (session 17).
+  int dropout_end = -1;
   std::uint64_t seed = 1;
 };
 
@@ -110,8 +113,9 @@ inline void train_patch_member(const RowMatrix& x, const RowMatrix& xs, const st
         bx.row(r) = x.row(order[start + r]).head(d);
         bs.row(r) = xs.row(order[start + r]).head(d);
         if (o.wide_dropout > 0 && d > o.fine_inputs && (rng() >> 11) * 0x1.0p-53 < o.wide_dropout) {
-          bx.row(r).tail(d - o.fine_inputs).setZero();
-          bs.row(r).tail(d - o.fine_inputs).setZero();
+          const int end = o.dropout_end < 0 ? d : std::min(o.dropout_end, d);
+          bx.row(r).segment(o.fine_inputs, end - o.fine_inputs).setZero();
+          bs.row(r).segment(o.fine_inputs, end - o.fine_inputs).setZero();
         }
       }
       // Forward both patches.

@@ -330,12 +330,14 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   const detail::SameDepthNet& same_net = detail::patch_same_weights();
   const double patch_size = detail::patch_radius(reach);
   const int order_inputs = use_patches ? detail::patch_inputs_used(order_net) : 0;
-  // The drawing's grey levels only for networks that weigh them.
-  const bool read_grey =
-      use_patches &&
-      std::max(order_inputs, detail::patch_inputs_used(same_net.net)) > detail::kPatchLabelInputs;
+  const int inputs_used =
+      use_patches ? std::max(order_inputs, detail::patch_inputs_used(same_net.net)) : 0;
+  // The drawing's grey levels, and the coarse scale, only for networks that
+  // weigh them (networks that read the coarse scale read the grey channel).
+  const bool read_grey = inputs_used > detail::kPatchLabelInputs;
   const detail::PatchImage patch_image{read_grey ? &image : nullptr,
-                                       detail::patch_contrast(out.line_threshold)};
+                                       detail::patch_contrast(out.line_threshold), true,
+                                       inputs_used > detail::kPatchCoarseStart};
   detail::ParallelLoop patch_loop(&pool, use_patches ? nb : 0, [&](int i) {
     if (!patched(i)) return;
     const std::vector<detail::Patch> patches = detail::boundary_patches(

@@ -154,8 +154,12 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
   // Sample offsets along u and v, products taken once: each sample point is
   // then (centre + cu·u) + cv·v, the same sums as written out per sample.
   std::array<double, kSamples> ax{}, ay{}, bx{}, by{};
-  for (int scale = 0; scale < kPatchScales; ++scale) {
-    const double r = scale == 0 ? radius : kPatchWide * radius;
+  // The label scales: fine, wide, then the coarse one (after the grey
+  // channel) when asked for.
+  for (int scale = 0; scale < kPatchScales + (drawing.coarse ? 1 : 0); ++scale) {
+    const double r = scale == 0             ? radius
+                     : scale < kPatchScales ? kPatchWide * radius
+                                            : kPatchCoarse * radius;
     const double cell = 2 * r / kPatchCells;
     for (int k = 0; k < kSamples; ++k) {
       const double c = -r + (k / 2 + 0.25 + 0.5 * (k % 2)) * cell;
@@ -164,7 +168,7 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
       bx[k] = c * v.x();
       by[k] = c * v.y();
     }
-    float* out = p.data() + scale * kPatchScaleInputs;
+    float* out = p.data() + (scale < kPatchScales ? scale * kPatchScaleInputs : kPatchCoarseStart);
     auto add = [&](float* c, int l) {
       if (l == a)
         c[0] += 0.25f;
@@ -267,10 +271,10 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
 
 Patch swapped(const Patch& patch) {
   Patch s{};
-  for (int scale = 0; scale < kPatchScales; ++scale)
+  for (int scale = 0; scale <= kPatchScales; ++scale)
     for (int j = 0; j < kPatchCells; ++j)
       for (int i = 0; i < kPatchCells; ++i) {
-        const int base = scale * kPatchScaleInputs;
+        const int base = scale < kPatchScales ? scale * kPatchScaleInputs : kPatchCoarseStart;
         const int from = base + (j * kPatchCells + i) * kPatchChannels;
         const int to = base + ((kPatchCells - 1 - j) * kPatchCells + i) * kPatchChannels;
         s[to] = -patch[from];
@@ -306,8 +310,11 @@ double net_output(const PatchNet& net, const std::array<float, kPatchHidden>& su
 // A patch's non-zero inputs in increasing index order (the order in which
 // patch_net adds them), and where each row of cells begins among them: the
 // rows of the label scales (kPatchCells × kPatchChannels inputs each), then
-// those of the grey channel (kPatchCells each).
-constexpr int kPatchRows = kPatchScales * kPatchCells + kPatchCells;
+// those of the grey channel (kPatchCells each), then the coarse scale's.
+// Blocks of kPatchCells rows: the scales, the grey channel (block
+// kPatchScales), the coarse scale.
+constexpr int kPatchRows = (kPatchScales + 2) * kPatchCells;
+constexpr bool label_block(int block) { return block != kPatchScales; }
 // (Sixteen entries of room at the end: the AVX-512 path writes sixteen at
 // a time past the last one.)
 struct NonZeroInputs {
@@ -318,9 +325,10 @@ struct NonZeroInputs {
 };
 
 int row_begin(int r) {
-  return r <= kPatchScales * kPatchCells
-             ? r * kPatchCells * kPatchChannels
-             : kPatchLabelInputs + (r - kPatchScales * kPatchCells) * kPatchCells;
+  constexpr int grey_rows = kPatchScales * kPatchCells, coarse_rows = grey_rows + kPatchCells;
+  return r <= grey_rows     ? r * kPatchCells * kPatchChannels
+         : r <= coarse_rows ? kPatchLabelInputs + (r - grey_rows) * kPatchCells
+                            : kPatchCoarseStart + (r - coarse_rows) * kPatchCells * kPatchChannels;
 }
 
 // The bits of the non-zero values among the n ≤ 32 floats at `x` (NaN
@@ -358,7 +366,7 @@ void swapped_inputs(const NonZeroInputs& in, NonZeroInputs& out) {
     const int block = r / kPatchCells, j = r % kPatchCells;
     const int from = block * kPatchCells + (kPatchCells - 1 - j);
     const int shift = row_begin(r) - row_begin(from);
-    const std::uint32_t sign = block < kPatchScales ? 0x80000000u : 0u;
+    const std::uint32_t sign = label_block(block) ? 0x80000000u : 0u;
     for (int e = in.row_start[from]; e < in.row_start[from + 1]; ++e) {
       const int k = in.k[e];
       const std::uint32_t flip = sign & (0u - static_cast<std::uint32_t>(k % kPatchChannels == 0));
@@ -401,7 +409,7 @@ __attribute__((target("avx512f"))) void both_inputs_avx512(const Patch& patch, N
     const int block = r / kPatchCells, j = r % kPatchCells;
     const int from = block * kPatchCells + (kPatchCells - 1 - j);
     const int k0 = row_begin(r), k1 = row_begin(r + 1), from0 = row_begin(from);
-    const __m512i flip = block < kPatchScales ? even_signs : _mm512_setzero_si512();
+    const __m512i flip = label_block(block) ? even_signs : _mm512_setzero_si512();
     for (int k = k0; k < k1; k += 16) {
       pack_avx512(in, n, _mm512_loadu_ps(patch.data() + k), k);
       const __m512i other = _mm512_loadu_si512(patch.data() + from0 + (k - k0));

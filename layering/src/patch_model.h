@@ -25,15 +25,21 @@ namespace hair25d::layering::detail {
 // than the brightest of the 3 × 3 cells about it, in units of `contrast` (a
 // typical drawn line's contrast), at most 2 — where the lines run, which the label
 // map does not show (a line fading out inside a strand, the paper between
-// two outlines, an outline that runs on past a T).
+// two outlines, an outline that runs on past a T). Last (session 17) a
+// coarse third scale of the same two label channels, radius kPatchCoarse × r
+// (each scale three times the last: the strands' shapes well beyond the
+// junction), from kPatchCoarseStart on; networks that weigh it 0 read the
+// first kPatchCoarseStart inputs exactly as before it was added.
 inline constexpr int kPatchCells = 16;
 inline constexpr int kPatchChannels = 2;
 inline constexpr int kPatchScales = 2;
 inline constexpr double kPatchWide = 3.0;
+inline constexpr double kPatchCoarse = 9.0;
 inline constexpr int kPatchScaleInputs = kPatchCells * kPatchCells * kPatchChannels;
 inline constexpr int kPatchLabelInputs = kPatchScales * kPatchScaleInputs;
 inline constexpr int kPatchGreyInputs = kPatchCells * kPatchCells;
-inline constexpr int kPatchInputs = kPatchLabelInputs + kPatchGreyInputs;
+inline constexpr int kPatchCoarseStart = kPatchLabelInputs + kPatchGreyInputs;
+inline constexpr int kPatchInputs = kPatchCoarseStart + kPatchScaleInputs;
 using Patch = std::array<float, kPatchInputs>;
 
 // The drawing a patch's grey channel is read from, and the grey-level
@@ -44,6 +50,9 @@ struct PatchImage {
   // Samples read with the processor's gathers where it has AVX-512F (the
   // same patch as without).
   bool widest = true;
+  // Sample the coarse scale (else its inputs are 0: for networks that weigh
+  // it 0, which then need not pay for it).
+  bool coarse = true;
 };
 
 // The cells of the first scale cover [−radius, radius]² about `centre`

@@ -66,8 +66,10 @@ Patch reference_patch(const LabelMap& labels, const Vec2& centre, const Vec2& di
   Patch p{};
   std::array<float, kPatchGreyInputs> grey{};
   std::array<int, kPatchGreyInputs> count{};
-  for (int scale = 0; scale < kPatchScales; ++scale) {
-    const double r = scale == 0 ? radius : kPatchWide * radius;
+  // The fine and wide scales, then the coarse one after the grey channel.
+  for (int scale = 0; scale <= kPatchScales; ++scale) {
+    const double r = scale == 0 ? radius : scale == 1 ? kPatchWide * radius : kPatchCoarse * radius;
+    const int base = scale < kPatchScales ? scale * kPatchScaleInputs : kPatchCoarseStart;
     const double cell = 2 * r / kPatchCells;
     for (int j = 0; j < kPatchCells; ++j)
       for (int i = 0; i < kPatchCells; ++i)
@@ -85,7 +87,7 @@ Patch reference_patch(const LabelMap& labels, const Vec2& centre, const Vec2& di
               ++count[j * kPatchCells + i];
             }
             const int l = labels.at(x, y);
-            const int k = scale * kPatchScaleInputs + (j * kPatchCells + i) * kPatchChannels;
+            const int k = base + (j * kPatchCells + i) * kPatchChannels;
             if (l == a)
               p[k] += 0.25f;
             else if (l == b)
@@ -235,7 +237,10 @@ TEST(JunctionPatch, TheGreyChannelShowsLinesNotTones) {
   EXPECT_FLOAT_EQ(dark(8, 12), 0.0f);
   // Without an image, no grey channel; the label channels are the same.
   const Patch q = junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(1, 0), 1, 3, false, 8.0);
-  for (int k = 0; k < kPatchInputs; ++k) EXPECT_EQ(q[k], k < kPatchLabelInputs ? p[k] : 0.0f) << k;
+  for (int k = 0; k < kPatchInputs; ++k) {
+    const bool label = k < kPatchLabelInputs || k >= kPatchCoarseStart;
+    EXPECT_EQ(q[k], label ? p[k] : 0.0f) << k;
+  }
 }
 
 TEST(JunctionPatch, SwappedTwiceIsTheSamePatch) {
@@ -251,6 +256,31 @@ TEST(JunctionPatch, SwappedTwiceIsTheSamePatch) {
   EXPECT_EQ(s[kPatchLabelInputs + 3], p[kPatchLabelInputs + (kPatchCells - 1) * kPatchCells + 3]);
   EXPECT_EQ(s[kPatchLabelInputs + 2 * kPatchCells + 5],
             p[kPatchLabelInputs + (kPatchCells - 3) * kPatchCells + 5]);
+  // The coarse scale as the others: mirrored, its A − B channel negated.
+  const int last_row = (kPatchCells - 1) * kPatchCells * kPatchChannels;
+  EXPECT_EQ(s[kPatchCoarseStart + 6], -p[kPatchCoarseStart + last_row + 6]);
+  EXPECT_EQ(s[kPatchCoarseStart + 7], p[kPatchCoarseStart + last_row + 7]);
+}
+
+TEST(JunctionPatch, CoarseScaleIsNineTimesTheRadiusAndLeftOutWhenNotAsked) {
+  // The T of t_junction() from (20, 15) along +x, region 1 (above) as A on
+  // the left, 3 as B, radius 2: the coarse scale spans ±18 px in cells of
+  // 2.25 px, so it reaches region 2 and the far side of region 3, which
+  // the wide scale (±6 px) does not.
+  const LabelMap m = t_junction();
+  const Patch p = junction_patch(m, PatchImage{}, Vec2(20, 15), Vec2(1, 0), 1, 3, true, 2.0);
+  EXPECT_EQ(p, reference_patch(m, Vec2(20, 15), Vec2(1, 0), 1, 3, true, 2.0));
+  auto coarse = [&](int i, int j, int channel) {
+    return p[kPatchCoarseStart + (j * kPatchCells + i) * kPatchChannels + channel];
+  };
+  EXPECT_EQ(coarse(0, 12, 0), 1.0f);   // x ≈ 2.5–3.6, y ≈ 4.3–5.4: region 1 (A)
+  EXPECT_EQ(coarse(0, 3, 1), 1.0f);    // y ≈ 24.6–25.7: region 2 (other hair)
+  EXPECT_EQ(coarse(15, 3, 0), -1.0f);  // x ≈ 36.3–37.4: region 3 (B)
+  // Not asked for: the same patch with the coarse scale 0.
+  PatchImage no_coarse;
+  no_coarse.coarse = false;
+  const Patch q = junction_patch(m, no_coarse, Vec2(20, 15), Vec2(1, 0), 1, 3, true, 2.0);
+  for (int k = 0; k < kPatchInputs; ++k) EXPECT_EQ(q[k], k < kPatchCoarseStart ? p[k] : 0.0f) << k;
 }
 
 TEST(PatchScore, ExchangingTheRegionsFlipsTheSignExactly) {
@@ -298,18 +328,54 @@ TEST(PatchScore, BothScoresAtOnceAreTheSameScores) {
   }
 }
 
-// A patch as the layering makes them: label inputs mostly zero, else −0 or
-// a quarter step; grey inputs zero or in [0, 2).
+// A patch as the layering makes them: label inputs (the coarse scale's too)
+// mostly zero, else −0 or a quarter step; grey inputs zero or in [0, 2).
 Patch sparse_patch(std::mt19937& rng) {
   std::uniform_int_distribution<int> quarter(-4, 4), pick(0, 9);
   std::uniform_real_distribution<float> grey(0, 2);
   Patch p{};
-  for (int i = 0; i < kPatchLabelInputs; ++i) {
+  for (int i = 0; i < kPatchInputs; ++i) {
     const int c = pick(rng);
-    p[i] = c < 6 ? 0.0f : c == 6 ? -0.0f : 0.25f * static_cast<float>(quarter(rng));
+    if (i >= kPatchLabelInputs && i < kPatchCoarseStart)
+      p[i] = c < 5 ? 0.0f : grey(rng);
+    else
+      p[i] = c < 6 ? 0.0f : c == 6 ? -0.0f : 0.25f * static_cast<float>(quarter(rng));
   }
-  for (int i = kPatchLabelInputs; i < kPatchInputs; ++i) p[i] = pick(rng) < 5 ? 0.0f : grey(rng);
   return p;
+}
+
+// Networks of random weights on every input, the coarse scale's included
+// (the committed ones may weigh it 0).
+PatchNet random_net(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-0.1f, 0.1f);
+  PatchNet net;
+  for (auto& row : net.w1)
+    for (float& w : row) w = u(rng);
+  for (float& b : net.b1) b = u(rng);
+  for (float& w : net.w2) w = 10 * u(rng);
+  return net;
+}
+
+TEST(PatchScore, BothScoresAtOnceReadTheCoarseScale) {
+  // With weights on the coarse scale, patch_scores' swapped inputs (built
+  // from the patch's, block by block) give the plain loops' scores to the
+  // bit, and the coarse inputs change them.
+  const PatchNet order = random_net(1), same = random_net(2);
+  std::mt19937 rng(31);
+  for (int k = 0; k < 20; ++k) {
+    Patch p = sparse_patch(rng);
+    for (int used : {kPatchInputs, kPatchCoarseStart, kPatchScaleInputs + 7}) {
+      const PatchScores s = patch_scores(order, used, same, p);
+      EXPECT_EQ(s.order, patch_net(order, p, used) - patch_net(order, swapped(p), used));
+      EXPECT_EQ(s.same, patch_same_score(same, p));
+    }
+    const PatchScores before = patch_scores(order, kPatchInputs, same, p);
+    for (int i = kPatchCoarseStart; i < kPatchInputs; ++i) p[i] = 0.0f;
+    const PatchScores after = patch_scores(order, kPatchInputs, same, p);
+    EXPECT_NE(before.order, after.order);
+    EXPECT_NE(before.same, after.same);
+  }
 }
 
 TEST(PatchScore, BothScoresAtOnceOnSparsePatches) {
