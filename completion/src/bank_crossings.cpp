@@ -451,4 +451,10 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tone
   return out;
 }
 
+bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b) {
+  if (tones.screentone()) return tones.match(a, b) == RegionTones::Match::kSame;
+  if (fields.cels().cel_drawing()) return fields.cels().step(a, b) <= kMaxOnePaintStep;
+  return fields.step(a, b) <= kMaxOnePaintStep;
+}
+
 }  // namespace hair25d::completion::detail

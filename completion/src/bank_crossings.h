@@ -277,6 +277,16 @@ class RegionFields;
 std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tones,
                                            RegionFields& fields);
 
+// Largest RGB step between two pieces of one paint (RegionCels::step on a
+// cel drawing, RegionFields::step else): the generator varies each strand's
+// colour a little, and two strands in nearly one paint step 1 RGB.
+inline constexpr double kMaxOnePaintStep = 0.5;
+// Whether a and b are painted alike: one tone by the dots on screentone
+// (RegionTones::match), one flat paint on a cel drawing, else one linear
+// colour field, within kMaxOnePaintStep. The back hair's path joins and the
+// seam joins read it.
+bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b);
+
 // Back-hair pieces linked through the regions lying above both of them
 // (mass_paths.cpp), after the mass and face joins: a piece facing another
 // only through other back pieces, one way, or as a sliver too shallow for

@@ -282,11 +282,6 @@ double face_share(const Context& ctx, const cv::Mat& near_face, int region) {
   return static_cast<double>(n) / contour.size();
 }
 
-// Largest RGB step between the flat paints (RegionCels::step) of two pieces
-// joined by back_paint_joins and of each and the back hair's largest piece
-// (the rare cel paint's limit): the pieces of the generator's back hair are
-// one paint exactly.
-constexpr double kMaxBackPaintStep = 0.5;
 // At most this many regions that are no path-join piece (strands, tails)
 // share the back hair's paint. Generated flat 2000-2099 and mixed 3000-3099:
 // 0 on 153 of 200 drawings, at most 5; the annotated six: 0, 0, 0, 5, 7, 11
@@ -319,13 +314,8 @@ std::vector<MassJoin> back_paint_joins(const Context& ctx, const std::vector<int
   if (back == 0) return {};
   const bool screentone = tones.screentone();
   const bool cel = !screentone && fields.cels().cel_drawing();
-  // One paint: one tone by the dots on screentone, one flat paint on a cel
-  // drawing, else one linear field.
   const auto one_paint = [&](int a, int b) {
-    if (a == b) return true;
-    if (screentone) return tones.match(a, b) == RegionTones::Match::kSame;
-    if (cel) return fields.cels().step(a, b) <= kMaxBackPaintStep;
-    return fields.step(a, b) <= kMaxPathFieldStep;
+    return a == b || detail::one_paint(tones, fields, a, b);
   };
   std::map<int, int> parent;
   const std::function<int(int)> find = [&](int x) {

@@ -28,12 +28,6 @@ constexpr double kEndMerge = 5.0;
 constexpr double kMinSeamSides = 140.0;
 constexpr double kMaxSeamThrough = 150.0;
 
-// One paint: flat colours (RegionCels::step) or one linear field
-// (RegionFields::step) within this (RGB), as for the back-paint path joins
-// (mass_paths.cpp): the generator varies each strand's colour a little, and
-// two strands in nearly one paint step 1 RGB.
-constexpr double kMaxSeamPaintStep = 0.5;
-
 struct Edgel {
   Vec2 at;
   int kind;   // 0: a–b, 1: a–X, 2: b–X
@@ -206,12 +200,6 @@ bool seam_geometry(const Context& ctx, int a, int b, const std::function<bool(in
     if (e.sides >= kMinSeamSides && e.through <= kMaxSeamThrough) return true;
   }
   return false;
-}
-
-bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b) {
-  if (tones.screentone()) return false;
-  if (fields.cels().cel_drawing()) return fields.cels().step(a, b) <= kMaxSeamPaintStep;
-  return fields.step(a, b) <= kMaxSeamPaintStep;
 }
 
 }  // namespace hair25d::completion::detail

@@ -13,9 +13,6 @@
 
 namespace hair25d::completion::detail {
 
-class RegionTones;
-class RegionFields;
-
 // The outlines round one place where pieces a and b meet a third region (or
 // the paper) X: the angles (degrees) between the directions leaving the
 // meeting point along the a–X, b–X and a–b boundaries.
@@ -40,12 +37,5 @@ std::vector<SeamEnd> seam_ends(const Context& ctx, int a, int b);
 // touching pairs of one paint of dev sets flat and mixed 2000-2099
 // (docs/completion.md, "Session 17: seam joins").
 bool seam_geometry(const Context& ctx, int a, int b, const std::function<bool(int, int)>& above);
-
-// Whether a and b are painted alike: one flat paint on a cel drawing, else
-// one linear colour field (RegionCels::step, RegionFields::step within 0.5
-// RGB, the back-paint path joins' limit). Never on screentone: one tone
-// there is shared by several strands (dev mixed 2000-2099, seed 2099: a
-// seam of two strands of one tone, 5 wrong pairs).
-bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b);
 
 }  // namespace hair25d::completion::detail
