@@ -66,6 +66,22 @@ void write_join_overlay(const std::filesystem::path& path, const AnnotatedCase& 
                got ? cv::Scalar(0, 160, 160) : cv::Scalar(0, 230, 255), got ? 1 : 3, cv::LINE_AA);
       if (!got) std::printf("%s: missed %d-%d\n", name.c_str(), best, ids[i]);
     }
+  // Predicted strands that hold regions of several annotated strands: the
+  // wrong pairs, whichever join made them (edge joins, path, face or seam
+  // joins, equal relations), not only the edge joins drawn below.
+  std::map<int, std::map<int, std::vector<int>>> by_predicted;
+  for (const auto& [id, s] : predicted)
+    if (truth.count(id)) by_predicted[s][truth[id]].push_back(id);
+  for (const auto& [s, parts] : by_predicted) {
+    if (parts.size() < 2) continue;
+    std::printf("%s: merged strands", name.c_str());
+    for (const auto& [t, list] : parts) {
+      std::printf(" %d{", t);
+      for (int id : list) std::printf(" %d", id);
+      std::printf(" }");
+    }
+    std::printf("\n");
+  }
   for (const EdgeReport& e : r.edges) {
     if (e.completion != EdgeCase::kJoined || e.joined_region < e.region) continue;
     const bool right = truth[e.region] == truth[e.joined_region];
