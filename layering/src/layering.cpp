@@ -207,9 +207,31 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   // Lines along the boundaries are measured on all cores (parallel.h), and
   // the grey levels' noise (for the threshold) is the first item.
   std::vector<detail::BoundaryLine> measured(nb);
-  detail::parallel_for(&pool, nb + 1, [&](int item) {
+  // The filled map as bytes for the junction patches' samples (patch_model.h:
+  // a quarter of the memory to read from), two items of this loop (halves of
+  // the box of non-zero labels; outside it the bytes stay 0). Only where the
+  // gathers read it.
+  const bool want_bytes = options.metric == Metric::kLearned && options.junction_patches &&
+                          detail::patch_gathers_available();
+  std::vector<std::uint8_t> label_bytes;
+  detail::LabelBox byte_box = filled_box;
+  if (!options.fill_outlines)
+    byte_box = {true, 0, 0, out.labels.width() - 1, out.labels.height() - 1};
+  if (want_bytes && byte_box.any)
+    label_bytes.assign(static_cast<std::size_t>(out.labels.width()) * out.labels.height() +
+                           detail::kByteLabelsPadding,
+                       0);
+  const int byte_items = label_bytes.empty() ? 0 : 2;
+  detail::parallel_for(&pool, nb + 1 + byte_items, [&](int item) {
     if (item == 0) {
       lines.estimate_noise();
+      return;
+    }
+    if (item > nb) {
+      const int half = (byte_box.y1 + 1 - byte_box.y0) / 2;
+      const int y0 = item == nb + 1 ? byte_box.y0 : byte_box.y0 + half;
+      const int y1 = item == nb + 1 ? byte_box.y0 + half : byte_box.y1 + 1;
+      detail::byte_labels(out.labels, byte_box.x0, byte_box.x1 + 1, y0, y1, label_bytes.data());
       return;
     }
     const int i = item - 1;
@@ -329,15 +351,17 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   const detail::PatchNet& order_net = detail::patch_weights();
   const detail::SameDepthNet& same_net = detail::patch_same_weights();
   const double patch_size = detail::patch_radius(reach);
-  const int order_inputs = use_patches ? detail::patch_inputs_used(order_net) : 0;
-  const int inputs_used =
-      use_patches ? std::max(order_inputs, detail::patch_inputs_used(same_net.net)) : 0;
+  // (The weights are fixed: which inputs they read is found once.)
+  static const int order_weighed = detail::patch_inputs_used(order_net);
+  static const int same_weighed = detail::patch_inputs_used(same_net.net);
+  const int order_inputs = use_patches ? order_weighed : 0;
+  const int inputs_used = use_patches ? std::max(order_weighed, same_weighed) : 0;
   // The drawing's grey levels, and the coarse scale, only for networks that
   // weigh them (networks that read the coarse scale read the grey channel).
   const bool read_grey = inputs_used > detail::kPatchLabelInputs;
-  const detail::PatchImage patch_image{read_grey ? &image : nullptr,
-                                       detail::patch_contrast(out.line_threshold), true,
-                                       inputs_used > detail::kPatchCoarseStart};
+  const detail::PatchImage patch_image{
+      read_grey ? &image : nullptr, detail::patch_contrast(out.line_threshold), true,
+      inputs_used > detail::kPatchCoarseStart, label_bytes.empty() ? nullptr : label_bytes.data()};
   detail::ParallelLoop patch_loop(&pool, use_patches ? nb : 0, [&](int i) {
     if (!patched(i)) return;
     const std::vector<detail::Patch> patches = detail::boundary_patches(
@@ -345,7 +369,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     // Both ends scored at once (the networks' weights read once for both).
     std::array<detail::PatchScores, 2> scores;
     detail::patch_scores(order_net, order_inputs, same_net.net, patches.data(),
-                         static_cast<int>(patches.size()), scores.data());
+                         static_cast<int>(patches.size()), scores.data(), true, same_weighed);
     for (std::size_t e = 0; e < patches.size(); ++e) {
       patch_sums[i].order += scores[e].order;
       patch_sums[i].same += scores[e].same;

@@ -77,8 +77,21 @@ __attribute__((target("avx512f"))) inline __m512i truncated(__m512d lo, __m512d 
 // one at a time. The same indices (truncated sums of the same doubles), the
 // same integer counts and the grey levels' products and sums in the same
 // order, each apart (no fused multiply-adds), so the same values.
+// With kBytes the labels are read from the map as bytes (byte_labels), each
+// sample's four bytes from its own on, the first kept.
+template <bool kBytes>
+__attribute__((target("avx512f"))) inline __m512i gather_labels(__m512i zero, __mmask16 in,
+                                                                __m512i at, const void* labels) {
+  if constexpr (kBytes)
+    return _mm512_and_si512(_mm512_mask_i32gather_epi32(zero, in, at, labels, 1),
+                            _mm512_set1_epi32(0xff));
+  else
+    return _mm512_mask_i32gather_epi32(zero, in, at, labels, 4);
+}
+
+template <bool kBytes>
 __attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_avx512(
-    const int* labels, const Rgba* pixels, int w, const double* ax, const double* ay, double bx,
+    const void* labels, const Rgba* pixels, int w, const double* ax, const double* ay, double bx,
     double by, int a, int b, int* a_minus_b, int* other, float* grey) {
   const __m512d vbx = _mm512_set1_pd(bx), vby = _mm512_set1_pd(by);
   const __m512i vw = _mm512_set1_epi32(w), va = _mm512_set1_epi32(a), vb = _mm512_set1_epi32(b);
@@ -90,7 +103,7 @@ __attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_
     const __m512i y = truncated(_mm512_add_pd(_mm512_loadu_pd(ay + i), vby),
                                 _mm512_add_pd(_mm512_loadu_pd(ay + i + 8), vby));
     const __m512i at = _mm512_add_epi32(_mm512_mullo_epi32(y, vw), x);
-    const __m512i l = _mm512_mask_i32gather_epi32(zero, 0xffff, at, labels, 4);
+    const __m512i l = gather_labels<kBytes>(zero, 0xffff, at, labels);
     const __mmask16 is_a = _mm512_cmpeq_epi32_mask(l, va);
     const __mmask16 is_b = _mm512_mask_cmpeq_epi32_mask(static_cast<__mmask16>(~is_a), l, vb);
     const __mmask16 is_other =
@@ -111,12 +124,63 @@ __attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_
                                    _mm512_mul_ps(_mm512_set1_ps(0.114f), bl)));
   }
 }
+// sample_row_avx512 for a row that may reach past the map: each sample at
+// the floor of its sum (as the sample-by-sample loop takes it), samples
+// outside the map read nothing (masked gathers): they add no label count,
+// grey level 0 (adding +0 to a sum of non-negative levels leaves it as it
+// is, bit for bit) and `inside` 0, where the others get 1.
+template <bool kBytes>
+__attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_clipped_avx512(
+    const void* labels, const Rgba* pixels, int w, int h, const double* ax, const double* ay,
+    double bx, double by, int a, int b, int* a_minus_b, int* other, float* grey, int* inside) {
+  const __m512d vbx = _mm512_set1_pd(bx), vby = _mm512_set1_pd(by);
+  const __m512i vw = _mm512_set1_epi32(w), vh = _mm512_set1_epi32(h);
+  const __m512i va = _mm512_set1_epi32(a), vb = _mm512_set1_epi32(b);
+  const __m512i one = _mm512_set1_epi32(1), zero = _mm512_setzero_si512();
+  const __m512i bytes = _mm512_set1_epi32(0xff);
+  constexpr int kFloor = _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC;
+  for (int i = 0; i < kSamples; i += 16) {
+    const __m512i x =
+        truncated(_mm512_roundscale_pd(_mm512_add_pd(_mm512_loadu_pd(ax + i), vbx), kFloor),
+                  _mm512_roundscale_pd(_mm512_add_pd(_mm512_loadu_pd(ax + i + 8), vbx), kFloor));
+    const __m512i y =
+        truncated(_mm512_roundscale_pd(_mm512_add_pd(_mm512_loadu_pd(ay + i), vby), kFloor),
+                  _mm512_roundscale_pd(_mm512_add_pd(_mm512_loadu_pd(ay + i + 8), vby), kFloor));
+    // 0 <= x < w and 0 <= y < h, as unsigned compares.
+    const __mmask16 in = _mm512_cmplt_epu32_mask(x, vw) & _mm512_cmplt_epu32_mask(y, vh);
+    const __m512i at = _mm512_add_epi32(_mm512_mullo_epi32(y, vw), x);
+    const __m512i l = gather_labels<kBytes>(zero, in, at, labels);
+    const __mmask16 is_a = _mm512_cmpeq_epi32_mask(l, va) & in;
+    const __mmask16 is_b = _mm512_mask_cmpeq_epi32_mask(static_cast<__mmask16>(~is_a & in), l, vb);
+    const __mmask16 is_other =
+        _mm512_mask_cmpgt_epi32_mask(static_cast<__mmask16>(~(is_a | is_b) & in), l, zero);
+    __m512i d = _mm512_loadu_si512(a_minus_b + i);
+    d = _mm512_mask_sub_epi32(_mm512_mask_add_epi32(d, is_a, d, one), is_b, d, one);
+    _mm512_storeu_si512(a_minus_b + i, d);
+    const __m512i o = _mm512_loadu_si512(other + i);
+    _mm512_storeu_si512(other + i, _mm512_mask_add_epi32(o, is_other, o, one));
+    if (pixels == nullptr) continue;
+    _mm512_storeu_si512(inside + i, _mm512_maskz_mov_epi32(in, one));
+    const __m512i px = _mm512_mask_i32gather_epi32(zero, in, at, pixels, 4);
+    const __m512 r = _mm512_cvtepi32_ps(_mm512_and_si512(px, bytes));
+    const __m512 g = _mm512_cvtepi32_ps(_mm512_and_si512(_mm512_srli_epi32(px, 8), bytes));
+    const __m512 bl = _mm512_cvtepi32_ps(_mm512_and_si512(_mm512_srli_epi32(px, 16), bytes));
+    _mm512_storeu_ps(grey + i,
+                     _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(_mm512_set1_ps(0.299f), r),
+                                                 _mm512_mul_ps(_mm512_set1_ps(0.587f), g)),
+                                   _mm512_mul_ps(_mm512_set1_ps(0.114f), bl)));
+  }
+}
 bool gathers_avx512_available() { return __builtin_cpu_supports("avx512f"); }
 #pragma GCC diagnostic pop
 #else
 bool gathers_avx512_available() { return false; }
-void sample_row_avx512(const int*, const Rgba*, int, const double*, const double*, double, double,
+template <bool kBytes>
+void sample_row_avx512(const void*, const Rgba*, int, const double*, const double*, double, double,
                        int, int, int*, int*, float*) {}
+template <bool kBytes>
+void sample_row_clipped_avx512(const void*, const Rgba*, int, int, const double*, const double*,
+                               double, double, int, int, int*, int*, float*, int*) {}
 #endif
 
 }  // namespace
@@ -154,6 +218,13 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
   // Sample offsets along u and v, products taken once: each sample point is
   // then (centre + cu·u) + cv·v, the same sums as written out per sample.
   std::array<double, kSamples> ax{}, ay{}, bx{}, by{};
+  // Rows of samples with the processor's gathers (AVX-512F), from the map
+  // as bytes where it is given and both regions have a byte of their own.
+  const bool gathers = drawing.widest && gathers_avx512_available();
+  const std::uint8_t* bytes = gathers && drawing.bytes != nullptr && a > 0 && a < kByteLabelMax &&
+                                      b > 0 && b < kByteLabelMax
+                                  ? drawing.bytes
+                                  : nullptr;
   // The label scales: fine, wide, then the coarse one (after the grey
   // channel) when asked for.
   for (int scale = 0; scale < kPatchScales + (drawing.coarse ? 1 : 0); ++scale) {
@@ -194,15 +265,21 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
       const int* label_data = labels.data();
       const Rgba* pixels = with_grey ? image->data() : nullptr;
       const int w = labels.width();
-      const bool gathers = drawing.widest && gathers_avx512_available();
       for (int sj = 0; sj < kSamples; sj += 2) {
         std::array<int, kSamples> diff{}, other{};
         std::array<float, kSamples> g;
         float* grey_row = grey.data() + (sj / 2) * kPatchCells;
         for (int half = 0; half < 2; ++half) {
-          (gathers ? sample_row_avx512 : sample_row)(label_data, pixels, w, ax.data(), ay.data(),
-                                                     bx[sj + half], by[sj + half], a, b,
-                                                     diff.data(), other.data(), g.data());
+          const double bxs = bx[sj + half], bys = by[sj + half];
+          if (bytes != nullptr)
+            sample_row_avx512<true>(bytes, pixels, w, ax.data(), ay.data(), bxs, bys, a, b,
+                                    diff.data(), other.data(), g.data());
+          else if (gathers)
+            sample_row_avx512<false>(label_data, pixels, w, ax.data(), ay.data(), bxs, bys, a, b,
+                                     diff.data(), other.data(), g.data());
+          else
+            sample_row(label_data, pixels, w, ax.data(), ay.data(), bxs, bys, a, b, diff.data(),
+                       other.data(), g.data());
           if (pixels == nullptr) continue;
           for (int i = 0; i < kPatchCells; ++i)
             grey_row[i] = (grey_row[i] + g[2 * i]) + g[2 * i + 1];
@@ -215,6 +292,39 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
         if (pixels != nullptr) {
           std::uint8_t* count_row = counted.data() + (sj / 2) * kPatchCells;
           for (int i = 0; i < kPatchCells; ++i) count_row[i] = 4;
+        }
+      }
+      continue;
+    }
+    // Reaching past the map (the coarse scale at most junctions): the same
+    // rows with masked gathers where the processor has them.
+    if (gathers && static_cast<double>(labels.width()) * labels.height() < 2e9) {
+      const Rgba* pixels = with_grey ? image->data() : nullptr;
+      for (int sj = 0; sj < kSamples; sj += 2) {
+        std::array<int, kSamples> diff{}, other{}, in;
+        std::array<float, kSamples> g;
+        float* grey_row = grey.data() + (sj / 2) * kPatchCells;
+        std::uint8_t* count_row = counted.data() + (sj / 2) * kPatchCells;
+        for (int half = 0; half < 2; ++half) {
+          const double bxs = bx[sj + half], bys = by[sj + half];
+          if (bytes != nullptr)
+            sample_row_clipped_avx512<true>(bytes, pixels, labels.width(), labels.height(),
+                                            ax.data(), ay.data(), bxs, bys, a, b, diff.data(),
+                                            other.data(), g.data(), in.data());
+          else
+            sample_row_clipped_avx512<false>(labels.data(), pixels, labels.width(), labels.height(),
+                                             ax.data(), ay.data(), bxs, bys, a, b, diff.data(),
+                                             other.data(), g.data(), in.data());
+          if (pixels == nullptr) continue;
+          for (int i = 0; i < kPatchCells; ++i) {
+            grey_row[i] = (grey_row[i] + g[2 * i]) + g[2 * i + 1];
+            count_row[i] = static_cast<std::uint8_t>(count_row[i] + in[2 * i] + in[2 * i + 1]);
+          }
+        }
+        float* row = out + (sj / 2) * kPatchCells * kPatchChannels;
+        for (int i = 0; i < kPatchCells; ++i) {
+          row[2 * i] = 0.25f * static_cast<float>(diff[2 * i] + diff[2 * i + 1]);
+          row[2 * i + 1] = 0.25f * static_cast<float>(other[2 * i] + other[2 * i + 1]);
         }
       }
       continue;
@@ -268,6 +378,19 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
     }
   return p;
 }
+
+__attribute__((target_clones("avx512f", "avx2", "default"))) void byte_labels(
+    const LabelMap& labels, int x0, int x1, int y0, int y1, std::uint8_t* bytes) {
+  const int w = labels.width();
+  for (int y = y0; y < y1; ++y) {
+    const int* row = labels.data() + static_cast<std::ptrdiff_t>(y) * w;
+    std::uint8_t* out = bytes + static_cast<std::ptrdiff_t>(y) * w;
+    for (int x = x0; x < x1; ++x)
+      out[x] = static_cast<std::uint8_t>(std::min(std::max(row[x], 0), kByteLabelMax));
+  }
+}
+
+bool patch_gathers_available() { return gathers_avx512_available(); }
 
 Patch swapped(const Patch& patch) {
   Patch s{};
@@ -434,9 +557,10 @@ void both_inputs_avx512(const Patch&, NonZeroInputs&, NonZeroInputs&) {}
 // from the second level each.
 constexpr int kMaxLists = 4;
 __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
-sparse_sums(const PatchNet& first, int first_inputs, const PatchNet& second,
+sparse_sums(const PatchNet& first, int first_inputs, const PatchNet& second, int second_inputs,
             const NonZeroInputs* const* in, int lists, std::array<float, kPatchHidden>* first_sum,
             std::array<float, kPatchHidden>* second_sum) {
+  const int both_inputs = std::min(first_inputs, second_inputs);
   for (int l = 0; l < lists; ++l) {
     first_sum[l] = first.b1;
     second_sum[l] = second.b1;
@@ -448,14 +572,19 @@ sparse_sums(const PatchNet& first, int first_inputs, const PatchNet& second,
       const int end = list.row_start[r + 1];
       if (e == end) continue;
       std::array<float, kPatchHidden> s1 = first_sum[l], s2 = second_sum[l];
-      for (; e < end && list.k[e] < first_inputs; ++e) {
+      for (; e < end && list.k[e] < both_inputs; ++e) {
         const float x = list.x[e];
         const std::array<float, kPatchHidden>& w1 = first.w1[list.k[e]];
         const std::array<float, kPatchHidden>& w2 = second.w1[list.k[e]];
         for (int h = 0; h < kPatchHidden; ++h) s1[h] += w1[h] * x;
         for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
       }
-      for (; e < end; ++e) {
+      for (; e < end && list.k[e] < first_inputs; ++e) {
+        const float x = list.x[e];
+        const std::array<float, kPatchHidden>& w1 = first.w1[list.k[e]];
+        for (int h = 0; h < kPatchHidden; ++h) s1[h] += w1[h] * x;
+      }
+      for (; e < end && list.k[e] < second_inputs; ++e) {
         const float x = list.x[e];
         const std::array<float, kPatchHidden>& w2 = second.w1[list.k[e]];
         for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
@@ -509,7 +638,7 @@ PatchScores patch_scores(const PatchNet& order, int order_inputs, const PatchNet
 }
 
 void patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
-                  const Patch* patches, int count, PatchScores* out, bool widest) {
+                  const Patch* patches, int count, PatchScores* out, bool widest, int same_inputs) {
   const bool avx512 = widest && inputs_avx512_available();
   // The zeros are found once per patch and the swapped patch's inputs taken
   // from the patch's; the sums of both networks over two patches (four
@@ -530,7 +659,8 @@ void patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
       in[2 * p] = &lists[2 * p];
       in[2 * p + 1] = &lists[2 * p + 1];
     }
-    sparse_sums(order, order_inputs, same, in.data(), 2 * n, order_sum.data(), same_sum.data());
+    sparse_sums(order, order_inputs, same, same_inputs, in.data(), 2 * n, order_sum.data(),
+                same_sum.data());
     for (int p = 0; p < n; ++p)
       out[p0 + p] = {net_output(order, order_sum[2 * p]) - net_output(order, order_sum[2 * p + 1]),
                      net_output(same, same_sum[2 * p]) + net_output(same, same_sum[2 * p + 1])};

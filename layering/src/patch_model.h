@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "hair25d/core/geometry.h"
@@ -53,7 +54,25 @@ struct PatchImage {
   // Sample the coarse scale (else its inputs are 0: for networks that weigh
   // it 0, which then need not pay for it).
   bool coarse = true;
+  // The label map as bytes (byte_labels over all of it, kByteLabelsPadding
+  // bytes more at the end), or null. Where given, patches whose regions a
+  // and b are both in [1, kByteLabelMax) read it with the gathers in place
+  // of the map (a quarter of the memory: the same patch).
+  const std::uint8_t* bytes = nullptr;
 };
+
+// The label map as bytes: each label clamped to [0, kByteLabelMax], so that
+// a byte tells a label in [1, kByteLabelMax) from any other, and all labels
+// <= 0 (no hair) and all >= kByteLabelMax (hair) from those. byte_labels
+// writes the pixels x0 <= x < x1, y0 <= y < y1 of `bytes` (width × height
+// bytes, row-major).
+inline constexpr int kByteLabelMax = 255;
+inline constexpr int kByteLabelsPadding = 4;
+void byte_labels(const LabelMap& labels, int x0, int x1, int y0, int y1, std::uint8_t* bytes);
+
+// Whether junction_patch reads with the processor's gathers (AVX-512F),
+// where PatchImage::widest is set: only then is PatchImage::bytes read.
+bool patch_gathers_available();
 
 // The cells of the first scale cover [−radius, radius]² about `centre`
 // (pixel-corner coordinates, as junction positions). `direction` is the unit
@@ -134,9 +153,12 @@ PatchScores patch_scores(const PatchNet& order, int order_inputs, const PatchNet
 // The same for `count` patches at once, out[i] those of patches[i] to the
 // bit (the networks' weights are read once for two patches). With `widest`
 // the non-zero inputs are found sixteen at a time where the processor has
-// AVX-512F (the same lists as the plain loops make).
+// AVX-512F (the same lists as the plain loops make). The same-depth network
+// reads the first `same_inputs` inputs: patch_inputs_used(same) gives the
+// same score without the products of the zero weights past its last one.
 void patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
-                  const Patch* patches, int count, PatchScores* out, bool widest = true);
+                  const Patch* patches, int count, PatchScores* out, bool widest = true,
+                  int same_inputs = kPatchInputs);
 
 // The patches of both ends of boundary `b` of `graph` (none for a closed
 // loop; an end is left out when its direction is zero), region A = b.left.
