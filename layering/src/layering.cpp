@@ -147,6 +147,23 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
                                           : detail::LineResponse::estimate_line_width(image);
   // The grey levels are smoothed on a second core while the boundaries are traced.
   lines.prepare(out.line_width, out.labels, options.fill_outlines ? &filled_box : nullptr);
+  // The filled map as bytes for the junction patches' samples (patch_model.h:
+  // a quarter of the memory to read from), on the pool's helper while this
+  // thread traces (where that core has nothing else to do), over the box of
+  // non-zero labels (outside it the bytes stay 0). Only where the gathers
+  // read it.
+  std::vector<std::uint8_t> label_bytes;
+  detail::BackgroundTask byte_task(&pool, [&] {
+    if (options.metric != Metric::kLearned || !options.junction_patches ||
+        !detail::patch_gathers_available())
+      return;
+    label_bytes.resize(static_cast<std::size_t>(out.labels.width()) * out.labels.height() +
+                       detail::kByteLabelsPadding);
+    detail::LabelBox box = filled_box;
+    if (!options.fill_outlines) box = {true, 0, 0, out.labels.width() - 1, out.labels.height() - 1};
+    if (box.any)
+      detail::byte_labels(out.labels, box.x0, box.x1 + 1, box.y0, box.y1 + 1, label_bytes.data());
+  });
   out.graph = detail::build_boundary_graph(out.labels, true, true,
                                            options.fill_outlines ? &filled_box : nullptr);
   const BoundaryGraph& graph = out.graph;
@@ -207,31 +224,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   // Lines along the boundaries are measured on all cores (parallel.h), and
   // the grey levels' noise (for the threshold) is the first item.
   std::vector<detail::BoundaryLine> measured(nb);
-  // The filled map as bytes for the junction patches' samples (patch_model.h:
-  // a quarter of the memory to read from), two items of this loop (halves of
-  // the box of non-zero labels; outside it the bytes stay 0). Only where the
-  // gathers read it.
-  const bool want_bytes = options.metric == Metric::kLearned && options.junction_patches &&
-                          detail::patch_gathers_available();
-  std::vector<std::uint8_t> label_bytes;
-  detail::LabelBox byte_box = filled_box;
-  if (!options.fill_outlines)
-    byte_box = {true, 0, 0, out.labels.width() - 1, out.labels.height() - 1};
-  if (want_bytes && byte_box.any)
-    label_bytes.assign(static_cast<std::size_t>(out.labels.width()) * out.labels.height() +
-                           detail::kByteLabelsPadding,
-                       0);
-  const int byte_items = label_bytes.empty() ? 0 : 2;
-  detail::parallel_for(&pool, nb + 1 + byte_items, [&](int item) {
+  detail::parallel_for(&pool, nb + 1, [&](int item) {
     if (item == 0) {
       lines.estimate_noise();
-      return;
-    }
-    if (item > nb) {
-      const int half = (byte_box.y1 + 1 - byte_box.y0) / 2;
-      const int y0 = item == nb + 1 ? byte_box.y0 : byte_box.y0 + half;
-      const int y1 = item == nb + 1 ? byte_box.y0 + half : byte_box.y1 + 1;
-      detail::byte_labels(out.labels, byte_box.x0, byte_box.x1 + 1, y0, y1, label_bytes.data());
       return;
     }
     const int i = item - 1;
@@ -359,6 +354,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   // The drawing's grey levels, and the coarse scale, only for networks that
   // weigh them (networks that read the coarse scale read the grey channel).
   const bool read_grey = inputs_used > detail::kPatchLabelInputs;
+  byte_task.finish();
   const detail::PatchImage patch_image{
       read_grey ? &image : nullptr, detail::patch_contrast(out.line_threshold), true,
       inputs_used > detail::kPatchCoarseStart, label_bytes.empty() ? nullptr : label_bytes.data()};
