@@ -592,10 +592,26 @@ void both_inputs_avx512(const Patch&, NonZeroInputs&, NonZeroInputs&) {}
 // and then from the first level, where one patch after another read them all
 // from the second level each.
 constexpr int kMaxLists = 4;
-__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
-sparse_sums(const PatchNet& first, int first_inputs, const PatchNet& second, int second_inputs,
-            const NonZeroInputs* const* in, int lists, std::array<float, kPatchHidden>* first_sum,
-            std::array<float, kPatchHidden>* second_sum) {
+
+// One input into all hidden sums: s += w · x per unit, with kFused as one
+// fused multiply-add (one rounding), else a product and a sum.
+template <bool kFused>
+__attribute__((always_inline)) inline void add_input(std::array<float, kPatchHidden>& s,
+                                                     const std::array<float, kPatchHidden>& w,
+                                                     float x) {
+  for (int h = 0; h < kPatchHidden; ++h) {
+    if constexpr (kFused)
+      s[h] = __builtin_fmaf(w[h], x, s[h]);
+    else
+      s[h] += w[h] * x;
+  }
+}
+
+template <bool kFused>
+__attribute__((always_inline)) inline void sparse_sums_body(
+    const PatchNet& first, int first_inputs, const PatchNet& second, int second_inputs,
+    const NonZeroInputs* const* in, int lists, std::array<float, kPatchHidden>* first_sum,
+    std::array<float, kPatchHidden>* second_sum) {
   const int both_inputs = std::min(first_inputs, second_inputs);
   for (int l = 0; l < lists; ++l) {
     first_sum[l] = first.b1;
@@ -609,45 +625,94 @@ sparse_sums(const PatchNet& first, int first_inputs, const PatchNet& second, int
       if (e == end) continue;
       std::array<float, kPatchHidden> s1 = first_sum[l], s2 = second_sum[l];
       for (; e < end && list.k[e] < both_inputs; ++e) {
-        const float x = list.x[e];
-        const std::array<float, kPatchHidden>& w1 = first.w1[list.k[e]];
-        const std::array<float, kPatchHidden>& w2 = second.w1[list.k[e]];
-        for (int h = 0; h < kPatchHidden; ++h) s1[h] += w1[h] * x;
-        for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
+        add_input<kFused>(s1, first.w1[list.k[e]], list.x[e]);
+        add_input<kFused>(s2, second.w1[list.k[e]], list.x[e]);
       }
-      for (; e < end && list.k[e] < first_inputs; ++e) {
-        const float x = list.x[e];
-        const std::array<float, kPatchHidden>& w1 = first.w1[list.k[e]];
-        for (int h = 0; h < kPatchHidden; ++h) s1[h] += w1[h] * x;
-      }
-      for (; e < end && list.k[e] < second_inputs; ++e) {
-        const float x = list.x[e];
-        const std::array<float, kPatchHidden>& w2 = second.w1[list.k[e]];
-        for (int h = 0; h < kPatchHidden; ++h) s2[h] += w2[h] * x;
-      }
+      for (; e < end && list.k[e] < first_inputs; ++e)
+        add_input<kFused>(s1, first.w1[list.k[e]], list.x[e]);
+      for (; e < end && list.k[e] < second_inputs; ++e)
+        add_input<kFused>(s2, second.w1[list.k[e]], list.x[e]);
       first_sum[l] = s1;
       second_sum[l] = s2;
     }
   }
 }
 
-}  // namespace
+__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
+sparse_sums(const PatchNet& first, int first_inputs, const PatchNet& second, int second_inputs,
+            const NonZeroInputs* const* in, int lists, std::array<float, kPatchHidden>* first_sum,
+            std::array<float, kPatchHidden>* second_sum) {
+  sparse_sums_body<false>(first, first_inputs, second, second_inputs, in, lists, first_sum,
+                          second_sum);
+}
 
-// Two clones, chosen when the library loads: AVX2 adds the 16 hidden sums
-// eight at a time. Neither has fused multiply-adds, so each lane does the
-// same product and sum as the other clone and the scores are the same.
-__attribute__((target_clones("avx2", "default"))) double patch_net(const PatchNet& net,
-                                                                   const Patch& patch, int inputs) {
+#if defined(HAIR25D_PATCH_AVX512)
+// The same with fused multiply-adds (AVX-512F and FMA): half the operations;
+// each sum rounds once per input, so the sums differ from the plain ones in
+// the last bits, and patch_net adds the same way on such processors.
+__attribute__((target("avx512f,fma"))) void sparse_sums_fused(
+    const PatchNet& first, int first_inputs, const PatchNet& second, int second_inputs,
+    const NonZeroInputs* const* in, int lists, std::array<float, kPatchHidden>* first_sum,
+    std::array<float, kPatchHidden>* second_sum) {
+  sparse_sums_body<true>(first, first_inputs, second, second_inputs, in, lists, first_sum,
+                         second_sum);
+}
+bool fused_available() {
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma");
+}
+#else
+void sparse_sums_fused(const PatchNet&, int, const PatchNet&, int, const NonZeroInputs* const*, int,
+                       std::array<float, kPatchHidden>*, std::array<float, kPatchHidden>*) {}
+bool fused_available() { return false; }
+#endif
+
+// Whether the hidden sums are taken with fused multiply-adds (the same
+// choice for patch_net and patch_scores).
+bool sums_fused() {
+  static const bool fused = fused_available();
+  return fused;
+}
+
+template <bool kFused>
+__attribute__((always_inline)) inline std::array<float, kPatchHidden> net_sums_body(
+    const PatchNet& net, const Patch& patch, int inputs) {
   // Most cells are background or one region on the fine scale's far side:
   // only non-zero inputs are added, each into all hidden sums at once.
   std::array<float, kPatchHidden> sum = net.b1;
   for (int k = 0; k < inputs; ++k) {
     const float x = patch[k];
     if (x == 0) continue;
-    const std::array<float, kPatchHidden>& w = net.w1[k];
-    for (int h = 0; h < kPatchHidden; ++h) sum[h] += w[h] * x;
+    add_input<kFused>(sum, net.w1[k], x);
   }
-  return net_output(net, sum);
+  return sum;
+}
+
+// Two clones, chosen when the library loads: AVX2 adds the 16 hidden sums
+// eight at a time. Neither has fused multiply-adds, so each lane does the
+// same product and sum as the other clone and the sums are the same.
+__attribute__((target_clones("avx2", "default"), optimize("fp-contract=off")))
+std::array<float, kPatchHidden>
+net_sums(const PatchNet& net, const Patch& patch, int inputs) {
+  return net_sums_body<false>(net, patch, inputs);
+}
+
+#if defined(HAIR25D_PATCH_AVX512)
+__attribute__((target("avx512f,fma"))) std::array<float, kPatchHidden> net_sums_fused(
+    const PatchNet& net, const Patch& patch, int inputs) {
+  return net_sums_body<true>(net, patch, inputs);
+}
+#else
+std::array<float, kPatchHidden> net_sums_fused(const PatchNet& net, const Patch& patch,
+                                               int inputs) {
+  return net_sums(net, patch, inputs);
+}
+#endif
+
+}  // namespace
+
+double patch_net(const PatchNet& net, const Patch& patch, int inputs) {
+  return net_output(
+      net, sums_fused() ? net_sums_fused(net, patch, inputs) : net_sums(net, patch, inputs));
 }
 
 double patch_score(const PatchNet& net, const Patch& patch) {
@@ -695,8 +760,9 @@ void patch_scores(const PatchNet& order, int order_inputs, const PatchNet& same,
       in[2 * p] = &lists[2 * p];
       in[2 * p + 1] = &lists[2 * p + 1];
     }
-    sparse_sums(order, order_inputs, same, same_inputs, in.data(), 2 * n, order_sum.data(),
-                same_sum.data());
+    (sums_fused() ? sparse_sums_fused : sparse_sums)(order, order_inputs, same, same_inputs,
+                                                     in.data(), 2 * n, order_sum.data(),
+                                                     same_sum.data());
     for (int p = 0; p < n; ++p)
       out[p0 + p] = {net_output(order, order_sum[2 * p]) - net_output(order, order_sum[2 * p + 1]),
                      net_output(same, same_sum[2 * p]) + net_output(same, same_sum[2 * p + 1])};
