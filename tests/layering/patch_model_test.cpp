@@ -186,6 +186,78 @@ TEST(JunctionPatch, GatheredSamplesEqualTheLoopsSamples) {
   }
 }
 
+// The map as bytes, as the layering gives it to the patches (padding
+// included).
+std::vector<std::uint8_t> bytes_of(const LabelMap& m) {
+  std::vector<std::uint8_t> bytes(
+      static_cast<std::size_t>(m.width()) * m.height() + kByteLabelsPadding, 0);
+  byte_labels(m, 0, m.width(), 0, m.height(), bytes.data());
+  return bytes;
+}
+
+TEST(JunctionPatch, MaskedGathersAndByteLabelsEqualTheDefinition) {
+  // Patches reaching past the map's border (the coarse scale at most of the
+  // layering's junctions) are read with masked gathers, and with the map as
+  // bytes where both regions have a byte of their own: labels below 0, 0,
+  // 254, 255 and above, grey or not, radii up to 25 on a 97 × 61 map, so
+  // that every scale reaches past some border. Each path gives the
+  // sample-by-sample definition's patch to the bit.
+  std::mt19937 rng(53);
+  const std::array<int, 9> palette{-2, 0, 1, 2, 3, 254, 255, 300, 7};
+  std::uniform_int_distribution<int> pick(0, 8), level(0, 255);
+  LabelMap m(97, 61, 0);
+  Image image(97, 61);
+  for (int y = 0; y < 61; ++y)
+    for (int x = 0; x < 97; ++x) {
+      m.at(x, y) = (x / 7 + y / 5) % 4 == 0 ? palette[pick(rng)] : palette[(x / 11 + y / 9) % 9];
+      image.at(x, y) =
+          Rgba{static_cast<std::uint8_t>(level(rng)), static_cast<std::uint8_t>(level(rng)),
+               static_cast<std::uint8_t>(level(rng)), 255};
+    }
+  const std::vector<std::uint8_t> bytes = bytes_of(m);
+  const std::array<std::pair<int, int>, 5> regions{
+      {{1, 2}, {254, 3}, {255, 7}, {300, 2}, {2, 254}}};
+  std::uniform_real_distribution<double> px(-10, 107), py(-10, 71), angle(0, 6.3), radius(1, 25);
+  for (int k = 0; k < 60; ++k) {
+    // Integer centres and axis directions now and then: samples on pixel
+    // edges, and on the border's first and last pixels.
+    const Vec2 c =
+        k % 5 == 0 ? Vec2(std::round(px(rng)), std::round(py(rng))) : Vec2(px(rng), py(rng));
+    const double t = k % 7 == 0 ? 1.5707963267948966 * (k % 4) : angle(rng);
+    const Vec2 d(std::cos(t), std::sin(t));
+    const double r = k % 5 == 0 ? std::round(radius(rng)) : radius(rng);
+    const bool left = k % 2 == 0;
+    const auto [a, b] = regions[k % regions.size()];
+    for (const Image* drawing :
+         {static_cast<const Image*>(nullptr), static_cast<const Image*>(&image)}) {
+      const Patch want = reference_patch(m, c, d, a, b, left, r, drawing, 25.0);
+      for (bool widest : {true, false})
+        for (const std::uint8_t* given :
+             {static_cast<const std::uint8_t*>(nullptr), bytes.data()}) {
+          PatchImage pi{drawing, 25.0, widest};
+          pi.bytes = given;
+          EXPECT_EQ(junction_patch(m, pi, c, d, a, b, left, r), want)
+              << k << " a " << a << " b " << b << " widest " << widest << " bytes "
+              << (given != nullptr) << " grey " << (drawing != nullptr);
+        }
+    }
+  }
+}
+
+TEST(ByteLabels, EachLabelClampedWithinTheRectangleOnly) {
+  LabelMap m(37, 11, 0);
+  for (int y = 0; y < 11; ++y)
+    for (int x = 0; x < 37; ++x) m.at(x, y) = (x * 31 + y * 17) % 700 - 200;
+  std::vector<std::uint8_t> bytes(37 * 11, 9);
+  byte_labels(m, 3, 35, 2, 10, bytes.data());
+  for (int y = 0; y < 11; ++y)
+    for (int x = 0; x < 37; ++x) {
+      const int l = m.at(x, y);
+      const bool inside = x >= 3 && x < 35 && y >= 2 && y < 10;
+      EXPECT_EQ(bytes[y * 37 + x], inside ? (l <= 0 ? 0 : l >= 255 ? 255 : l) : 9) << x << "," << y;
+    }
+}
+
 TEST(JunctionPatch, MixedCellsHoldShares) {
   // Radius 16: two pixels per cell, 2 × 2 samples, so the cell across x = 20
   // still falls on one side; a diagonal direction gives shares in quarters.
@@ -376,6 +448,39 @@ TEST(PatchScore, BothScoresAtOnceReadTheCoarseScale) {
     EXPECT_NE(before.order, after.order);
     EXPECT_NE(before.same, after.same);
   }
+}
+
+TEST(PatchScore, SameDepthNetworkReadsTheInputsItWeighs) {
+  // The layering scores the same-depth network on the inputs up to its last
+  // weighed one (patch_inputs_used) while the order network reads more (the
+  // coarse scale): the same scores as the whole networks' to the bit, for
+  // one and several patches, with and without the AVX-512 lists; with the
+  // zeros' rows given weights, reading fewer inputs changes the score.
+  const PatchNet order = random_net(5);
+  PatchNet same = random_net(6);
+  for (int k = kPatchCoarseStart; k < kPatchInputs; ++k) same.w1[k].fill(0.0f);
+  const int same_used = patch_inputs_used(same);
+  EXPECT_LE(same_used, kPatchCoarseStart);
+  std::mt19937 rng(59);
+  std::vector<Patch> patches(5);
+  for (Patch& p : patches) p = sparse_patch(rng);
+  for (int order_used : {kPatchInputs, kPatchLabelInputs})
+    for (bool widest : {false, true}) {
+      std::vector<PatchScores> out(patches.size());
+      patch_scores(order, order_used, same, patches.data(), static_cast<int>(patches.size()),
+                   out.data(), widest, same_used);
+      for (std::size_t p = 0; p < patches.size(); ++p) {
+        EXPECT_EQ(out[p].order, patch_net(order, patches[p], order_used) -
+                                    patch_net(order, swapped(patches[p]), order_used));
+        EXPECT_EQ(out[p].same, patch_same_score(same, patches[p]));
+      }
+    }
+  const PatchNet full = random_net(6);
+  PatchScores fewer;
+  patch_scores(order, kPatchInputs, full, patches.data(), 1, &fewer, true, same_used);
+  EXPECT_NE(fewer.same, patch_same_score(full, patches[0]));
+  EXPECT_EQ(fewer.same, patch_net(full, patches[0], same_used) +
+                            patch_net(full, swapped(patches[0]), same_used));
 }
 
 TEST(PatchScore, BothScoresAtOnceOnSparsePatches) {
