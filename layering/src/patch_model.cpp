@@ -29,13 +29,15 @@ constexpr int kSamples = 2 * kPatchCells;
 
 // One row of samples wholly inside the map: for each sample (at
 // (ax[i] + bx, ay[i] + by), truncated), adds to `a_minus_b` +1 where the label
-// is a, −1 where it is b, and to `other` 1 where it is another region;
+// is a, −1 where it is b, and to `other` 1 where it is another region (with
+// `first`, writes those counts instead: no arrays to clear beforehand);
 // with `pixels`, writes each sample's grey level to `grey` (grey_at's
 // value). Written for the vectoriser: the two clones do the same integer
 // and float operations lane by lane.
 __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
 sample_row(const int* labels, const Rgba* pixels, int w, const double* ax, const double* ay,
-           double bx, double by, int a, int b, int* a_minus_b, int* other, float* grey) {
+           double bx, double by, int a, int b, bool first, int* a_minus_b, int* other,
+           float* grey) {
   std::array<int, kSamples> at, l;
   for (int i = 0; i < kSamples; ++i)
     at[i] = static_cast<int>(ay[i] + by) * w + static_cast<int>(ax[i] + bx);
@@ -43,8 +45,8 @@ sample_row(const int* labels, const Rgba* pixels, int w, const double* ax, const
   for (int i = 0; i < kSamples; ++i) {
     const int is_a = l[i] == a;
     const int is_b = (l[i] == b) & (is_a ^ 1);
-    a_minus_b[i] += is_a - is_b;
-    other[i] += (l[i] > 0) & ((is_a | is_b) ^ 1);
+    a_minus_b[i] = (first ? 0 : a_minus_b[i]) + is_a - is_b;
+    other[i] = (first ? 0 : other[i]) + ((l[i] > 0) & ((is_a | is_b) ^ 1));
   }
   if (pixels == nullptr) return;
   std::array<std::uint32_t, kSamples> px;
@@ -92,7 +94,7 @@ __attribute__((target("avx512f"))) inline __m512i gather_labels(__m512i zero, __
 template <bool kBytes>
 __attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_avx512(
     const void* labels, const Rgba* pixels, int w, const double* ax, const double* ay, double bx,
-    double by, int a, int b, int* a_minus_b, int* other, float* grey) {
+    double by, int a, int b, bool first, int* a_minus_b, int* other, float* grey) {
   const __m512d vbx = _mm512_set1_pd(bx), vby = _mm512_set1_pd(by);
   const __m512i vw = _mm512_set1_epi32(w), va = _mm512_set1_epi32(a), vb = _mm512_set1_epi32(b);
   const __m512i one = _mm512_set1_epi32(1), zero = _mm512_setzero_si512();
@@ -108,10 +110,10 @@ __attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_
     const __mmask16 is_b = _mm512_mask_cmpeq_epi32_mask(static_cast<__mmask16>(~is_a), l, vb);
     const __mmask16 is_other =
         _mm512_mask_cmpgt_epi32_mask(static_cast<__mmask16>(~(is_a | is_b)), l, zero);
-    __m512i d = _mm512_loadu_si512(a_minus_b + i);
+    __m512i d = first ? zero : _mm512_loadu_si512(a_minus_b + i);
     d = _mm512_mask_sub_epi32(_mm512_mask_add_epi32(d, is_a, d, one), is_b, d, one);
     _mm512_storeu_si512(a_minus_b + i, d);
-    const __m512i o = _mm512_loadu_si512(other + i);
+    const __m512i o = first ? zero : _mm512_loadu_si512(other + i);
     _mm512_storeu_si512(other + i, _mm512_mask_add_epi32(o, is_other, o, one));
     if (pixels == nullptr) continue;
     const __m512i px = _mm512_mask_i32gather_epi32(zero, 0xffff, at, pixels, 4);
@@ -132,7 +134,8 @@ __attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_
 template <bool kBytes>
 __attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_clipped_avx512(
     const void* labels, const Rgba* pixels, int w, int h, const double* ax, const double* ay,
-    double bx, double by, int a, int b, int* a_minus_b, int* other, float* grey, int* inside) {
+    double bx, double by, int a, int b, bool first, int* a_minus_b, int* other, float* grey,
+    int* inside) {
   const __m512d vbx = _mm512_set1_pd(bx), vby = _mm512_set1_pd(by);
   const __m512i vw = _mm512_set1_epi32(w), vh = _mm512_set1_epi32(h);
   const __m512i va = _mm512_set1_epi32(a), vb = _mm512_set1_epi32(b);
@@ -154,10 +157,10 @@ __attribute__((target("avx512f"), optimize("fp-contract=off"))) void sample_row_
     const __mmask16 is_b = _mm512_mask_cmpeq_epi32_mask(static_cast<__mmask16>(~is_a & in), l, vb);
     const __mmask16 is_other =
         _mm512_mask_cmpgt_epi32_mask(static_cast<__mmask16>(~(is_a | is_b) & in), l, zero);
-    __m512i d = _mm512_loadu_si512(a_minus_b + i);
+    __m512i d = first ? zero : _mm512_loadu_si512(a_minus_b + i);
     d = _mm512_mask_sub_epi32(_mm512_mask_add_epi32(d, is_a, d, one), is_b, d, one);
     _mm512_storeu_si512(a_minus_b + i, d);
-    const __m512i o = _mm512_loadu_si512(other + i);
+    const __m512i o = first ? zero : _mm512_loadu_si512(other + i);
     _mm512_storeu_si512(other + i, _mm512_mask_add_epi32(o, is_other, o, one));
     if (pixels == nullptr) continue;
     _mm512_storeu_si512(inside + i, _mm512_maskz_mov_epi32(in, one));
@@ -177,10 +180,10 @@ bool gathers_avx512_available() { return __builtin_cpu_supports("avx512f"); }
 bool gathers_avx512_available() { return false; }
 template <bool kBytes>
 void sample_row_avx512(const void*, const Rgba*, int, const double*, const double*, double, double,
-                       int, int, int*, int*, float*) {}
+                       int, int, bool, int*, int*, float*) {}
 template <bool kBytes>
 void sample_row_clipped_avx512(const void*, const Rgba*, int, int, const double*, const double*,
-                               double, double, int, int, int*, int*, float*, int*) {}
+                               double, double, int, int, bool, int*, int*, float*, int*) {}
 #endif
 
 }  // namespace
@@ -266,20 +269,20 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
       const Rgba* pixels = with_grey ? image->data() : nullptr;
       const int w = labels.width();
       for (int sj = 0; sj < kSamples; sj += 2) {
-        std::array<int, kSamples> diff{}, other{};
+        std::array<int, kSamples> diff, other;
         std::array<float, kSamples> g;
         float* grey_row = grey.data() + (sj / 2) * kPatchCells;
         for (int half = 0; half < 2; ++half) {
           const double bxs = bx[sj + half], bys = by[sj + half];
           if (bytes != nullptr)
             sample_row_avx512<true>(bytes, pixels, w, ax.data(), ay.data(), bxs, bys, a, b,
-                                    diff.data(), other.data(), g.data());
+                                    half == 0, diff.data(), other.data(), g.data());
           else if (gathers)
             sample_row_avx512<false>(label_data, pixels, w, ax.data(), ay.data(), bxs, bys, a, b,
-                                     diff.data(), other.data(), g.data());
+                                     half == 0, diff.data(), other.data(), g.data());
           else
-            sample_row(label_data, pixels, w, ax.data(), ay.data(), bxs, bys, a, b, diff.data(),
-                       other.data(), g.data());
+            sample_row(label_data, pixels, w, ax.data(), ay.data(), bxs, bys, a, b, half == 0,
+                       diff.data(), other.data(), g.data());
           if (pixels == nullptr) continue;
           for (int i = 0; i < kPatchCells; ++i)
             grey_row[i] = (grey_row[i] + g[2 * i]) + g[2 * i + 1];
@@ -301,7 +304,7 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
     if (gathers && static_cast<double>(labels.width()) * labels.height() < 2e9) {
       const Rgba* pixels = with_grey ? image->data() : nullptr;
       for (int sj = 0; sj < kSamples; sj += 2) {
-        std::array<int, kSamples> diff{}, other{}, in;
+        std::array<int, kSamples> diff, other, in;
         std::array<float, kSamples> g;
         float* grey_row = grey.data() + (sj / 2) * kPatchCells;
         std::uint8_t* count_row = counted.data() + (sj / 2) * kPatchCells;
@@ -309,12 +312,12 @@ Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Ve
           const double bxs = bx[sj + half], bys = by[sj + half];
           if (bytes != nullptr)
             sample_row_clipped_avx512<true>(bytes, pixels, labels.width(), labels.height(),
-                                            ax.data(), ay.data(), bxs, bys, a, b, diff.data(),
-                                            other.data(), g.data(), in.data());
+                                            ax.data(), ay.data(), bxs, bys, a, b, half == 0,
+                                            diff.data(), other.data(), g.data(), in.data());
           else
             sample_row_clipped_avx512<false>(labels.data(), pixels, labels.width(), labels.height(),
-                                             ax.data(), ay.data(), bxs, bys, a, b, diff.data(),
-                                             other.data(), g.data(), in.data());
+                                             ax.data(), ay.data(), bxs, bys, a, b, half == 0,
+                                             diff.data(), other.data(), g.data(), in.data());
           if (pixels == nullptr) continue;
           for (int i = 0; i < kPatchCells; ++i) {
             grey_row[i] = (grey_row[i] + g[2 * i]) + g[2 * i + 1];
