@@ -188,8 +188,9 @@ void sample_row_clipped_avx512(const void*, const Rgba*, int, int, const double*
 
 }  // namespace
 
-Patch junction_patch(const LabelMap& labels, const PatchImage& drawing, const Vec2& centre,
-                     const Vec2& direction, int a, int b, bool a_on_left, double radius) {
+__attribute__((target_clones("avx512f", "default"), optimize("fp-contract=off"))) Patch
+junction_patch(const LabelMap& labels, const PatchImage& drawing, const Vec2& centre,
+               const Vec2& direction, int a, int b, bool a_on_left, double radius) {
   if (!(std::isfinite(radius) && radius > 0))
     throw Error("layering::junction_patch: radius = " + std::to_string(radius) +
                 "; must be finite and > 0");
