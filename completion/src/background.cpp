@@ -208,20 +208,52 @@ constexpr double kLineColour = 24.0;
 // How far (px, chessboard) from the grown hair a wedge of the outline's
 // colour where a lock's point lies on the face may reach.
 constexpr int kWedgeReach = 24;
+// How far (px, chessboard) from the grown hair a lock's tip hanging off it
+// off the head may reach (generated drawings' tips: up to ~45 px).
+constexpr int kTipReach = 48;
+// A dark piece of the hair's colour hanging off the hair beyond its outline
+// band is a lock the strokes missed when it is at most this share of the
+// labelled hair it touches.
+constexpr double kMissedLock = 0.25;
 
-// The colour of the drawing's lines next to the hole (the face's outline,
-// the clothes'): the median by luma of the ink just outside it.
-Rgba head_line_colour(const Image& image, const cv::Mat& holes, const Options& o) {
-  cv::Mat around;
+// The colour of the head's outline: the median by luma of the ink just
+// outside the hole along the head's rim, or of all the ink just outside the
+// hole when none lies there (the face's outline, the clothes'). The ink
+// round the whole hole mixes in what the hair's loose ends touch (the lock
+// tips on generated drawings: taken with the hair, the median became an
+// iris's green-grey).
+Rgba head_line_colour(const Image& image, const LabelMap& regions, const cv::Mat& holes,
+                      const cv::Mat& head, const Options& o) {
+  cv::Mat around, rim;
   cv::dilate(holes, around, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(7, 7)));
-  std::vector<Rgba> ink;
+  {
+    cv::Mat inner, outer;
+    const cv::Mat k = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(9, 9));
+    cv::dilate(head, outer, k);
+    cv::erode(head, inner, k);
+    rim = outer & ~inner;
+  }
+  std::vector<Rgba> ink, on_rim, under_rim;
   for (int y = 0; y < image.height(); ++y)
     for (int x = 0; x < image.width(); ++x) {
       const Rgba& c = image.at(x, y);
-      if (around.at<std::uint8_t>(y, x) && !holes.at<std::uint8_t>(y, x) && c.a >= 240 &&
-          luma(c) < o.background.inpaint.ink_luma)
-        ink.push_back(c);
+      if (c.a < 240 || luma(c) >= o.background.inpaint.ink_luma) continue;
+      const bool hidden = holes.at<std::uint8_t>(y, x) != 0;
+      if (around.at<std::uint8_t>(y, x) && !hidden) ink.push_back(c);
+      if (!rim.at<std::uint8_t>(y, x)) continue;
+      if (!hidden)
+        on_rim.push_back(c);
+      else if (regions.at(x, y) == 0)
+        under_rim.push_back(c);
     }
+  // A few pixels are anti-aliased ends, not the line. Where the hair hides
+  // the whole rim, its line was drawn there: the ink no region holds (not
+  // the dark purple of the hair, which then outlined the head).
+  constexpr std::size_t kMinRim = 20;
+  if (on_rim.size() >= kMinRim)
+    ink.swap(on_rim);
+  else if (under_rim.size() >= kMinRim)
+    ink.swap(under_rim);
   if (ink.empty()) return {40, 30, 30, 255};
   std::nth_element(ink.begin(), ink.begin() + ink.size() / 2, ink.end(),
                    [](const Rgba& a, const Rgba& b) { return luma(a) < luma(b); });
@@ -449,17 +481,48 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
     cv::dilate(hair, band,
                cv::getStructuringElement(cv::MORPH_ELLIPSE,
                                          cv::Size(2 * band_reach + 1, 2 * band_reach + 1)));
-    thick &= band;
     cv::dilate(hair, grown, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
     const int n = cv::connectedComponents(thick | grown, parts, 8, CV_32S);
-    std::vector<std::uint8_t> touches(static_cast<std::size_t>(n), 0);
+    std::vector<long> labelled(static_cast<std::size_t>(n), 0);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
-        if (hair.at<std::uint8_t>(y, x)) touches[static_cast<std::size_t>(parts.at<int>(y, x))] = 1;
+        if (hair.at<std::uint8_t>(y, x)) ++labelled[static_cast<std::size_t>(parts.at<int>(y, x))];
+    // Beyond the band, off the head: a lock the strokes missed hanging off
+    // the hair (lucy's black points at her shoulders, 30-40 px long). A
+    // piece of it that touches the hair goes when it is small beside the
+    // labelled hair it hangs from; dark clothes of the hair's colour are not.
+    cv::Mat off(h, w, CV_8U, cv::Scalar(0)), lock_parts;
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
-        if (thick.at<std::uint8_t>(y, x) && touches[static_cast<std::size_t>(parts.at<int>(y, x))])
-          hair.at<std::uint8_t>(y, x) = 255;
+        off.at<std::uint8_t>(y, x) =
+            thick.at<std::uint8_t>(y, x) && !band.at<std::uint8_t>(y, x) &&
+                    (head.mask.empty() || !head.mask.at<std::uint8_t>(y, x))
+                ? 255
+                : 0;
+    const int locks = cv::connectedComponents(off, lock_parts, 8, CV_32S);
+    std::vector<long> lock_area(static_cast<std::size_t>(locks), 0);
+    std::vector<int> lock_of(static_cast<std::size_t>(locks), 0);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const auto k = static_cast<std::size_t>(lock_parts.at<int>(y, x));
+        if (k == 0) continue;
+        ++lock_area[k];
+        const int p = parts.at<int>(y, x);
+        if (labelled[static_cast<std::size_t>(p)] > 0) lock_of[k] = p;
+      }
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const auto k = static_cast<std::size_t>(parts.at<int>(y, x));
+        if (!thick.at<std::uint8_t>(y, x) || labelled[k] == 0) continue;
+        bool goes = band.at<std::uint8_t>(y, x) != 0;
+        if (!goes) {
+          const auto l = static_cast<std::size_t>(lock_parts.at<int>(y, x));
+          goes = l != 0 && lock_of[l] > 0 &&
+                 static_cast<double>(lock_area[l]) <=
+                     kMissedLock * labelled[static_cast<std::size_t>(lock_of[l])];
+        }
+        if (goes) hair.at<std::uint8_t>(y, x) = 255;
+      }
   }
   // On the head the bangs' points are drawn lighter than the regions the
   // segmentation gave them (a highlight, the anti-aliased taper): they are
@@ -587,7 +650,10 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
     cv::dilate(hair, near_grown, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(17, 17)));
   // A wedge of the outline's colour reaches farther from the labelled
   // pixels than a lock's point of the hair's colour.
-  cv::Mat near_wedge;
+  cv::Mat near_wedge, near_tip;
+  cv::dilate(
+      hair, near_tip,
+      cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * kTipReach + 1, 2 * kTipReach + 1)));
   if (!head.mask.empty())
     cv::dilate(hair, near_wedge,
                cv::getStructuringElement(cv::MORPH_RECT,
@@ -611,6 +677,67 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
       if (dark.at<std::uint8_t>(y, x) && !outline_coloured.at<std::uint8_t>(y, x) &&
           !hair_coloured.at<std::uint8_t>(y, x))
         mixed[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
+  // A lock's tip off the head, beyond the outline's growth: where a strand
+  // ends in a point its two outlines converge into a dark wedge that the
+  // segmentation leaves unlabelled, 10-20 px long (black ticks under the
+  // hair of generated drawings; on lucy the black point along her left
+  // shoulder). A piece of the hair's or its outline's colour, off the
+  // head, touching the hair in one place only (a line of the drawing
+  // running on from the hair meets it at both ends or reaches farther),
+  // reaches as far as a wedge on the face.
+  std::vector<std::uint8_t> tip(static_cast<std::size_t>(count), 1);
+  {
+    cv::Mat touch, places;
+    cv::dilate(hair, touch, step);
+    touch &= dark;
+    cv::connectedComponents(touch, places, 8, CV_32S);
+    std::vector<int> place(static_cast<std::size_t>(count), 0), size(place), other(place);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        if (!dark.at<std::uint8_t>(y, x)) continue;
+        const auto k = static_cast<std::size_t>(pieces.at<int>(y, x));
+        if (!head.mask.empty() && head.mask.at<std::uint8_t>(y, x)) tip[k] = 0;
+        ++size[k];
+        other[k] += !(line_coloured.at<std::uint8_t>(y, x) || hair_coloured.at<std::uint8_t>(y, x));
+        const int at = places.at<int>(y, x);
+        if (at == 0) continue;
+        if (place[k] == 0)
+          place[k] = at;
+        else if (place[k] != at)
+          tip[k] = 0;
+      }
+    // Its dark anti-aliased rim over a light colour is of neither colour.
+    constexpr double kRimShare = 0.25;
+    for (std::size_t k = 0; k < tip.size(); ++k)
+      tip[k] &= place[k] != 0 && other[k] <= kRimShare * size[k];
+    // A tip hangs alone; a screentone's dots, touching each other in twos
+    // and threes beside the hair, have others like them round them (a
+    // generated screentone body lost its dots along the hair). At most this
+    // many other dark pieces within kAlone px of its box.
+    constexpr int kAlone = 6, kMaxOthers = 2;
+    std::vector<cv::Rect> box(tip.size());
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const auto k = static_cast<std::size_t>(pieces.at<int>(y, x));
+        if (k != 0 && tip[k]) box[k] |= cv::Rect(x, y, 1, 1);
+      }
+    std::vector<int> seen;
+    for (std::size_t k = 1; k < tip.size(); ++k) {
+      if (!tip[k]) continue;
+      const cv::Rect r = cv::Rect(box[k].x - kAlone, box[k].y - kAlone, box[k].width + 2 * kAlone,
+                                  box[k].height + 2 * kAlone) &
+                         cv::Rect(0, 0, w, h);
+      seen.clear();
+      for (int y = r.y; y < r.y + r.height; ++y)
+        for (int x = r.x; x < r.x + r.width; ++x) {
+          const int l = pieces.at<int>(y, x);
+          if (l != 0 && static_cast<std::size_t>(l) != k &&
+              std::find(seen.begin(), seen.end(), l) == seen.end())
+            seen.push_back(l);
+        }
+      if (static_cast<int>(seen.size()) > kMaxOthers) tip[k] = 0;
+    }
+  }
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       if (dark.at<std::uint8_t>(y, x)) {
@@ -619,7 +746,10 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
         const bool thick_feature = on_head && features.at<std::uint8_t>(y, x);
         const bool wedge = on_head && outline_coloured.at<std::uint8_t>(y, x) &&
                            !mixed[static_cast<std::size_t>(pieces.at<int>(y, x))];
-        const cv::Mat& reach = wedge ? near_wedge : on_head && own ? near_grown : near;
+        const cv::Mat& reach = tip[static_cast<std::size_t>(pieces.at<int>(y, x))] ? near_tip
+                               : wedge                                             ? near_wedge
+                               : on_head && own                                    ? near_grown
+                                                                                   : near;
         if (thick_feature || !reach.at<std::uint8_t>(y, x))
           beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] = 1;
       }
@@ -671,6 +801,17 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
            (!beyond[static_cast<std::size_t>(pieces.at<int>(y, x))] ||
             (!wedge_parts.empty() &&
              wedge_goes[static_cast<std::size_t>(wedge_parts.at<int>(y, x))])));
+  {
+    // A tip goes with its anti-aliased rim (1 px, not dark).
+    cv::Mat gone(h, w, CV_8U, cv::Scalar(0));
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const auto k = static_cast<std::size_t>(pieces.at<int>(y, x));
+        if (dark.at<std::uint8_t>(y, x) && tip[k] && !beyond[k]) gone.at<std::uint8_t>(y, x) = 255;
+      }
+    cv::dilate(gone, gone, step);
+    holes |= gone;
+  }
   if (!wedge_parts.empty()) {
     // ... with its rim two pixels wide: its anti-aliased blends with the
     // skin, some dark but of neither colour (grey ticks of it stayed on the
@@ -709,7 +850,7 @@ Image fill_background(const Context& ctx, const BackgroundHole& taken, InpaintRe
     cv::Mat rim;
     cv::dilate(head.mask, rim, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
     rim &= rest;
-    const Rgba line = head_line_colour(image, holes, o);
+    const Rgba line = head_line_colour(image, *ctx.original, holes, head.mask, o);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
         if (rim.at<std::uint8_t>(y, x)) work.at(x, y) = line;
