@@ -696,7 +696,10 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
       for (int x = 0; x < w; ++x) {
         if (!dark.at<std::uint8_t>(y, x)) continue;
         const auto k = static_cast<std::size_t>(pieces.at<int>(y, x));
-        if (!head.mask.empty() && head.mask.at<std::uint8_t>(y, x)) tip[k] = 0;
+        // Nor does a tip run off the drawing (a line reaching its edge runs on).
+        if ((!head.mask.empty() && head.mask.at<std::uint8_t>(y, x)) || x == 0 || y == 0 ||
+            x == w - 1 || y == h - 1)
+          tip[k] = 0;
         ++size[k];
         other[k] += !(line_coloured.at<std::uint8_t>(y, x) || hair_coloured.at<std::uint8_t>(y, x));
         const int at = places.at<int>(y, x);

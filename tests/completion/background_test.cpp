@@ -635,6 +635,35 @@ TEST(HeadBehindHair, SpecksTheHairEnclosesGoWithIt) {
   EXPECT_EQ(sheet, 84) << "the speck over the sheet is left";
 }
 
+// Session 18: the head's outline under the hair is drawn in the ink of the
+// head's own rim. Dark green blocks (a collar's) touch the cap beside the
+// head, off it: before, the rim line took the median of all the ink just
+// outside the hole, most of it the blocks' green (on generated drawings,
+// once the lock tips went with the hair, an iris's green-grey); now the ink
+// along the head's rim, the face's outline.
+TEST(HeadBehindHair, HiddenHeadOutlineTakesTheHeadsInk) {
+  test::Drawing d = head::drawing();
+  constexpr Rgba kGreen{20, 110, 70, 255};
+  auto block = [](int x, int y) {
+    return y >= 112 && y < 150 && ((x >= 72 && x < 94) || (x >= 226 && x < 248));
+  };
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x)
+      if (block(x, y) && d.regions.at(x, y) == 0 && d.image.at(x, y).a == 0)
+        d.image.at(x, y) = kGreen;
+  const Result r = head::run(d);
+  int green = 0, ink = 0;
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      if (d.regions.at(x, y) != 1) continue;  // under the cap
+      const Rgba& c = r.background.at(x, y);
+      green += colour_distance(c, kGreen) <= 12;
+      ink += colour_distance(c, kInk) <= 12;
+    }
+  EXPECT_EQ(green, 0) << "the head's outline was drawn in the collar's green";
+  EXPECT_GT(ink, 150) << "the head's outline under the cap is not the face's ink";
+}
+
 // The model at rest: the background with every strand's texture laid over
 // it (one strand here, nothing to order) gives the drawing back wherever no
 // strand is drawn, apart from the strands' own outline band. A black disk of
@@ -764,6 +793,105 @@ TEST(BackgroundAtRest, StrandTexturesKeepTheSheetsAlpha) {
   EXPECT_GT(visible, 4000);
   EXPECT_EQ(wrong_alpha, 0);
   EXPECT_EQ(opaque_over_sheet, 0);
+}
+
+// What a strand's texture and the background show together at rest.
+Image at_rest(const Result& r) {
+  Image rest = r.background;
+  for (const CompletedStrand& s : r.strands)
+    for (int y = 0; y < s.texture.height(); ++y)
+      for (int x = 0; x < s.texture.width(); ++x)
+        if (s.texture.at(x, y).a == 255)
+          rest.at(x + s.origin.x(), y + s.origin.y()) = s.texture.at(x, y);
+  return rest;
+}
+
+// Session 18: a lock the strokes missed (lucy's black points at her
+// shoulders): a thick piece of the hair's colour, 10 px wide, its own
+// outline, hanging 36 px off a strand's side over the paper, unlabelled.
+// Before, only its part within the hair's outline band went; the rest stayed
+// a dark stump in the background. Now it goes with the hair, and the strand
+// beside it carries it at rest (the drawing comes back there).
+TEST(BackgroundAtRest, LockTheStrokesMissedGoesWithTheHair) {
+  constexpr int kW = 240, kH = 200;
+  constexpr Rgba kDark{45, 40, 50, 255};
+  test::Drawing d{Image(kW, kH, Rgba{190, 220, 225, 255}), LabelMap(kW, kH, 0), {}};
+  test::paint(
+      d, [](double x, double y) { return x > 40 && x < 110 && y > 10 && y < 190; }, kDark, 1);
+  // The lock: 10 px wide with a 2 px outline of the strand's ink, leaving
+  // the strand's right side between rows 90 and 100 and running right.
+  auto lock = [](int x, int y) { return x >= 106 && x < 146 && y >= 90 && y < 100; };
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      if (lock(x, y))
+        d.image.at(x, y) = (y < 92 || y >= 98 || x >= 144) ? Rgba{20, 15, 10, 255} : kDark;
+  Options o;
+  o.inpaint_strands = false;
+  const Result r = complete_strands(test::input_of(d, Vec2(75, 100)), o);
+  const Image rest = at_rest(r);
+  int far = 0, far_dark = 0, back = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (!lock(x, y) || x < 120) continue;  // beyond the outline band
+      ++far;
+      far_dark += luma(r.background.at(x, y)) < 120;
+      back += rest.at(x, y) == d.image.at(x, y);
+    }
+  ASSERT_EQ(far, 260);
+  EXPECT_EQ(far_dark, 0) << "the lock stayed in the background";
+  EXPECT_EQ(back, far) << "the lock vanished from the model at rest";
+}
+
+// Session 18: lock tips off the head. A strand ends in a point whose two
+// outlines converge into a dark wedge below the labelled pixels (the
+// segmentation's regions stop short of it): 34 px long, 8 px wide at the
+// strand, of the outline's ink. Before, only the 8 px next to the strand
+// went (the outline's growth) and a black tick stayed in the background
+// under every such lock on generated drawings. Now it goes whole. A line of
+// the same ink running from the strand's side off the drawing stays, and so
+// do screentone dots beside the strand, touching it in bars.
+TEST(BackgroundAtRest, LoneLockTipGoesLinesAndDotsStay) {
+  constexpr int kW = 240, kH = 220;
+  constexpr Rgba kInkLine{20, 15, 10, 255};
+  test::Drawing d{Image(kW, kH, Rgba{190, 220, 225, 255}), LabelMap(kW, kH, 0), {}};
+  test::paint(
+      d, [](double x, double y) { return x > 40 && x < 100 && y > 10 && y < 150; }, kHair, 1);
+  // The tip: a wedge from the strand's lower edge (row 149) to row 183.
+  auto tip = [](int x, int y) {
+    if (y < 148 || y >= 183) return false;
+    const double half = 4.0 * (183 - y) / 35.0;
+    return std::abs(x + 0.5 - 70.0) <= half + 0.5;
+  };
+  // A line from the strand's left side to the sheet's left edge.
+  auto line = [](int x, int y) { return x < 42 && y >= 60 && y < 62; };
+  // A screentone right of the strand, in rows 3 px high every 6 px: next
+  // to the strand its dots touch into bars 20 px long (each touching the
+  // strand in one place, like a tip), beyond them 3 px dots every 5 px.
+  auto dot = [](int x, int y) {
+    return y >= 40 && y < 120 && y % 6 < 3 &&
+           ((x >= 99 && x < 120) || (x >= 123 && x < 150 && (x - 123) % 5 < 3));
+  };
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      if (d.regions.at(x, y) == 0 && (tip(x, y) || line(x, y) || dot(x, y)))
+        d.image.at(x, y) = kInkLine;
+  Options o;
+  o.inpaint_strands = false;
+  const Result r = complete_strands(test::input_of(d, Vec2(70, 80)), o);
+  int tip_far = 0, tip_dark = 0, line_far = 0, line_kept = 0, dots = 0, dots_kept = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const Rgba& c = r.background.at(x, y);
+      if (tip(x, y) && y >= 162) ++tip_far, tip_dark += luma(c) < 120;
+      if (line(x, y) && x < 25) ++line_far, line_kept += c == d.image.at(x, y);
+      if (dot(x, y) && x >= 112) ++dots, dots_kept += c == d.image.at(x, y);
+    }
+  ASSERT_GT(tip_far, 40);
+  EXPECT_EQ(tip_dark, 0) << "the lock's tip stayed in the background";
+  ASSERT_EQ(line_far, 50);
+  EXPECT_EQ(line_kept, line_far) << "the line running from the strand was taken";
+  ASSERT_GT(dots, 300);
+  EXPECT_EQ(dots_kept, dots) << "the screentone's dots beside the strand were taken";
 }
 
 }  // namespace
