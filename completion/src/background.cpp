@@ -471,12 +471,12 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
     cv::Mat thick, grown, parts;
     cv::morphologyEx(hair_coloured, thick, cv::MORPH_OPEN,
                      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
-    // Only the band along the strands goes: a pixel taken from the
-    // background must be one a strand's texture covers at rest, or near
-    // enough to be its rim. A dark body of the hair's colour that no strand
-    // holds (a lock the segmentation missed, a black disk beside one
-    // labelled pixel) stays drawn in the background; otherwise it vanished
-    // from the model.
+    // The band along the strands goes, and beyond it only a lock small
+    // beside the hair it hangs from (below): what the hole takes no region
+    // holds is carried by the strand reached first (carry_rims), so it
+    // moves with it. A dark body of the hair's colour as large as the hair
+    // (dark clothes, a black disk beside one labelled pixel) stays drawn in
+    // the background; carried by one strand it would move with the hair.
     const int band_reach = o.outline_reach;
     cv::dilate(hair, band,
                cv::getStructuringElement(cv::MORPH_ELLIPSE,
