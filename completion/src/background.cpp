@@ -651,9 +651,6 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
   // A wedge of the outline's colour reaches farther from the labelled
   // pixels than a lock's point of the hair's colour.
   cv::Mat near_wedge, near_tip;
-  cv::dilate(
-      hair, near_tip,
-      cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * kTipReach + 1, 2 * kTipReach + 1)));
   if (!head.mask.empty())
     cv::dilate(hair, near_wedge,
                cv::getStructuringElement(cv::MORPH_RECT,
@@ -739,6 +736,13 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
             seen.push_back(l);
         }
       if (static_cast<int>(seen.size()) > kMaxOthers) tip[k] = 0;
+    }
+    // Chessboard distance from the grown hair (a 97 px dilation cost 100 M
+    // instructions on a 1024² drawing).
+    if (std::find(tip.begin() + 1, tip.end(), 1) != tip.end()) {
+      cv::Mat dist;
+      cv::distanceTransform(hair == 0, dist, cv::DIST_C, 3);
+      near_tip = dist <= kTipReach;
     }
   }
   for (int y = 0; y < h; ++y)
