@@ -737,13 +737,12 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
         }
       if (static_cast<int>(seen.size()) > kMaxOthers) tip[k] = 0;
     }
-    // Chessboard distance from the grown hair (a 97 px dilation cost 100 M
-    // instructions on a 1024² drawing).
-    if (std::find(tip.begin() + 1, tip.end(), 1) != tip.end()) {
-      cv::Mat dist;
-      cv::distanceTransform(hair == 0, dist, cv::DIST_C, 3);
-      near_tip = dist <= kTipReach;
-    }
+    // Only when a tip is found (a chessboard distance transform instead
+    // cost 35 M instructions more on a 1024² drawing).
+    if (std::find(tip.begin() + 1, tip.end(), 1) != tip.end())
+      cv::dilate(hair, near_tip,
+                 cv::getStructuringElement(cv::MORPH_RECT,
+                                           cv::Size(2 * kTipReach + 1, 2 * kTipReach + 1)));
   }
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
