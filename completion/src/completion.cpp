@@ -63,6 +63,25 @@ bool unmeasured(const RegionRelation& r, const std::set<std::pair<int, int>>& to
          !touching.count({std::min(r.a, r.b), std::max(r.a, r.b)});
 }
 
+// A *remote* order: not the user's, between regions that do not touch once
+// the outlines are assigned, whatever its score. The layering measures such
+// orders across a thin line or sliver between the two (its own region map
+// keeps them neighbours); the annotation, which the join rules were tuned
+// on, never relates regions that do not touch. Pieces of one strand on both
+// sides of an occluder are such a pair: on dev flat 2000-2099 with the
+// layering's relations (main 948ca3c) 16 of 95 links lost against the
+// annotation's relations were remote orders between the two pieces (8 of
+// them firm), and of all remote orders 40 relate pieces of one strand and
+// 375 two strands. A remote order still makes occluders and front hair, but
+// neither keeps two pieces' edges apart (match_edges) nor counts as firm
+// (try_join). Session 18 (joins29): flat 2000-2099 0.934 / 0.779 -> 0.934 /
+// 0.788, flat 3000-3099 0.924 / 0.752 -> 0.926 / 0.766, mixed 2000-2099
+// 0.882 / 0.634 -> 0.887 / 0.650 (docs/completion.md, "Session 18: joins with
+// the layering's relations").
+bool remote(const RegionRelation& r, const std::set<std::pair<int, int>>& touching) {
+  return !r.user_fixed && !touching.count({std::min(r.a, r.b), std::max(r.a, r.b)});
+}
+
 // A measured relation weaker than this (|score|, the layering's support of
 // its boundary states, layering.h) does not keep two regions out of one
 // strand; it still makes occluders and front hair. Session 16 (joins22), dev
@@ -188,10 +207,14 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       ctx.regions[r.b].occluders.insert(r.a);
   }
 
-  // Only firm relations keep two regions out of one strand (try_join).
+  for (const RegionRelation& r : input.relations)
+    if (r.relation != Relation::kEqual && !unmeasured(r, touching) && remote(r, touching))
+      ctx.remote_orders.insert({std::min(r.a, r.b), std::max(r.a, r.b)});
+  // Only firm relations between touching regions keep two regions out of one
+  // strand (try_join).
   std::map<int, std::set<int>> firm_occluders;
   for (const RegionRelation& r : input.relations)
-    if (r.relation != Relation::kEqual && !unmeasured(r, touching) && firm(r))
+    if (r.relation != Relation::kEqual && !remote(r, touching) && firm(r))
       firm_occluders[r.relation == Relation::kBelow ? r.a : r.b].insert(
           r.relation == Relation::kBelow ? r.b : r.a);
   const std::map<int, std::set<int>> firm_above = chains_above(firm_occluders);
@@ -259,6 +282,37 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       ++next_id;
       candidates.push_back(std::move(e));
     }
+  // Turned edges: a weak order puts some regions below a piece; where it is
+  // wrong (an occluder of the piece read below it) the piece has no edge
+  // there and its strand is never joined across that occluder. The runs of
+  // the piece under the regions a weak order puts below it are join
+  // candidates too (never grown), at kTurnedEdgeCost more (joins.cpp).
+  // Not on screentone, where the paint says too little to overrule the
+  // layering (dev mixed 2000-2099: its screentone drawings gained 3 right
+  // pairs for 4 wrong ones). Session 18 (joins29): of the links lost
+  // against the annotation's relations on dev flat 2000-2099, 25 of 95 had
+  // an occluder of a piece read below it, 21 of them weakly.
+  if (!tones.screentone()) {
+    std::map<int, std::set<int>> weakly_below;
+    for (const RegionRelation& r : input.relations) {
+      if (r.relation == Relation::kEqual || remote(r, touching) || firm(r) ||
+          seams.count({r.a, r.b}))
+        continue;
+      if (r.relation == Relation::kAbove)
+        weakly_below[r.a].insert(r.b);
+      else
+        weakly_below[r.b].insert(r.a);
+    }
+    for (const auto& [id, lower] : weakly_below) {
+      detail::RegionInfo turned = ctx.regions.at(id);
+      turned.occluders = lower;
+      for (detail::Edge& e : detail::find_edges(ctx, turned, next_id)) {
+        e.turned = true;
+        e.atoms = {next_id++};
+        candidates.push_back(std::move(e));
+      }
+    }
+  }
   report(progress, "completion", 0.2, "matching");
 
   // Case 1, then 2 and 3 for the edges left (§5.4).

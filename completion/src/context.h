@@ -43,6 +43,10 @@ struct Edge {
   // occluders of it, across a cut of drawn ink only (with, for a whole cut,
   // the occluded runs beside it); empty for an occluding edge.
   std::set<int> ink;
+  // A *turned edge*: a run of the region under regions a weak order puts
+  // below it (completion.cpp; a join candidate only, never grown, no bank
+  // join, never joined to another turned edge).
+  bool turned = false;
 };
 
 struct Context {
@@ -70,6 +74,15 @@ struct Context {
   bool is_above(int upper, int region) const {
     auto it = above.find(region);
     return it != above.end() && it->second.count(upper) > 0;
+  }
+  // Orders between regions that do not touch (completion.cpp `remote`;
+  // smaller id first): occluders, but they do not keep two pieces' edges
+  // apart in match_edges.
+  std::set<std::pair<int, int>> remote_orders;
+  // Two regions one of which directly occludes the other, nearby.
+  bool keeps_apart(int a, int b) const {
+    return (occludes(a, b) || occludes(b, a)) &&
+           !remote_orders.count({std::min(a, b), std::max(a, b)});
   }
   bool occludes(int occluder, int region) const {
     auto it = regions.find(region);

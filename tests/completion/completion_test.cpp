@@ -89,7 +89,8 @@ TEST(Completion, IntersectingPiecesAreJoinedUnderTheOccluder) {
 // do not touch, only its drawing order (score 0). Neither a chain of weak
 // measured orders (1 above the blob 4 above 2) nor an unmeasured order keeps
 // two pieces out of one strand, and an unmeasured "equal" makes no strand of
-// two regions; firm orders still keep them apart.
+// two regions. (Firm orders through the blob, which touches neither piece,
+// are remote orders: RemoteOrdersDoNotKeepPiecesApart.)
 TEST(Completion, WeakOrUnmeasuredRelationsDoNotDecideStrands) {
   Drawing d = crossed_bands();
   paint(
@@ -103,9 +104,60 @@ TEST(Completion, WeakOrUnmeasuredRelationsDoNotDecideStrands) {
   };
   const std::vector<int> joined{1, 2}, apart{1};
   EXPECT_EQ(strand_of_1({{1, 4, Relation::kAbove, 0.4}, {4, 2, Relation::kAbove, 0.6}}), joined);
-  EXPECT_EQ(strand_of_1({{1, 4, Relation::kAbove, 3.0}, {4, 2, Relation::kAbove, 2.5}}), apart);
   EXPECT_EQ(strand_of_1({{1, 2, Relation::kAbove, 0.0}}), joined);
   EXPECT_EQ(strand_of_1({{1, 4, Relation::kEqual, 0.0}}), joined);
+}
+
+// The layering also measures orders between regions that do not touch once
+// the outlines are assigned (across a thin line or sliver between them);
+// such a *remote* order, firm or weak, neither keeps the pieces' edges apart
+// nor makes a chain that keeps them out of one strand: the crossed bands
+// with a firm order 1 above 2 (across the occluder 3), or a firm chain
+// through the blob 4 that touches neither, are joined. A firm chain
+// through a region touching both pieces (a U under them, round the
+// occluder's foot) still keeps them apart.
+TEST(Completion, RemoteOrdersDoNotKeepPiecesApart) {
+  const auto strand_of_1 = [&](const Drawing& d, const std::vector<RegionRelation>& extra) {
+    Drawing with = d;
+    with.relations.insert(with.relations.end(), extra.begin(), extra.end());
+    const Result r = run(with, Vec2(150, 300));
+    const CompletedStrand* s = strand_with(r, 1);
+    return s != nullptr ? s->regions : std::vector<int>{};
+  };
+  const std::vector<int> joined{1, 2}, apart{1};
+  Drawing blob = crossed_bands();
+  paint(
+      blob, [](double x, double y) { return x > 20 && x < 60 && y > 120 && y < 160; }, kFront, 4);
+  EXPECT_EQ(strand_of_1(blob, {{1, 2, Relation::kAbove, 3.0}}), joined);
+  EXPECT_EQ(strand_of_1(blob, {{1, 4, Relation::kAbove, 3.0}, {4, 2, Relation::kAbove, 2.5}}),
+            joined);
+  Drawing u = blank(300, 170);
+  paint(
+      u, [](double x, double y) { return x > 100 && x < 200 && y > 94 && y < 166; }, kFront, 4);
+  paint(
+      u, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, kHair, 1);
+  paint(
+      u, [](double x, double y) { return x >= 150 && x < 280 && y > 60 && y < 100; }, kHair, 2);
+  paint(
+      u, [](double x, double y) { return x > 130 && x < 170 && y > 10 && y < 150; }, kFront, 3);
+  u.relations = {below(1, 3), below(2, 3), below(4, 3)};
+  EXPECT_EQ(strand_of_1(u, {{1, 4, Relation::kAbove, 3.0}, {4, 2, Relation::kAbove, 2.5}}), apart);
+}
+
+// The layering reads the occluder over the gap weakly below one piece (1
+// above 3, score 0.8): the piece's run under it is still a join candidate
+// (a turned edge), so the band is joined; a firm order keeps it apart.
+TEST(Completion, OccluderWeaklyReadBelowAPieceStillHidesTheGap) {
+  const auto strand_of_1 = [](const RegionRelation& first) {
+    Drawing d = crossed_bands();
+    d.relations = {first, below(2, 3)};
+    const Result r = run(d, Vec2(150, 300));
+    const CompletedStrand* s = strand_with(r, 1);
+    return s != nullptr ? s->regions : std::vector<int>{};
+  };
+  EXPECT_EQ(strand_of_1({1, 3, Relation::kAbove, 0.8}), (std::vector<int>{1, 2}));
+  EXPECT_EQ(strand_of_1({3, 1, Relation::kBelow, -1.2}), (std::vector<int>{1, 2}));
+  EXPECT_EQ(strand_of_1({1, 3, Relation::kAbove, 3.0}), (std::vector<int>{1}));
 }
 
 // A horizontal band of one paint cut across by a drawn line (pieces 1, x
