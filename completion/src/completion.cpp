@@ -74,10 +74,13 @@ bool unmeasured(const RegionRelation& r, const std::set<std::pair<int, int>>& to
 // them firm), and of all remote orders 40 relate pieces of one strand and
 // 375 two strands. A remote order still makes occluders and front hair, but
 // neither keeps two pieces' edges apart (match_edges) nor counts as firm
-// (try_join). Session 18 (joins29): flat 2000-2099 0.934 / 0.779 -> 0.934 /
-// 0.788, flat 3000-3099 0.924 / 0.752 -> 0.926 / 0.766, mixed 2000-2099
-// 0.882 / 0.634 -> 0.887 / 0.650 (docs/completion.md, "Session 18: joins with
-// the layering's relations").
+// (try_join). Session 18 (joins29), precision / recall with the layering's
+// relations: dev flat 2000-2099 0.934 / 0.779 -> 0.934 / 0.788, mixed
+// 2000-2099 0.882 / 0.634 -> 0.887 / 0.650, flat 3000-3099 0.924 / 0.752 ->
+// 0.926 / 0.766; fresh flat 4000 / 5000 +10 / +24 right pairs for 0 / +2
+// wrong ones, mixed +16 / +19 for +2 / +3, screentone 2000-2099 +31 for +4
+// (docs/completion.md, "Session 18: joins with the layering's relations").
+// With the annotation's relations (the user's) nothing changes.
 bool remote(const RegionRelation& r, const std::set<std::pair<int, int>>& touching) {
   return !r.user_fixed && !touching.count({std::min(r.a, r.b), std::max(r.a, r.b)});
 }
@@ -282,37 +285,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       ++next_id;
       candidates.push_back(std::move(e));
     }
-  // Turned edges: a weak order puts some regions below a piece; where it is
-  // wrong (an occluder of the piece read below it) the piece has no edge
-  // there and its strand is never joined across that occluder. The runs of
-  // the piece under the regions a weak order puts below it are join
-  // candidates too (never grown), at kTurnedEdgeCost more (joins.cpp).
-  // Not on screentone, where the paint says too little to overrule the
-  // layering (dev mixed 2000-2099: its screentone drawings gained 3 right
-  // pairs for 4 wrong ones). Session 18 (joins29): of the links lost
-  // against the annotation's relations on dev flat 2000-2099, 25 of 95 had
-  // an occluder of a piece read below it, 21 of them weakly.
-  if (!tones.screentone()) {
-    std::map<int, std::set<int>> weakly_below;
-    for (const RegionRelation& r : input.relations) {
-      if (r.relation == Relation::kEqual || remote(r, touching) || firm(r) ||
-          seams.count({r.a, r.b}))
-        continue;
-      if (r.relation == Relation::kAbove)
-        weakly_below[r.a].insert(r.b);
-      else
-        weakly_below[r.b].insert(r.a);
-    }
-    for (const auto& [id, lower] : weakly_below) {
-      detail::RegionInfo turned = ctx.regions.at(id);
-      turned.occluders = lower;
-      for (detail::Edge& e : detail::find_edges(ctx, turned, next_id)) {
-        e.turned = true;
-        e.atoms = {next_id++};
-        candidates.push_back(std::move(e));
-      }
-    }
-  }
   report(progress, "completion", 0.2, "matching");
 
   // Case 1, then 2 and 3 for the edges left (§5.4).

@@ -43,10 +43,6 @@ struct Edge {
   // occluders of it, across a cut of drawn ink only (with, for a whole cut,
   // the occluded runs beside it); empty for an occluding edge.
   std::set<int> ink;
-  // A *turned edge*: a run of the region under regions a weak order puts
-  // below it (completion.cpp; a join candidate only, never grown, no bank
-  // join, never joined to another turned edge).
-  bool turned = false;
 };
 
 struct Context {

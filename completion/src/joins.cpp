@@ -126,14 +126,6 @@ constexpr std::size_t kRarePaintRegions = 8;
 constexpr double kMaxInkJoinGap = 16.0;
 constexpr double kMaxInkFlatStep = 0.5;
 
-// A strand join through a turned edge (Edge::turned: the layering's weak
-// order between the piece and the region over the gap overruled) costs this
-// more. Session 18 (joins29), against remote orders alone (precision /
-// recall with the layering's relations): 0.5 flat 2000-2099 0.934 / 0.788
-// -> 0.935 / 0.796 (+12 right pairs, 0 wrong), mixed 2000-2099 +11 / +5
-// with screentone, 1.0 flat +7 / 0, mixed +7 / +3.
-constexpr double kTurnedEdgeCost = 0.5;
-
 double colour_step_cost(const PaintStep& s) {
   return (s.flat ? kFlatStepWeight : kColourStepWeight) * s.step / 30.0;
 }
@@ -329,7 +321,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   const double max_angle = o.max_join_angle_deg * M_PI / 180.0;
   std::vector<BankCrossings> crossings(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i)
-    if (edges[i].atoms.size() == 1 && edges[i].ink.empty() && !edges[i].turned)
+    if (edges[i].atoms.size() == 1 && edges[i].ink.empty())
       crossings[i] = cross_occluders(ctx, edges[i]);
   // The learned scorer (join_scorer.h) sees candidates up to its band's top.
   const JoinScorerOptions& scorer = o.join_scorer;
@@ -382,14 +374,13 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       const Edge& b = edges[j];
       if (a.region == b.region) continue;
       if (ctx.keeps_apart(a.region, b.region)) continue;
-      if (a.turned && b.turned) continue;
       // An ink edge joins only a region it faces across the ink.
       const bool ink = !a.ink.empty() || !b.ink.empty();
       if (ink && !a.ink.count(b.region) && !b.ink.count(a.region)) continue;
       const double colour = (a.colour - b.colour).norm();
       if (colour > o.max_colour_distance) continue;
       BankJoin bank;
-      if (a.atoms.size() == 1 && b.atoms.size() == 1 && !ink && !a.turned && !b.turned)
+      if (a.atoms.size() == 1 && b.atoms.size() == 1 && !ink)
         bank = bank_join(crossings[i], crossings[j], a, b);
       // p_a ↔ q_b and p_b ↔ q_a: the outlines traverse both pieces the same way.
       const Vec2 c1 = b.q - a.p, c2 = a.q - b.p;
@@ -465,7 +456,6 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         bool common = ink;  // the ink is the one occluder
         for (int occ : a.occluders) common = common || b.occluders.count(occ) > 0;
         if (!common) cost += kNoCommonOccluderCost;
-        if (a.turned || b.turned) cost += kTurnedEdgeCost;
         // A colour step the paint does not explain: two flat pieces of
         // different colours are two strands; a cel band or a gradient
         // explains its own step (`paint_step`).

@@ -144,22 +144,6 @@ TEST(Completion, RemoteOrdersDoNotKeepPiecesApart) {
   EXPECT_EQ(strand_of_1(u, {{1, 4, Relation::kAbove, 3.0}, {4, 2, Relation::kAbove, 2.5}}), apart);
 }
 
-// The layering reads the occluder over the gap weakly below one piece (1
-// above 3, score 0.8): the piece's run under it is still a join candidate
-// (a turned edge), so the band is joined; a firm order keeps it apart.
-TEST(Completion, OccluderWeaklyReadBelowAPieceStillHidesTheGap) {
-  const auto strand_of_1 = [](const RegionRelation& first) {
-    Drawing d = crossed_bands();
-    d.relations = {first, below(2, 3)};
-    const Result r = run(d, Vec2(150, 300));
-    const CompletedStrand* s = strand_with(r, 1);
-    return s != nullptr ? s->regions : std::vector<int>{};
-  };
-  EXPECT_EQ(strand_of_1({1, 3, Relation::kAbove, 0.8}), (std::vector<int>{1, 2}));
-  EXPECT_EQ(strand_of_1({3, 1, Relation::kBelow, -1.2}), (std::vector<int>{1, 2}));
-  EXPECT_EQ(strand_of_1({1, 3, Relation::kAbove, 3.0}), (std::vector<int>{1}));
-}
-
 // A horizontal band of one paint cut across by a drawn line (pieces 1, x
 // 20..150, and 2, x 150..280, y 60..100, each outlined: 4 px of ink between
 // them) whose side outlines run on straight across it, the pieces ordered
