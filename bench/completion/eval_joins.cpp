@@ -167,6 +167,10 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::band_high");
   app.add_option("--scorer-threshold", options.join_scorer.threshold,
                  "JoinScorerOptions::threshold");
+  app.add_option("--scorer-max-angle", options.join_scorer.max_angle_deg,
+                 "JoinScorerOptions::max_angle_deg");
+  app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,
+                 "JoinScorerOptions::wide_threshold");
   app.add_option("--scorer-refuse-below", options.join_scorer.refuse_below,
                  "JoinScorerOptions::refuse_below");
   bool bound = false;

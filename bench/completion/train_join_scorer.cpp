@@ -39,14 +39,15 @@ struct Row {
   JoinFeatures f{};
 };
 
-void collect_case(const AnnotatedCase& c, const std::string& set, double band_high, std::FILE* out,
-                  int* rows) {
+void collect_case(const AnnotatedCase& c, const std::string& set, double band_high,
+                  double max_angle, std::FILE* out, int* rows) {
   completion::Options o;
   o.inpaint_strands = false;
   o.inpaint_background = false;
   o.join_scorer.enabled = false;
   o.join_scorer.record = true;
   o.join_scorer.band_high = band_high;
+  o.join_scorer.max_angle_deg = max_angle;
   const completion::Result r =
       completion::complete_strands(completion::test::input_from_case(c), o);
   std::map<int, int> truth;
@@ -153,6 +154,9 @@ int main(int argc, char** argv) {
   collect->add_option("--strands", strands)->check(CLI::Range(1, 400));
   double record_high = completion::JoinScorerOptions{}.band_high;
   collect->add_option("--band-high", record_high, "Record candidates up to this hand cost");
+  double record_angle = completion::JoinScorerOptions{}.max_angle_deg;
+  collect->add_option("--max-angle", record_angle,
+                      "Record candidates whose tangents turn up to this (degrees)");
   collect->add_option("--shading", shadings, "flat, two-tone, gradient, screentone or all")
       ->check(CLI::IsMember({"flat", "two-tone", "gradient", "screentone", "all"}));
 
@@ -173,6 +177,12 @@ int main(int argc, char** argv) {
   train->add_option("--decay", topt.decay);
   train->add_option("--seed", topt.seed);
   train->add_option("--out", out, "join_scorer_weights.cpp to write");
+  std::string function = "default_join_scorer";
+  train->add_option("--function", function, "The net's function in --out (wide_join_scorer)");
+  bool wide_only = false;
+  train->add_flag(
+      "--wide-only", wide_only,
+      "Only candidates over the angle limit (worst_angle > 1, JoinScorerOptions::max_angle_deg)");
   std::vector<std::string> drop;
   train->add_option("--drop", drop, "Inputs left out (set to 0 everywhere): feature names");
   CLI11_PARSE(app, argc, argv);
@@ -187,6 +197,7 @@ int main(int argc, char** argv) {
     }
     auto rows_of = [&](const std::string& path) {
       std::vector<Row> rows = read_rows(path);
+      if (wide_only) std::erase_if(rows, [](const Row& r) { return !(r.f[1] > 1.0f); });
       for (Row& r : rows)
         for (int k : dropped) r.f[k] = 0;
       return rows;
@@ -197,7 +208,7 @@ int main(int argc, char** argv) {
       int rows = 0;
       if (!annotated.empty()) {
         for (const auto& folder : find_annotated_cases(annotated))
-          collect_case(read_annotated_case(folder), set, record_high, f, &rows);
+          collect_case(read_annotated_case(folder), set, record_high, record_angle, f, &rows);
       } else {
         const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
                                             generator::Shading::kGradient,
@@ -214,7 +225,7 @@ int main(int argc, char** argv) {
             g.shading = kinds[s];
             AnnotatedCase c = generator::generate_case(g);
             c.name = std::string(names[s]) + "-" + std::to_string(seed + k);
-            collect_case(c, set, record_high, f, &rows);
+            collect_case(c, set, record_high, record_angle, f, &rows);
           }
       }
       std::fclose(f);
@@ -248,7 +259,8 @@ int main(int argc, char** argv) {
       if (!drop.empty()) comment << "\nInputs left out:";
       for (const std::string& name : drop) comment << " " << name;
       std::ofstream file(out);
-      file << completion::join_scorer_source(t.net, comment.str());
+      if (wide_only) comment << "\nOnly candidates over the angle limit (--wide-only).";
+      file << completion::join_scorer_source(t.net, comment.str(), function);
       if (!file) throw std::runtime_error("cannot write " + out);
       std::printf("wrote %s\n", out.c_str());
     }

@@ -114,6 +114,8 @@ struct Join {
   std::vector<Polyline> bands;
   bool behind_face = false;  // the patch also counts over the face (both pieces back hair)
   int record = -1;           // index into Context::join_log, or −1
+  // Tangents over max_join_angle_deg: the scorer alone may join it.
+  bool wide = false;
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
 // records) or refuses joining the strands of regions a and b. `face` (CV_8U,

@@ -108,6 +108,12 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
   if (!(refuse_below >= 0 && refuse_below <= threshold))
     return fail("refuse_below = " + num(refuse_below) + "; must be in [0, threshold (" +
                 num(threshold) + ")]");
+  if (!(max_angle_deg >= 0 && max_angle_deg <= 180))
+    return fail("max_angle_deg = " + num(max_angle_deg) + "; must be in [0, 180]");
+  if (!(wide_band_high >= 0 && wide_band_high < 100))
+    return fail("wide_band_high = " + num(wide_band_high) + "; must be in [0, 100)");
+  if (!(wide_threshold > 0 && wide_threshold < 1))
+    return fail("wide_threshold = " + num(wide_threshold) + "; must be in (0, 1)");
   return true;
 }
 
@@ -228,7 +234,8 @@ JoinTrainingResult train_join_scorer(const std::vector<JoinFeatures>& rows,
   return result;
 }
 
-std::string join_scorer_source(const JoinScorerNet& net, const std::string& comment) {
+std::string join_scorer_source(const JoinScorerNet& net, const std::string& comment,
+                               const std::string& function) {
   std::ostringstream s;
   // %.9g round-trips every float exactly, so the file is the net bit for bit.
   auto f = [](float v) {
@@ -252,7 +259,7 @@ std::string join_scorer_source(const JoinScorerNet& net, const std::string& comm
   s << "// Generated file: do not edit (bench/completion/train_join_scorer writes it).\n"
     << "#include \"hair25d/completion/join_scorer.h\"\n\n"
     << "namespace hair25d::completion {\n\n"
-    << "const JoinScorerNet& default_join_scorer() {\n"
+    << "const JoinScorerNet& " << function << "() {\n"
     << "  static const JoinScorerNet net{\n"
     << "      " << row(net.mean) << ",\n"
     << "      " << row(net.inv_std) << ",\n"

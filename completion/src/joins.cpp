@@ -282,12 +282,37 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
     features.push_back(
         join_features(ctx, edges[j.edge_a], edges[j.edge_b], *terms_of[i], front, edge_count));
   }
-  add_rival_features(costs, ends, s.band_high, &features);
+  // The rivals of a candidate within the angle limit are the others within
+  // it (as the default net was trained); a wide candidate's are all up to
+  // wide_band_high (as the wide net was).
+  std::vector<double> inner = costs;
+  bool any_wide = false;
+  for (std::size_t k = 0; k < which.size(); ++k)
+    if ((*candidates)[which[k]].wide)
+      inner[k] = std::numeric_limits<double>::infinity(), any_wide = true;
+  if (any_wide) {
+    std::vector<JoinFeatures> all = features;
+    add_rival_features(costs, ends, std::max(s.band_high, s.wide_band_high), &all);
+    for (std::size_t k = 0; k < which.size(); ++k)
+      if ((*candidates)[which[k]].wide) features[k] = all[k];
+  }
+  {
+    std::vector<JoinFeatures> own = features;
+    add_rival_features(inner, ends, s.band_high, &own);
+    for (std::size_t k = 0; k < which.size(); ++k)
+      if (!(*candidates)[which[k]].wide) features[k] = own[k];
+  }
   const JoinScorerNet& net = default_join_scorer();
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
-    if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
+    if (j.wide) {
+      // Over the angle limit: the scorer alone joins it.
+      if (s.enabled) p = join_probability(wide_join_scorer(), features[k]);
+      j.cost = s.enabled && p >= s.wide_threshold
+                   ? o.max_join_cost + (s.wide_threshold - p) * (s.band_high - s.band_low)
+                   : std::numeric_limits<double>::infinity();
+    } else if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
       p = join_probability(net, features[k]);
       if (p >= s.threshold)
         j.cost = std::min(j.cost, o.max_join_cost + (s.threshold - p) * (s.band_high - s.band_low));
@@ -327,6 +352,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   const JoinScorerOptions& scorer = o.join_scorer;
   const bool scoring = scorer.enabled || ctx.join_log != nullptr;
   const double limit = scoring ? std::max(o.max_join_cost, scorer.band_high) : o.max_join_cost;
+  const double wide_limit = std::max(limit, scorer.wide_band_high);
   std::vector<EdgePaint> paints(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) paints[i] = edge_paint(ctx, edges[i]);
   std::map<int, RegionPaint> region_paints;
@@ -418,7 +444,10 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                    ctx.regions.at(b.region).pixels >= kNubDepth * b.width * b.width &&
                    0.5 * (c1.norm() + c2.norm()) <= kMaxInkJoinGap);
       const bool strand_like = cut_pair && across && (worst <= max_angle || one_sided);
-      if (!strand_like && bank.share < kMinBankShare) continue;
+      // Over the angle limit but within the scorer's (JoinScorerOptions::max_angle_deg).
+      const bool wide_angle = scoring && cut_pair && across && !strand_like &&
+                              worst <= scorer.max_angle_deg * M_PI / 180.0;
+      if (!strand_like && !wide_angle && bank.share < kMinBankShare) continue;
       Join join;
       join.edge_a = static_cast<int>(i);
       join.edge_b = static_cast<int>(j);
@@ -433,7 +462,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                                 (front.count(a.region) > 0 || front.count(b.region) > 0)) ||
                                step.off_gradient ||
                                (ink && step.flat && step.step > kMaxInkFlatStep);
-      if (strand_like && !other_paint) {
+      if ((strand_like || wide_angle) && !other_paint) {
         // The hidden part keeps a strand's width: half-way along the joins its
         // width lies near the widths at the two cuts (criterion 3 of §5.1 seen
         // from the whole join, not only its ends).
@@ -469,7 +498,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         // Screentone: the colour says nothing there, the dots' tone does.
         const double tone_cost = tone_join_cost(tones, a.region, b.region);
         cost += tone_cost;
-        if (cost <= limit) {  // before the costly coverage raster
+        if (cost <= (wide_angle ? wide_limit : limit)) {  // before the costly coverage raster
           join.patch = join_patch(a, b);
           int hidden = 0;
           join.behind_face = !face.empty() && !front.count(a.region) && !front.count(b.region);
@@ -517,14 +546,16 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       if (bank.window && (!front.count(a.region) || !front.count(b.region)) &&
           step.step > kMaxBackWindowStep)
         bank.share = 0.0;
-      if (bank.share >= kMinBankShare && bank_cost < cost) {
+      if (bank.share >= kMinBankShare && (bank_cost < cost || wide_angle)) {
         cost = bank_cost;
         join.patch.clear();
         join.behind_face = false;
         join.bands = std::move(bank.bands);
         terms.reset();
+      } else if (wide_angle && std::isfinite(cost)) {
+        join.wide = true;
       }
-      if (cost > limit) continue;
+      if (cost > (join.wide ? wide_limit : limit)) continue;
       join.cost = cost;
       candidates.push_back(std::move(join));
       terms_of.push_back(terms);

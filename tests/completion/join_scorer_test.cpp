@@ -345,6 +345,77 @@ TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
   const std::string printed = join_scorer_source(default_join_scorer(), "x");
   EXPECT_FALSE(body(printed).empty());
   EXPECT_EQ(body(file.str()), body(printed));
+  // And the net for candidates over the angle limit (session 18).
+  std::ifstream wide_in(std::string(HAIR25D_TEST_DATA_DIR) +
+                        "/../../completion/src/join_scorer_wide_weights.cpp");
+  ASSERT_TRUE(wide_in.good());
+  std::stringstream wide_file;
+  wide_file << wide_in.rdbuf();
+  const std::string wide = join_scorer_source(wide_join_scorer(), "x", "wide_join_scorer");
+  EXPECT_NE(wide.find("wide_join_scorer()"), std::string::npos);
+  EXPECT_EQ(body(wide_file.str()), body(wide));
+}
+
+// A strand that turns a corner under a band (session 18): piece 1 comes
+// down (x 60..88) into the band 3 (x 40..200, y 120..170), piece 2 leaves
+// it to the right (y 135..163); both lie on a wide lowest region 4. Piece 1's
+// tangents turn ~80° from the join's chords, over max_join_angle_deg (70°).
+Drawing corner_under_band() {
+  Drawing d = blank(300, 220);
+  const Rgba back{120, 80, 50, 255}, strand{200, 150, 110, 255};
+  paint(
+      d, [](double x, double y) { return x > 5 && x < 295 && y > 5 && y < 215; }, back, 4);
+  paint(
+      d, [](double x, double y) { return x > 60 && x < 88 && y > 20 && y < 120; }, strand, 1);
+  paint(
+      d, [](double x, double y) { return x >= 200 && x < 290 && y > 135 && y < 163; }, strand, 2);
+  paint(
+      d, [](double x, double y) { return x > 40 && x < 200 && y >= 120 && y < 170; },
+      Rgba{90, 60, 140, 255}, 3);
+  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
+  return d;
+}
+
+TEST(JoinScorer, WideNetDecidesCandidatesOverTheAngleLimit) {
+  const Drawing d = corner_under_band();
+  auto run = [&](double max_angle, double wide_threshold) {
+    Options o;
+    o.inpaint_strands = false;
+    o.inpaint_background = false;
+    o.face_joins = false;
+    o.path_joins = false;
+    o.join_scorer.record = true;
+    o.join_scorer.max_angle_deg = max_angle;
+    o.join_scorer.wide_threshold = wide_threshold;
+    return complete_strands(test::input_of(d, Vec2(150, 10)), o);
+  };
+  // Within the angle limit only (before session 18): no strand candidate.
+  const Result old = run(70.0, 0.95);
+  EXPECT_EQ(candidate(old, 1, 2), nullptr);
+  EXPECT_EQ(test::regions_with(old, 1), (std::vector<int>{1}));
+  // The defaults: a candidate for the wide net alone, over the limit of the
+  // hand cost, decided by its probability only.
+  const JoinScorerOptions defaults;
+  const Result r = run(defaults.max_angle_deg, defaults.wide_threshold);
+  const JoinCandidate* c = candidate(r, 1, 2);
+  ASSERT_NE(c, nullptr);
+  EXPECT_GT(c->features[feature("worst_angle")], 1.0f);
+  EXPECT_GT(c->hand_cost, 2.4);
+  const double p = c->probability;
+  EXPECT_EQ(p, join_probability(wide_join_scorer(), c->features));
+  ASSERT_GT(p, 0.0);
+  ASSERT_LT(p, 0.999);
+  EXPECT_EQ(test::regions_with(r, 1).size(), p >= defaults.wide_threshold ? 2u : 1u);
+  // A threshold under its probability joins it (at most the limit's cost),
+  // one over it refuses it whatever the hand cost.
+  const Result taken = run(defaults.max_angle_deg, p / 2);
+  ASSERT_NE(candidate(taken, 1, 2), nullptr);
+  EXPECT_LE(candidate(taken, 1, 2)->cost, 2.4);
+  EXPECT_EQ(test::regions_with(taken, 1), (std::vector<int>{1, 2}));
+  const Result refused = run(defaults.max_angle_deg, 0.999);
+  ASSERT_NE(candidate(refused, 1, 2), nullptr);
+  EXPECT_TRUE(std::isinf(candidate(refused, 1, 2)->cost));
+  EXPECT_EQ(test::regions_with(refused, 1), (std::vector<int>{1}));
 }
 
 TEST(JoinScorer, BadInputThrows) {

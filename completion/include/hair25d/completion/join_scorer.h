@@ -35,6 +35,10 @@ double join_probability(const JoinScorerNet& net, const JoinFeatures& features);
 // The weights trained by bench/completion/train_join_scorer (generated file
 // join_scorer_weights.cpp).
 const JoinScorerNet& default_join_scorer();
+// Session 18: the net for the candidates over the angle limit
+// (JoinScorerOptions::max_angle_deg), trained on those alone (generated file
+// join_scorer_wide_weights.cpp).
+const JoinScorerNet& wide_join_scorer();
 
 // When and how completion uses the scorer (completion::Options::join_scorer).
 struct JoinScorerOptions {
@@ -61,6 +65,17 @@ struct JoinScorerOptions {
   double band_low = 2.4, band_high = 4.0;
   double threshold = 0.8;
   double refuse_below = 0.0;
+  // Session 18: edge pairs whose tangents turn more than
+  // Options::max_join_angle_deg (70°) from the join's chords but at most
+  // max_angle_deg are strand candidates for the scorer alone: costed as any
+  // other up to wide_band_high, judged by `wide_join_scorer` (trained on such
+  // candidates only), joined at p >= wide_threshold and never by the hand
+  // cost. With max_angle_deg <= max_join_angle_deg there are none. Dev sets
+  // (docs/completion.md "Session 18"): recall +0.004-0.006 at the same
+  // precision; the annotated six unchanged.
+  double max_angle_deg = 120.0;
+  double wide_band_high = 5.0;
+  double wide_threshold = 0.95;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
@@ -103,6 +118,7 @@ JoinTrainingResult train_join_scorer(const std::vector<JoinFeatures>& rows,
 
 // The C++ source of join_scorer_weights.cpp defining default_join_scorer()
 // as `net` (floats printed to round-trip exactly); `comment` heads the file.
-std::string join_scorer_source(const JoinScorerNet& net, const std::string& comment);
+std::string join_scorer_source(const JoinScorerNet& net, const std::string& comment,
+                               const std::string& function = "default_join_scorer");
 
 }  // namespace hair25d::completion
