@@ -70,9 +70,9 @@ struct JoinScorerOptions {
   // max_angle_deg are strand candidates for the scorer alone: costed as any
   // other up to wide_band_high, judged by `wide_join_scorer` (trained on such
   // candidates only), joined at p >= wide_threshold and never by the hand
-  // cost. With max_angle_deg <= max_join_angle_deg there are none. Dev sets
-  // (docs/completion.md "Session 18"): recall +0.004-0.006 at the same
-  // precision; the annotated six unchanged.
+  // cost. With max_angle_deg <= max_join_angle_deg there are none. Mixed
+  // and flat 100-drawing sets (docs/completion.md "Session 18"): recall
+  // +0.002 to +0.008 with no wrong pair more; the annotated six unchanged.
   double max_angle_deg = 120.0;
   double wide_band_high = 5.0;
   double wide_threshold = 0.95;
