@@ -430,6 +430,12 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tone
       // passed the window step and failed the width were 109's back 1 and
       // its sliver 22 (dark shares 0.563 / 0.544, 22 without a whole dot)
       // and four of two strands, all two tones by their dots.
+      // Two tones by the dots are two strands (session 18: on dev screentone
+      // 2000-2099 and 3000-3099 the mass joins of pieces of two tones made 6
+      // wrong links and 5 right ones, each right one of a dense tone whose
+      // touching dots passed for whole ones, now `whole_dot_mass`, or with
+      // a small piece whose dark share alone stepped, now `kMinShareDots`).
+      if (tones.two_tones(a, b)) continue;
       const RegionTones::Match match = tones.match(a, b);
       bool toned = false;
       const bool one_tone = match == RegionTones::Match::kSame ||

@@ -178,6 +178,12 @@ class RegionTones {
   // strands (0.02: 18 and 7).
   static constexpr double kMaxSameCellStep = 0.015;
   static constexpr double kMinOtherToneStep = 0.08;
+  // The dark shares' step says two tones only when both pieces hold at
+  // least this many whole dots (session 18: dev screentone 2078's back
+  // piece 28, 721 px and one whole dot, stepped 0.09 from its strand's
+  // other pieces while the dot masses agreed within 6.3 %; 4 and 10 measured
+  // the same on dev 2000-2099 and 3000-3099).
+  static constexpr int kMinShareDots = 4;
 
   enum class Match { kUnknown, kSame, kOther };
 
@@ -203,9 +209,19 @@ class RegionTones {
   // strands (every dot cut) or a dense tone (dots touching: no whole dot)
   // is weighed as well.
   double cell_mass(int region);
-  // The step between two pieces' masses (a share of the larger): their dot
-  // masses, else (a piece without a whole dot) their cell masses, else
-  // infinity.
+  // The dot mass of a region's whole dots (`dot_mass`), or -1 where those
+  // "dots" are dots run together: a dense tone's dots touch through their
+  // anti-aliased rims, and a pair or a chain of them passes for one small
+  // dark component; its mass is then over kMaxMergedDotRatio times the cell
+  // mass (the ink of one dot weighed on the lattice). Session 18, dev
+  // screentone 2000-2099 and 3000-3099: dense back hair (dark shares
+  // 0.55-0.57) measured dot masses 42.9-63.5 against cell masses 19.3-25.9
+  // (2.2-3.3 times), every other region within 1.3 times.
+  double whole_dot_mass(int region);
+  static constexpr double kMaxMergedDotRatio = 1.5;
+  // The step between two pieces' masses (a share of the larger): their
+  // whole dots' masses (`whole_dot_mass`), else (a piece without a whole
+  // dot) their cell masses, else infinity.
   double mass_step(int a, int b);
   // The drawing is screentone: a quarter of the regions or more show whole
   // dots (on generated screentone drawings 8-18 of 24-34 regions, on
@@ -214,6 +230,13 @@ class RegionTones {
   // kSame / kOther when both pieces' dots are measured and agree / differ
   // (above); kUnknown otherwise or on a drawing that is no screentone.
   Match match(int a, int b);
+  // kOther, and sure of it: both pieces hold kMinShareDots whole dots, or
+  // their cell masses do not agree within kMinOtherMassStep either (a piece
+  // with one to three whole dots is weighed by those alone: dev screentone
+  // 5003's piece 20 and 5075's 30, one dot each, stepped 9.5 % and 9.3 %
+  // from their strands' other pieces, whose cell masses agreed within
+  // 0.5 % and 1.9 %).
+  bool two_tones(int a, int b);
 
  private:
   // The drawing's square dot lattice, fitted to the whole dots' centres

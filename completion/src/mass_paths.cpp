@@ -701,8 +701,22 @@ bool RegionTones::screentone() {
   return screentone_ == 1;
 }
 
+bool RegionTones::two_tones(int a, int b) {
+  if (match(a, b) != Match::kOther) return false;
+  if (std::min(dots_[a], dots_[b]) >= kMinShareDots) return true;
+  const double ca = cell_mass(a), cb = cell_mass(b);
+  return ca <= 0 || cb <= 0 || std::abs(ca - cb) / std::max(ca, cb) > kMinOtherMassStep;
+}
+
+double RegionTones::whole_dot_mass(int region) {
+  const double m = dot_mass(region);
+  if (m <= 0) return m;
+  const double cell = cell_mass(region);
+  return cell > 0 && m > kMaxMergedDotRatio * cell ? -1.0 : m;
+}
+
 double RegionTones::mass_step(int a, int b) {
-  const double ma = dot_mass(a), mb = dot_mass(b);
+  const double ma = whole_dot_mass(a), mb = whole_dot_mass(b);
   if (ma > 0 && mb > 0) return std::abs(ma - mb) / std::max(ma, mb);
   const double ca = cell_mass(a), cb = cell_mass(b);
   if (ca > 0 && cb > 0) return std::abs(ca - cb) / std::max(ca, cb);
@@ -711,7 +725,7 @@ double RegionTones::mass_step(int a, int b) {
 
 RegionTones::Match RegionTones::match(int a, int b) {
   if (!screentone()) return Match::kUnknown;
-  const double ma = dot_mass(a), mb = dot_mass(b), ta = tone(a), tb = tone(b);
+  const double ma = whole_dot_mass(a), mb = whole_dot_mass(b), ta = tone(a), tb = tone(b);
   if (ta < kMinTone || tb < kMinTone) return Match::kUnknown;
   if (ma <= 0 || mb <= 0) {
     // A piece without a whole dot: both pieces' dots weighed on the
@@ -725,7 +739,11 @@ RegionTones::Match RegionTones::match(int a, int b) {
   }
   const double mass_step = std::abs(ma - mb) / std::max(ma, mb), tone_step = std::abs(ta - tb);
   if (mass_step <= kMaxSameMassStep && tone_step <= kMaxSameToneStep) return Match::kSame;
-  if (mass_step > kMinOtherMassStep || tone_step > kMinOtherToneStep) return Match::kOther;
+  // The dark share moves with how a small piece cuts the dots: it tells two
+  // tones only where both pieces hold kMinShareDots whole dots.
+  if (mass_step > kMinOtherMassStep ||
+      (tone_step > kMinOtherToneStep && std::min(dots_[a], dots_[b]) >= kMinShareDots))
+    return Match::kOther;
   return Match::kUnknown;
 }
 

@@ -391,6 +391,48 @@ TEST(ToneJoins, PiecesWithoutAWholeDotAreWeighedOnTheLattice) {
   EXPECT_EQ(test::regions_with(run_strand(dense(0.40), 0.2), 1), (std::vector<int>{1}));
 }
 
+TEST(MassJoins, BackPiecesOfTwoTonesByTheirDotsAreNotJoined) {
+  // Round dots as the generator draws them on both back pieces, the fan's
+  // strands in small dots (a screentone drawing): one tone (radius 0.3
+  // periods on both) is joined; radius 0.34 on the right piece (its dots
+  // 28 % heavier, every piece with many whole dots) is another lock, which
+  // the mass joins took before session 18 (they read no tone match).
+  const auto drawing = [](double right) {
+    Drawing d = back_hair_under_fan(kBack);
+    round_dots(d, 1, 7.0, 0.30, 0.4);
+    round_dots(d, 2, 7.0, right, 0.4);
+    for (int id : {3, 4, 5}) round_dots(d, id, 7.0, 0.2, 0.4);
+    return d;
+  };
+  EXPECT_EQ(test::regions_with(run(drawing(0.30)), 1), (std::vector<int>{1, 2}));
+  EXPECT_EQ(test::regions_with(run(drawing(0.34)), 1), (std::vector<int>{1}));
+}
+
+TEST(ToneJoins, DotsRunTogetherInPairsAreWeighedOnTheLattice) {
+  // One tone (round dots of 0.3 periods, period 7 px) on both pieces of the
+  // strand, the band in smaller dots. On the lower piece every other pair of
+  // neighbouring dots is run together by a 1 px bar, as a dense tone's
+  // anti-aliased rims join dots in pairs: its "whole dots" weigh two dots
+  // and more, which made the pieces two tones (+1 over a limit of 1.0).
+  // Their mass is over 1.5 times the dots' weight on the lattice, so the
+  // lattice weighs both pieces (`whole_dot_mass`): one tone, joined.
+  constexpr double kPeriod = 7.0, kAngle = 0.4;
+  Drawing d = strand_under_band();
+  round_dots(d, 1, kPeriod, 0.3, kAngle);
+  round_dots(d, 2, kPeriod, 0.3, kAngle);
+  round_dots(d, 3, kPeriod, 0.2, kAngle);
+  const double c = std::cos(kAngle) / kPeriod, s = std::sin(kAngle) / kPeriod;
+  for (int y = 0; y < d.image.height(); ++y)
+    for (int x = 0; x < d.image.width(); ++x) {
+      if (d.regions.at(x, y) != 2) continue;
+      const double u = c * x + s * y, v = -s * x + c * y;
+      const double fv = (v - std::round(v)) * kPeriod;
+      if (static_cast<long>(std::floor(u)) % 2 == 0 && std::abs(fv) < 0.5)
+        d.image.at(x, y) = Rgba{60, 40, 30, 255};
+    }
+  EXPECT_EQ(test::regions_with(run_strand(d, 1.0), 1), (std::vector<int>{1, 2}));
+}
+
 TEST(ToneJoins, StrandPiecesOfTwoTonesAreNotJoined) {
   // Under a limit of 1.0, which the geometry passes: 3 px dots every 5 px
   // below against every 6 px above (the same dots, dark shares 0.36 and
