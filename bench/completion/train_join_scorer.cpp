@@ -154,7 +154,9 @@ int main(int argc, char** argv) {
   collect->add_option("--strands", strands)->check(CLI::Range(1, 400));
   double record_high = completion::JoinScorerOptions{}.band_high;
   collect->add_option("--band-high", record_high, "Record candidates up to this hand cost");
-  double record_angle = completion::JoinScorerOptions{}.max_angle_deg;
+  // The wide net's recipe (session 18) records up to 120° although the
+  // model leaves those candidates out by default (join_scorer.h).
+  double record_angle = 120.0;
   collect->add_option("--max-angle", record_angle,
                       "Record candidates whose tangents turn up to this (degrees)");
   collect->add_option("--shading", shadings, "flat, two-tone, gradient, screentone or all")

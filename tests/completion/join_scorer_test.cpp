@@ -393,10 +393,12 @@ TEST(JoinScorer, WideNetDecidesCandidatesOverTheAngleLimit) {
   const Result old = run(70.0, 0.95);
   EXPECT_EQ(candidate(old, 1, 2), nullptr);
   EXPECT_EQ(test::regions_with(old, 1), (std::vector<int>{1}));
-  // The defaults: a candidate for the wide net alone, over the limit of the
+  // Up to 120°: a candidate for the wide net alone, over the limit of the
   // hand cost, decided by its probability only.
   const JoinScorerOptions defaults;
-  const Result r = run(defaults.max_angle_deg, defaults.wide_threshold);
+  EXPECT_EQ(defaults.max_angle_deg, 0.0);  // off unless asked (join_scorer.h)
+  constexpr double kWide = 120.0;
+  const Result r = run(kWide, defaults.wide_threshold);
   const JoinCandidate* c = candidate(r, 1, 2);
   ASSERT_NE(c, nullptr);
   EXPECT_GT(c->features[feature("worst_angle")], 1.0f);
@@ -408,11 +410,11 @@ TEST(JoinScorer, WideNetDecidesCandidatesOverTheAngleLimit) {
   EXPECT_EQ(test::regions_with(r, 1).size(), p >= defaults.wide_threshold ? 2u : 1u);
   // A threshold under its probability joins it (at most the limit's cost),
   // one over it refuses it whatever the hand cost.
-  const Result taken = run(defaults.max_angle_deg, p / 2);
+  const Result taken = run(kWide, p / 2);
   ASSERT_NE(candidate(taken, 1, 2), nullptr);
   EXPECT_LE(candidate(taken, 1, 2)->cost, 2.4);
   EXPECT_EQ(test::regions_with(taken, 1), (std::vector<int>{1, 2}));
-  const Result refused = run(defaults.max_angle_deg, 0.999);
+  const Result refused = run(kWide, 0.999);
   ASSERT_NE(candidate(refused, 1, 2), nullptr);
   EXPECT_TRUE(std::isinf(candidate(refused, 1, 2)->cost));
   EXPECT_EQ(test::regions_with(refused, 1), (std::vector<int>{1}));

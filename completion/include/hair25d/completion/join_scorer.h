@@ -73,7 +73,11 @@ struct JoinScorerOptions {
   // cost. With max_angle_deg <= max_join_angle_deg there are none. Mixed
   // and flat 100-drawing sets (docs/completion.md "Session 18"): recall
   // +0.002 to +0.008 with no wrong pair more; the annotated six unchanged.
-  double max_angle_deg = 120.0;
+  // Off by default (0): on the lead's held sets it gained 3 right pairs of
+  // 1596 (flat) and 1 of 1722 (mixed) and cost `hair25d model` of a 1024²
+  // 40-strand drawing about 0.1 s (0.86 -> 0.96 s, medians of 5), its
+  // candidates each taking the coverage raster. 120 turns it on.
+  double max_angle_deg = 0.0;
   double wide_band_high = 5.0;
   double wide_threshold = 0.95;
   // Record every strand-join candidate with hand cost ≤ band_high in
