@@ -426,6 +426,75 @@ cv::Mat hanging_spurs(const cv::Mat& dark, const cv::Mat& own, const cv::Mat& ne
   return spurs | (rim & ~dark & near);
 }
 
+// A lock's point lying over a thin face line of its own colour (lucy's
+// black fringe points cross her brows, 1-2 px lines that run on into her
+// glasses' frame and lashes): the own-coloured pixels joined to the point
+// reach beyond the wedge reach through the line, so the wedge rule kept it
+// whole. The point's thick part (a 3x3 opening: the lines are thinner) is
+// measured alone. It goes when it touches the hair, lies wholly within
+// `near` (the wedge reach), holds no thick feature, lies in dark `pieces`
+// that are `mixed` (pieces of the hair's and outline's colours only are
+// left to the rules for whole pieces), holds a pixel of the hair's colour
+// (`fill`), is at least a third of the outline's colour (`line`: a point is
+// drawn by its two converging outlines; on lucy 44 % of her largest point,
+// the rest black fill), has at least kMinPoint pixels (a 3x3 block), and
+// points away from the hair: no wider on average than kPointWidth px over
+// its reach (lucy's points: 3.2-6.9). A lash or a brow of the hair's colour
+// under the bangs runs along them: far wider than that over its few pixels
+// of reach (lucy's lashes: ~40 px long, 4 px thick, within ~10 px of the
+// hair).
+cv::Mat points_over_lines(const cv::Mat& own, const cv::Mat& hair, const cv::Mat& near,
+                          const cv::Mat& features, const cv::Mat& pieces,
+                          const std::vector<std::uint8_t>& mixed, const cv::Mat& fill_coloured,
+                          const cv::Mat& line) {
+  constexpr double kPointWidth = 8.0;
+  constexpr int kMinPoint = 9;
+  // Touching: within this many px of the hair (lucy's largest point's thick
+  // part starts 2.9 px from it; its root is thinner than the opening).
+  constexpr float kTouch = 3.0f;
+  cv::Mat thick, parts;
+  cv::morphologyEx(own, thick, cv::MORPH_OPEN,
+                   cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3)));
+  cv::Mat points(own.size(), CV_8U, cv::Scalar(0));
+  const int n = cv::connectedComponents(thick, parts, 8, CV_32S);
+  if (n <= 1) return points;
+  // Distance to the hair, only over the thick pixels' box, widened so
+  // that hair beyond its edge is seen (the reach wanted is within `near`).
+  constexpr int kMargin = 32;
+  const cv::Rect inner = cv::boundingRect(thick);
+  const cv::Rect box(inner.x - kMargin, inner.y - kMargin, inner.width + 2 * kMargin,
+                     inner.height + 2 * kMargin);
+  const cv::Rect seen = box & cv::Rect(0, 0, own.cols, own.rows);
+  cv::Mat reach;
+  cv::distanceTransform(hair(seen) == 0, reach, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  const auto m = static_cast<std::size_t>(n);
+  std::vector<std::uint8_t> ok(m, 1), fill(m, 0);
+  std::vector<int> size(m, 0), lined(m, 0);
+  std::vector<float> nearest(m, 1e9f), farthest(m, 0.f);
+  for (int y = inner.y; y < inner.y + inner.height; ++y)
+    for (int x = inner.x; x < inner.x + inner.width; ++x) {
+      const auto k = static_cast<std::size_t>(parts.at<int>(y, x));
+      if (k == 0) continue;
+      ++size[k];
+      lined[k] += line.at<std::uint8_t>(y, x) != 0;
+      if (!near.at<std::uint8_t>(y, x) || features.at<std::uint8_t>(y, x) ||
+          !mixed[static_cast<std::size_t>(pieces.at<int>(y, x))])
+        ok[k] = 0;
+      fill[k] |= fill_coloured.at<std::uint8_t>(y, x) != 0;
+      const float d = reach.at<float>(y - seen.y, x - seen.x);
+      nearest[k] = std::min(nearest[k], d);
+      farthest[k] = std::max(farthest[k], d);
+    }
+  std::vector<std::uint8_t> goes(m, 0);
+  for (std::size_t k = 1; k < m; ++k)
+    goes[k] = ok[k] && fill[k] && 3 * lined[k] >= size[k] && size[k] >= kMinPoint &&
+              nearest[k] <= kTouch && size[k] <= kPointWidth * farthest[k];
+  for (int y = inner.y; y < inner.y + inner.height; ++y)
+    for (int x = inner.x; x < inner.x + inner.width; ++x)
+      if (goes[static_cast<std::size_t>(parts.at<int>(y, x))]) points.at<std::uint8_t>(y, x) = 255;
+  return points;
+}
+
 }  // namespace
 
 BackgroundHole background_hole(const Context& ctx, const Face& face) {
@@ -769,7 +838,7 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
   // drawn in the outline's colour (sylvie's chin), not a point's two
   // converging lines.
   constexpr int kMinWedge = 20;
-  cv::Mat wedge_parts;
+  cv::Mat wedge_parts, points;
   std::vector<std::uint8_t> wedge_goes;
   if (!head.mask.empty()) {
     const cv::Mat own_colour = dark & (outline_coloured | hair_coloured) & (head.mask != 0);
@@ -796,6 +865,8 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
     // hair's (sylvie's hair beside her chin) keeps the old rules.
     for (std::size_t k = 0; k < fill.size(); ++k)
       wedge_goes[k] &= fill[k] && 2 * line[k] >= size[k] && size[k] >= kMinWedge;
+    points = points_over_lines(own_colour, hair, near_wedge, features, pieces, mixed, hair_coloured,
+                               outline_coloured);
   }
   const cv::Mat spurs = hanging_spurs(dark, line_coloured | hair_coloured, near, head.mask);
   cv::Mat holes(h, w, CV_8U, cv::Scalar(0));
@@ -825,7 +896,8 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
     cv::Mat gone(h, w, CV_8U, cv::Scalar(0));
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
-        if (wedge_goes[static_cast<std::size_t>(wedge_parts.at<int>(y, x))])
+        if (wedge_goes[static_cast<std::size_t>(wedge_parts.at<int>(y, x))] ||
+            points.at<std::uint8_t>(y, x))
           gone.at<std::uint8_t>(y, x) = 255;
     cv::dilate(gone, gone, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
     holes |= gone & ~features;

@@ -609,6 +609,75 @@ TEST(HeadBehindHair, LashesOfTheHairsColourUnderTheBangsStay) {
   EXPECT_GE(iris_kept, iris * 95 / 100) << "the irises are cut";
 }
 
+// Session 19: a lock's point over a thin brow of its own colour. Black hair
+// (its outline's colour too); a point 12 px wide at its root, tapering over
+// 26 px, hangs from the cap; a 2 px brow of the same black crosses it 12 px
+// below the cap and runs down to an eye of another colour (a red iris)
+// 33 px below the cap. Joined through the brow, the point's black pixels
+// reach beyond the wedge reach (24 px), so the wedge rule kept it whole (on
+// lucy, her black fringe points stayed on her forehead, over her brows):
+// main leaves the point dark; now its thick part goes, the brow and the eye
+// stay.
+TEST(HeadBehindHair, LockPointOverABrowOfItsColourGoesTheBrowStays) {
+  constexpr Rgba kBlackHair{24, 20, 18, 255};
+  constexpr double kTop = features::kCapBottom;
+  const double kBrowA[2] = {head::kCx + 12, kTop + 12}, kBrowB[2] = {head::kCx - 40, kTop + 33};
+  const double kEye[2] = {head::kCx - 44, kTop + 40};
+  auto in_point = [&](double x, double y) {
+    const double t = (y - (kTop - 3)) / 26.0;
+    return t >= 0 && t < 1 && std::abs(x - head::kCx) < 6.0 * (1 - t);
+  };
+  // Distance from the brow's centre line.
+  auto brow_distance = [&](double x, double y) {
+    const double dx = kBrowB[0] - kBrowA[0], dy = kBrowB[1] - kBrowA[1];
+    const double t = std::clamp(((x - kBrowA[0]) * dx + (y - kBrowA[1]) * dy) / (dx * dx + dy * dy),
+                                0.0, 1.0);
+    return std::hypot(x - (kBrowA[0] + t * dx), y - (kBrowA[1] + t * dy));
+  };
+  auto in_eye = [&](double x, double y) { return std::hypot(x - kEye[0], y - kEye[1]) < 7; };
+  test::Drawing d{Image(320, 250, head::kSheet), LabelMap(320, 250, 0), {}};
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const double r = std::hypot(x + 0.5 - head::kCx, y + 0.5 - head::kCy);
+      if (r < head::kR) d.image.at(x, y) = r > head::kR - 3 ? kInk : kSkin;
+    }
+  test::paint(
+      d,
+      [&](double x, double y) {
+        return std::hypot(x - head::kCx, y - (head::kCy - 8)) < 84 && y < kTop;
+      },
+      kBlackHair, 1);
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      if (d.regions.at(x, y) != 0) continue;
+      if (in_eye(px, py)) d.image.at(x, y) = features::kRedIris;
+      if (in_point(px, py) || brow_distance(px, py) < 1.0) d.image.at(x, y) = kBlackHair;
+    }
+  const Result r = head::run(d);
+  int point = 0, point_dark = 0, brow = 0, brow_dark = 0, eye = 0, eye_kept = 0;
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      if (d.regions.at(x, y) != 0) continue;
+      const bool dark = r.background.at(x, y).a == 255 && luma(r.background.at(x, y)) < 100;
+      // The point's part off the brow and at least 3 px wide, below the
+      // rows the outline assignment gives the cap.
+      if (in_point(px, py) && py >= kTop + 3 && brow_distance(px, py) > 3 &&
+          in_point(px - 1.5, py) && in_point(px + 1.5, py))
+        ++point, point_dark += dark;
+      // The brow away from the point (its ends may be cut by the point's rim).
+      if (brow_distance(px, py) < 1.0 && std::abs(px - head::kCx) > 10 && !in_eye(px, py))
+        ++brow, brow_dark += dark;
+      if (in_eye(px, py)) ++eye, eye_kept += r.background.at(x, y) == d.image.at(x, y);
+    }
+  ASSERT_GT(point, 30);
+  ASSERT_GT(brow, 60);
+  EXPECT_LE(point_dark, point / 10) << "the lock's point is left over the brow";
+  EXPECT_GE(brow_dark, brow * 9 / 10) << "the brow went with the point";
+  EXPECT_GE(eye_kept, eye * 9 / 10);
+}
+
 // Two white specks (12×7) the segmentation left inside the cap, label 0: one
 // over the skull, one over the sheet beside the face. They lie on the hair
 // and go with it (before, on lucy, headband fragments floated on the bald
