@@ -495,6 +495,46 @@ cv::Mat points_over_lines(const cv::Mat& own, const cv::Mat& hair, const cv::Mat
   return points;
 }
 
+// Skin seen in thin slivers between the bangs' locks, darker than the
+// head's skin: the locks' cast shadow (lucy: 3-5 px wide, 20 px tall, pink
+// against the filled forehead's light skin, which the head's fill takes from
+// the face's median). Known pixels on the head, not dark, that a
+// kSliver-wide disc does not fit into and lie beside the hole, within
+// kShadeColour of the skin's median colour and darker than it: they go with
+// the hair, and the head's fill gives them the skin of the rest of the
+// forehead (at rest the strand beside them carries them, carry_rims). Lines
+// stay (dark), and so do the eyes' whites (lighter) and irises (another
+// colour). kShadeColour is wide enough for the rim between a black lock and
+// the skin (lucy's sliver kept a pink-grey line at 80).
+cv::Mat shaded_slivers(const Image& image, const cv::Mat& holes, const cv::Mat& dark,
+                       const Head& head) {
+  constexpr int kSliver = 7;
+  constexpr double kShadeColour = 120.0;
+  constexpr int kShade = 8;  // luma below the skin's
+  cv::Mat slivers(holes.size(), CV_8U, cv::Scalar(0));
+  // Only over the head's box (with room for the structuring elements).
+  const cv::Rect inner = cv::boundingRect(head.mask);
+  const cv::Rect box = cv::Rect(inner.x - kSliver, inner.y - kSliver, inner.width + 2 * kSliver,
+                                inner.height + 2 * kSliver) &
+                       cv::Rect(0, 0, holes.cols, holes.rows);
+  if (box.empty()) return slivers;
+  cv::Mat known = (head.mask(box) != 0) & (holes(box) == 0) & (dark(box) == 0), wide, beside;
+  cv::morphologyEx(known, wide, cv::MORPH_OPEN,
+                   cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(kSliver, kSliver)));
+  cv::dilate(holes(box), beside, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(7, 7)));
+  cv::Mat thin = known & ~wide & beside;
+  const int skin_luma = luma(head.colour);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) {
+      if (!thin.at<std::uint8_t>(y, x)) continue;
+      const Rgba& c = image.at(box.x + x, box.y + y);
+      if (c.a >= kOpaque && colour_distance(c, head.colour) <= kShadeColour &&
+          luma(c) < skin_luma - kShade)
+        slivers.at<std::uint8_t>(box.y + y, box.x + x) = 255;
+    }
+  return slivers;
+}
+
 }  // namespace
 
 BackgroundHole background_hole(const Context& ctx, const Face& face) {
@@ -511,7 +551,7 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
           image.at(x, y).a >= kOpaque && luma(image.at(x, y)) < o.dark_luma ? 255 : 0;
   // The face's eyes and brows are no hair even where they are thick and
   // touch the bangs: inside the head nothing is taken for hair but regions.
-  const Head head = find_head(ctx, face, o.background.inpaint);
+  Head head = find_head(ctx, face, o.background.inpaint);
   // Hair the segmentation left along the hair's edge (dark locks, the
   // shaded rim of black hair) goes with it: dark areas of a hair region's
   // colour, at least 5 px thick, that touch the hair. Lines are thinner and
@@ -903,6 +943,12 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
     holes |= gone & ~features;
   }
   if (!features.empty()) holes &= ~features;
+  if (!head.mask.empty()) {
+    const cv::Mat slivers = shaded_slivers(image, holes, dark, head);
+    holes |= slivers;
+    // Nor are they the skin the head's fill copies (each copied itself).
+    if (!head.skin.empty()) head.skin.setTo(0, slivers);
+  }
   take_islands(holes);
   // After the islands: a spur gone leaves what it bordered known (a collar's
   // stripes along wikipe-tan's twin tail were enclosed by the hole and went).

@@ -678,6 +678,57 @@ TEST(HeadBehindHair, LockPointOverABrowOfItsColourGoesTheBrowStays) {
   EXPECT_GE(eye_kept, eye * 9 / 10);
 }
 
+// Session 19: skin seen in a thin gap between two locks of the bangs, in
+// their cast shadow. Two locks (16 px wide, 25 px long) hang from the cap
+// 6 px apart; the skin between them is drawn darker (the shadow), and so
+// is a band 8 px tall beside them under the cap. Left as drawn, the gap stood as a
+// dark streak on the filled forehead (lucy: a pink spike 20 px tall between
+// her fringe's locks): main keeps all of it; now the head's fill gives it
+// the forehead's skin. The band is no sliver and stays drawn.
+TEST(HeadBehindHair, ShadedSkinBetweenLocksGoesABroadShadowStays) {
+  constexpr Rgba kShadow{235, 180, 165, 255};
+  constexpr double kTop = features::kCapBottom, kEnd = kTop + 20;
+  auto in_lock = [&](double x, double y) {
+    return y >= kTop - 5 && y < kEnd && std::abs(x - head::kCx) >= 3 &&
+           std::abs(x - head::kCx) < 19;
+  };
+  auto in_gap = [&](double x, double y) {
+    return y >= kTop && y < kEnd && std::abs(x - head::kCx) < 3;
+  };
+  auto in_band = [&](double x, double y) {
+    return y >= kTop && y < kTop + 8 && x - head::kCx >= 25 && x - head::kCx < 50;
+  };
+  test::Drawing d{Image(320, 250, head::kSheet), LabelMap(320, 250, 0), {}};
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const double r = std::hypot(x + 0.5 - head::kCx, y + 0.5 - head::kCy);
+      if (r < head::kR) d.image.at(x, y) = r > head::kR - 3 ? kInk : kSkin;
+      if (in_gap(x + 0.5, y + 0.5) || in_band(x + 0.5, y + 0.5)) d.image.at(x, y) = kShadow;
+    }
+  test::paint(
+      d,
+      [&](double x, double y) {
+        return (std::hypot(x - head::kCx, y - (head::kCy - 8)) < 84 && y < kTop) || in_lock(x, y);
+      },
+      head::kCapHair, 1);
+  const Result r = head::run(d);
+  int gap = 0, gap_skin = 0, band = 0, band_kept = 0;
+  for (int y = 0; y < 250; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      if (d.regions.at(x, y) != 0) continue;
+      if (in_gap(px, py) && d.image.at(x, y) == kShadow)
+        ++gap, gap_skin += colour_distance(r.background.at(x, y), kSkin) <= 12;
+      // The band away from its ends and the rows next to the cap.
+      if (in_band(px, py) && py >= kTop + 2 && px - head::kCx >= 27 && px - head::kCx < 48)
+        ++band, band_kept += r.background.at(x, y) == d.image.at(x, y);
+    }
+  ASSERT_GT(gap, 40);
+  ASSERT_GT(band, 100);
+  EXPECT_GE(gap_skin, gap * 9 / 10) << "the shaded skin between the locks is left";
+  EXPECT_GE(band_kept, band * 95 / 100) << "the broad shadow went";
+}
+
 // Two white specks (12×7) the segmentation left inside the cap, label 0: one
 // over the skull, one over the sheet beside the face. They lie on the hair
 // and go with it (before, on lucy, headband fragments floated on the bald
