@@ -630,8 +630,8 @@ TEST(HeadBehindHair, LockPointOverABrowOfItsColourGoesTheBrowStays) {
   // Distance from the brow's centre line.
   auto brow_distance = [&](double x, double y) {
     const double dx = kBrowB[0] - kBrowA[0], dy = kBrowB[1] - kBrowA[1];
-    const double t = std::clamp(((x - kBrowA[0]) * dx + (y - kBrowA[1]) * dy) / (dx * dx + dy * dy),
-                                0.0, 1.0);
+    const double t =
+        std::clamp(((x - kBrowA[0]) * dx + (y - kBrowA[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
     return std::hypot(x - (kBrowA[0] + t * dx), y - (kBrowA[1] + t * dy));
   };
   auto in_eye = [&](double x, double y) { return std::hypot(x - kEye[0], y - kEye[1]) < 7; };
@@ -680,11 +680,12 @@ TEST(HeadBehindHair, LockPointOverABrowOfItsColourGoesTheBrowStays) {
 
 // Session 19: skin seen in a thin gap between two locks of the bangs, in
 // their cast shadow. Two locks (16 px wide, 25 px long) hang from the cap
-// 6 px apart; the skin between them is drawn darker (the shadow), and so
-// is a band 8 px tall beside them under the cap. Left as drawn, the gap stood as a
-// dark streak on the filled forehead (lucy: a pink spike 20 px tall between
-// her fringe's locks): main keeps all of it; now the head's fill gives it
-// the forehead's skin. The band is no sliver and stays drawn.
+// 6 px apart; the skin between them is drawn darker (the shadow), and so is
+// a band 8 px tall beside them under the cap. Left as drawn, the gap stood
+// as a dark streak on the filled forehead (lucy: a pink spike 20 px tall
+// between her fringe's locks): main left 14 of its 108 pixels skin-coloured;
+// now the head's fill gives it the forehead's skin. The band is no sliver
+// and stays drawn.
 TEST(HeadBehindHair, ShadedSkinBetweenLocksGoesABroadShadowStays) {
   constexpr Rgba kShadow{235, 180, 165, 255};
   constexpr double kTop = features::kCapBottom, kEnd = kTop + 20;
