@@ -201,6 +201,41 @@ void tally_couplings(const hair25d::AnnotatedCase& c, const layering::Result& r,
   }
 }
 
+// For choosing the rules that make a pair "equal": per judged pair with an
+// open (non-occluding) boundary or predicted equal, length-weighted means
+// over its open and its occluding boundaries.
+void print_equal_pairs(const hair25d::AnnotatedCase& c, const layering::Result& r,
+                       const layering::CaseScore& s, const layering::Options& o) {
+  for (const layering::PairOutcome& out : s.outcomes) {
+    double total = 0, open = 0, open_same = 0, open_order = 0, occ = 0, occ_same = 0,
+           occ_order = 0;
+    for (const layering::BoundaryReport& b : r.boundaries) {
+      if (!((b.left == out.a && b.right == out.b) || (b.left == out.b && b.right == out.a)))
+        continue;
+      const double sgn = b.left == out.a ? 1 : -1;  // toward a above
+      total += b.length;
+      if (b.occluding) {
+        occ += b.length;
+        occ_same += b.equal * b.length;
+        occ_order += sgn * (o.junction_patches ? b.patch_log_odds : b.learned) * b.length;
+      } else {
+        open += b.length;
+        open_same += b.equal * b.length;
+        open_order += sgn * b.learned * b.length;
+      }
+    }
+    const bool equal = out.predicted && *out.predicted == Relation::kEqual;
+    if (open == 0 && !equal) continue;
+    std::printf(
+        "EQ %s %d %d truth %s predicted %s total %.0f open %.0f open_same %+.2f open_order %+.2f "
+        "occ %.0f occ_same %+.2f occ_order %+.2f\n",
+        c.name.c_str(), out.a, out.b, hair25d::to_string(out.truth),
+        out.predicted ? hair25d::to_string(*out.predicted) : "none", total, open,
+        open > 0 ? open_same / open : 0.0, open > 0 ? open_order / open : 0.0, occ,
+        occ > 0 ? occ_same / occ : 0.0, occ > 0 ? occ_order / occ : 0.0);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -234,6 +269,11 @@ int main(int argc, char** argv) {
   app.add_flag("--couplings", couplings, "tally Eq. (2)'s couplings against the truth");
   app.add_flag("--couplings-verbose", couplings_verbose,
                "... and list the states they moved off their unary");
+  bool equal_pairs = false;
+  app.add_flag("--equal-pairs", equal_pairs,
+               "a line per judged pair with an open boundary or predicted equal: its open and "
+               "occluding boundaries' mean same-depth and order log-odds (a above b), the truth");
+  app.add_option("--open-order-log-odds", options.open_order_log_odds);
   CLI11_PARSE(app, argc, argv);
   options.coupling = coupling == "all"    ? layering::Coupling::kAllPairs
                      : coupling == "none" ? layering::Coupling::kNone
@@ -255,6 +295,7 @@ int main(int argc, char** argv) {
                   r.line_threshold, s.correct, s.pairs);
     if (couplings || couplings_verbose)
       tally_couplings(c, r, options, &tally, couplings_verbose, hair_only);
+    if (equal_pairs) print_equal_pairs(c, r, s, options);
     if (quiet) continue;
     std::map<int, int> strand;
     for (const auto& reg : c.region_list) strand[reg.id] = reg.strand;

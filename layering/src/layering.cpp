@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -75,6 +76,9 @@ bool Options::is_valid(std::string* error) const {
     return fail("fit_reach_min = " + num(fit_reach_min) + "; must be finite and > 0");
   if (!std::isfinite(equal_log_odds))
     return fail("equal_log_odds = " + num(equal_log_odds) + "; must be finite");
+  if (std::isnan(open_order_log_odds) || open_order_log_odds == std::numeric_limits<double>::infinity())
+    return fail("open_order_log_odds = " + num(open_order_log_odds) +
+                "; must be finite, or -infinity (off)");
   if (!(equal_fraction >= 0 && equal_fraction <= 1))
     return fail("equal_fraction = " + num(equal_fraction) + "; must be in [0, 1]");
   for (const RegionRelation& r : fixed)
@@ -755,6 +759,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   report(progress, "layering", 0.8, "relations");
   struct PairAccumulator {
     double total = 0, occluding = 0, score = 0, same = 0;
+    // Over the open (non-occluding) boundaries: length, length-weighted
+    // same-depth log-odds and order log-odds (toward the smaller id above).
+    double open = 0, open_same = 0, open_order = 0;
     int longest = -1;
   };
   std::map<std::pair<int, int>, PairAccumulator> pairs;
@@ -765,6 +772,11 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     const BoundaryReport& rep = out.boundaries[i];
     acc.total += rep.length;
     if (acc.longest < 0 || rep.length > bs[acc.longest].length()) acc.longest = i;
+    if (!rep.occluding) {
+      acc.open += rep.length;
+      acc.open_same += rep.equal * rep.length;
+      acc.open_order += (b.left < b.right ? 1 : -1) * rep.learned * rep.length;
+    }
     if (state_of[i] < 0) continue;
     acc.occluding += rep.length;
     acc.same += rep.equal * rep.length;
@@ -795,7 +807,17 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     r.b = k.second;
     const bool same_depth = options.learned_equal && options.metric == Metric::kLearned &&
                             acc.occluding > 0 && acc.same > options.equal_log_odds * acc.occluding;
-    if (acc.occluding < options.equal_fraction * acc.total || acc.occluding == 0 || same_depth) {
+    const bool open_pair = acc.occluding < options.equal_fraction * acc.total || acc.occluding == 0;
+    // An open pair the same-depth model calls two depths (open_order_log_odds).
+    const bool open_ordered = open_pair && !same_depth && options.learned_equal &&
+                              options.metric == Metric::kLearned &&
+                              acc.open > 0 &&
+                              acc.open_same < options.open_order_log_odds * acc.open;
+    if (open_ordered) {
+      firm.push_back(0);
+      r.score = options.learned_scale * acc.open_order / acc.open;
+      r.relation = relation_of_sign(r.score);
+    } else if (open_pair || same_depth) {
       r.relation = Relation::kEqual;
       r.score = 0.0;
       firm.push_back(same_depth && use_patches && acc.same > kFirmEqualLogOdds * acc.occluding);

@@ -1,5 +1,5 @@
 // hair25d eval-layering CASES_DIR [--json REPORT.json] [--from-strokes] [--overlays DIR]
-// [--with-joins]:
+// [--with-joins] [--open-order-log-odds V]:
 // layering accuracy over annotated cases, printed like the paper's Table 1.
 #include <cstdio>
 #include <filesystem>
@@ -22,6 +22,7 @@ struct EvalLayeringArgs {
   std::string overlays_dir;
   bool from_strokes = false;
   bool with_joins = false;
+  double open_order_log_odds = layering::Options{}.open_order_log_odds;
 };
 
 // The mark write_folder_atomically leaves in the overlays folder.
@@ -49,6 +50,11 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
   cmd->add_flag("--with-joins", args->with_joins,
                 "Score the relations revised by completion's strand joins (the pieces of one "
                 "strand at one depth, weak relations to a strand's pieces made to agree)");
+  cmd->add_option("--open-order-log-odds", args->open_order_log_odds,
+                  "Order an open pair (equal only for want of a drawn line) whose open boundaries' "
+                  "mean same-depth log-odds is below this (layering::Options::open_order_log_odds; "
+                  "-inf: never)")
+      ->capture_default_str();
   cmd->callback([args, json, overlays, &common] {
     // Given but empty (a script's unset variable) is not "not given": the
     // report or the overlays would silently go nowhere.
@@ -70,6 +76,7 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
     pipeline::LayeringEvalOptions options;
     options.from_strokes = args->from_strokes;
     options.with_joins = args->with_joins;
+    options.layering.open_order_log_odds = args->open_order_log_odds;
     const std::vector<std::filesystem::path> cases = find_annotated_cases(args->cases_dir);
     const bool json_to_stdout = args->json_path == "-";
     if (!args->json_path.empty() && !json_to_stdout) {

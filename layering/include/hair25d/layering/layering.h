@@ -65,6 +65,15 @@ struct Options {
   bool learned_equal = true;
   // ... when that length-weighted mean log-odds exceeds this.
   double equal_log_odds = 0.0;
+  // A pair that would be "equal" only because its common boundary is open
+  // (under equal_fraction occluding, not the same-depth model's call) is
+  // ordered instead when the same-depth model (6c) is sure it is no cusp:
+  // when its open boundaries' length-weighted mean same-depth log-odds is
+  // below this. Their mean order log-odds (6b) then picks which region is
+  // above. A sliver of a strand over another, whose outline the threshold
+  // missed, reads about -11 (case1's region 17).
+  // -infinity: never (every open pair stays equal, as before session 19).
+  double open_order_log_odds = -8.0;
   // With the learned metric, a second stage weighs each boundary's log-odds
   // with the region context (context_metric in learned_metric.h): how each
   // region stands against its other neighbours.
