@@ -207,8 +207,7 @@ void tally_couplings(const hair25d::AnnotatedCase& c, const layering::Result& r,
 void print_equal_pairs(const hair25d::AnnotatedCase& c, const layering::Result& r,
                        const layering::CaseScore& s, const layering::Options& o) {
   for (const layering::PairOutcome& out : s.outcomes) {
-    double total = 0, open = 0, open_same = 0, open_order = 0, occ = 0, occ_same = 0,
-           occ_order = 0;
+    double total = 0, open = 0, open_same = 0, open_order = 0, occ = 0, occ_same = 0, occ_order = 0;
     for (const layering::BoundaryReport& b : r.boundaries) {
       if (!((b.left == out.a && b.right == out.b) || (b.left == out.b && b.right == out.a)))
         continue;

@@ -76,7 +76,8 @@ bool Options::is_valid(std::string* error) const {
     return fail("fit_reach_min = " + num(fit_reach_min) + "; must be finite and > 0");
   if (!std::isfinite(equal_log_odds))
     return fail("equal_log_odds = " + num(equal_log_odds) + "; must be finite");
-  if (std::isnan(open_order_log_odds) || open_order_log_odds == std::numeric_limits<double>::infinity())
+  if (std::isnan(open_order_log_odds) ||
+      open_order_log_odds == std::numeric_limits<double>::infinity())
     return fail("open_order_log_odds = " + num(open_order_log_odds) +
                 "; must be finite, or -infinity (off)");
   if (!(equal_fraction >= 0 && equal_fraction <= 1))
@@ -810,8 +811,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     const bool open_pair = acc.occluding < options.equal_fraction * acc.total || acc.occluding == 0;
     // An open pair the same-depth model calls two depths (open_order_log_odds).
     const bool open_ordered = open_pair && !same_depth && options.learned_equal &&
-                              options.metric == Metric::kLearned &&
-                              acc.open > 0 &&
+                              options.metric == Metric::kLearned && acc.open > 0 &&
                               acc.open_same < options.open_order_log_odds * acc.open;
     if (open_ordered) {
       firm.push_back(0);

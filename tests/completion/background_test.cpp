@@ -384,13 +384,19 @@ constexpr Rgba kCapHair{70, 45, 35, 255};
 
 bool in_cap(double x, double y) { return std::hypot(x - kCx, y - (kCy - 8)) < 84 && y < kCy - 18; }
 
-test::Drawing drawing() {
+// A bald head on a clear sheet: skin inside a 3 px ink outline.
+test::Drawing bald() {
   test::Drawing d{Image(320, 250, kSheet), LabelMap(320, 250, 0), {}};
   for (int y = 0; y < 250; ++y)
     for (int x = 0; x < 320; ++x) {
       const double r = std::hypot(x + 0.5 - kCx, y + 0.5 - kCy);
       if (r < kR) d.image.at(x, y) = r > kR - 3 ? kInk : kSkin;
     }
+  return d;
+}
+
+test::Drawing drawing() {
+  test::Drawing d = bald();
   for (const double ex : {kCx - 24, kCx + 24})
     for (int y = 0; y < 250; ++y)
       for (int x = 0; x < 320; ++x)
@@ -507,12 +513,7 @@ bool in_tip(double x, double y) {
 }
 
 test::Drawing drawing(bool tip) {
-  test::Drawing d{Image(320, 250, head::kSheet), LabelMap(320, 250, 0), {}};
-  for (int y = 0; y < 250; ++y)
-    for (int x = 0; x < 320; ++x) {
-      const double r = std::hypot(x + 0.5 - head::kCx, y + 0.5 - head::kCy);
-      if (r < head::kR) d.image.at(x, y) = r > head::kR - 3 ? kInk : kSkin;
-    }
+  test::Drawing d = head::bald();
   test::paint(
       d,
       [](double x, double y) {
@@ -635,12 +636,7 @@ TEST(HeadBehindHair, LockPointOverABrowOfItsColourGoesTheBrowStays) {
     return std::hypot(x - (kBrowA[0] + t * dx), y - (kBrowA[1] + t * dy));
   };
   auto in_eye = [&](double x, double y) { return std::hypot(x - kEye[0], y - kEye[1]) < 7; };
-  test::Drawing d{Image(320, 250, head::kSheet), LabelMap(320, 250, 0), {}};
-  for (int y = 0; y < 250; ++y)
-    for (int x = 0; x < 320; ++x) {
-      const double r = std::hypot(x + 0.5 - head::kCx, y + 0.5 - head::kCy);
-      if (r < head::kR) d.image.at(x, y) = r > head::kR - 3 ? kInk : kSkin;
-    }
+  test::Drawing d = head::bald();
   test::paint(
       d,
       [&](double x, double y) {
@@ -699,13 +695,10 @@ TEST(HeadBehindHair, ShadedSkinBetweenLocksGoesABroadShadowStays) {
   auto in_band = [&](double x, double y) {
     return y >= kTop && y < kTop + 8 && x - head::kCx >= 25 && x - head::kCx < 50;
   };
-  test::Drawing d{Image(320, 250, head::kSheet), LabelMap(320, 250, 0), {}};
+  test::Drawing d = head::bald();
   for (int y = 0; y < 250; ++y)
-    for (int x = 0; x < 320; ++x) {
-      const double r = std::hypot(x + 0.5 - head::kCx, y + 0.5 - head::kCy);
-      if (r < head::kR) d.image.at(x, y) = r > head::kR - 3 ? kInk : kSkin;
+    for (int x = 0; x < 320; ++x)
       if (in_gap(x + 0.5, y + 0.5) || in_band(x + 0.5, y + 0.5)) d.image.at(x, y) = kShadow;
-    }
   test::paint(
       d,
       [&](double x, double y) {

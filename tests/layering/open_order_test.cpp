@@ -18,8 +18,7 @@ namespace {
 using test::relation_of;
 
 AnnotatedCase case1() {
-  return read_annotated_case(std::filesystem::path(HAIR25D_TEST_DATA_DIR) / "annotated" /
-                             "case1");
+  return read_annotated_case(std::filesystem::path(HAIR25D_TEST_DATA_DIR) / "annotated" / "case1");
 }
 
 // The mean same-depth log-odds over a pair's open hair boundaries.
@@ -60,8 +59,8 @@ TEST(OpenOrder, MinusInfinityKeepsOpenPairsEqual) {
 }
 
 TEST(OpenOrder, RejectsNanAndPlusInfinity) {
-  for (double bad : {std::numeric_limits<double>::quiet_NaN(),
-                     std::numeric_limits<double>::infinity()}) {
+  for (double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     Options o;
     o.open_order_log_odds = bad;
     std::string why;
