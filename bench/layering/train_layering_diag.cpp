@@ -272,7 +272,8 @@ int main(int argc, char** argv) {
   app.add_flag("--equal-pairs", equal_pairs,
                "a line per judged pair with an open boundary or predicted equal: its open and "
                "occluding boundaries' mean same-depth and order log-odds (a above b), the truth");
-  app.add_option("--open-order-log-odds", options.open_order_log_odds);
+  app.add_option("--open-order-log-odds", options.open_order_log_odds,
+                 "layering::Options::open_order_log_odds (-inf: open pairs stay equal)");
   CLI11_PARSE(app, argc, argv);
   options.coupling = coupling == "all"    ? layering::Coupling::kAllPairs
                      : coupling == "none" ? layering::Coupling::kNone

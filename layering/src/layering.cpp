@@ -802,16 +802,17 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
   // ordered through others.
   constexpr double kFirmEqualLogOdds = 2.0;
   std::vector<char> firm;
+  // The same-depth model (6c) speaks only with the learned metric.
+  const bool learned_same = options.learned_equal && options.metric == Metric::kLearned;
   for (const auto& [k, acc] : pairs) {
     RegionRelation r;
     r.a = k.first;
     r.b = k.second;
-    const bool same_depth = options.learned_equal && options.metric == Metric::kLearned &&
-                            acc.occluding > 0 && acc.same > options.equal_log_odds * acc.occluding;
+    const bool same_depth =
+        learned_same && acc.occluding > 0 && acc.same > options.equal_log_odds * acc.occluding;
     const bool open_pair = acc.occluding < options.equal_fraction * acc.total || acc.occluding == 0;
     // An open pair the same-depth model calls two depths (open_order_log_odds).
-    const bool open_ordered = open_pair && !same_depth && options.learned_equal &&
-                              options.metric == Metric::kLearned && acc.open > 0 &&
+    const bool open_ordered = open_pair && !same_depth && learned_same && acc.open > 0 &&
                               acc.open_same < options.open_order_log_odds * acc.open;
     if (open_ordered) {
       firm.push_back(0);

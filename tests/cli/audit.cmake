@@ -18,6 +18,9 @@ empty_value_test(eval_layering_overlays_empty "^hair25d: --overlays \"\": give t
   -q eval-layering ${annotated} --overlays \"\")
 hair25d_cli_test(eval_layering_cases_missing 1 STDERR "^hair25d: no_such_cases: no such folder"
   ARGS -q eval-layering no_such_cases)
+hair25d_cli_test(eval_layering_open_order_nan 1
+  STDERR "^hair25d: --open-order-log-odds: layering::Options::open_order_log_odds = nan; must be finite, or -infinity \\(off\\)$"
+  ARGS -q eval-layering ${annotated} --open-order-log-odds nan)
 hair25d_cli_test(eval_layering_cases_is_a_file 1 STDERR "image.png: is a file; CASES_DIR must be a folder"
   ARGS -q eval-layering ${case5}/image.png)
 empty_value_test(segment_empty_strokes_value

@@ -77,6 +77,10 @@ void add_eval_layering_command(CLI::App& app, const CommonOptions& common) {
     options.from_strokes = args->from_strokes;
     options.with_joins = args->with_joins;
     options.layering.open_order_log_odds = args->open_order_log_odds;
+    // Checked once here: each case would otherwise fail alone with the same
+    // message, and the table of zeros would exit 0.
+    if (std::string why; !options.layering.is_valid(&why))
+      throw Error("--open-order-log-odds: " + why);
     const std::vector<std::filesystem::path> cases = find_annotated_cases(args->cases_dir);
     const bool json_to_stdout = args->json_path == "-";
     if (!args->json_path.empty() && !json_to_stdout) {
