@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "background_internal.h"
+#include "front_outlines.h"
 #include "hair25d/core/error.h"
 #include "head_fill.h"
 #include "inpaint_internal.h"
@@ -552,6 +553,11 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
   // The face's eyes and brows are no hair even where they are thick and
   // touch the bangs: inside the head nothing is taken for hair but regions.
   Head head = find_head(ctx, face, o.background.inpaint);
+  // The outlines of shapes lying on the hair (a clip over a twin tail, a
+  // shirt over the back hair) are theirs, not the hair's, though the outline
+  // assignment gave them to it: left out of the hair and of its growth.
+  const cv::Mat front = front_outlines(image, *ctx.original, ctx.labels, dark, head.mask);
+  hair &= ~front;
   // Hair the segmentation left along the hair's edge (dark locks, the
   // shaded rim of black hair) goes with it: dark areas of a hair region's
   // colour, at least 5 px thick, that touch the hair. Lines are thinner and
@@ -738,6 +744,7 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
     // her irises' tops, lucy's lash and glasses' frame went with the bangs).
     reachable &= ~face_lines(dark & ~hair, hair_coloured, hair, head.mask, 2 * o.outline_reach);
   }
+  reachable &= ~front;
   for (int k = 0; k < 2 * o.outline_reach; ++k) {
     cv::Mat grown;
     cv::dilate(outline, grown, step);
@@ -953,6 +960,7 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
   // After the islands: a spur gone leaves what it bordered known (a collar's
   // stripes along wikipe-tan's twin tail were enclosed by the hole and went).
   holes |= spurs;
+  holes &= ~front;
   return {std::move(holes), head};
 }
 
