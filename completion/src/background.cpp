@@ -556,7 +556,8 @@ BackgroundHole background_hole(const Context& ctx, const Face& face) {
   // The outlines of shapes lying on the hair (a clip over a twin tail, a
   // shirt over the back hair) are theirs, not the hair's, though the outline
   // assignment gave them to it: left out of the hair and of its growth.
-  const cv::Mat front = front_outlines(image, *ctx.original, ctx.labels, dark, head.mask);
+  const cv::Mat front =
+      front_outlines(image, *ctx.original, ctx.labels, dark, head.mask, face.mask);
   hair &= ~front;
   // Hair the segmentation left along the hair's edge (dark locks, the
   // shaded rim of black hair) goes with it: dark areas of a hair region's

@@ -133,7 +133,7 @@ HairEnd hair_end(const HairNear& hn, int id, const cv::Point& p, const cv::Point
 }  // namespace
 
 cv::Mat front_outlines(const Image& image, const LabelMap& drawn, const LabelMap& labels,
-                       const cv::Mat& dark, const cv::Mat& head) {
+                       const cv::Mat& dark, const cv::Mat& head, const cv::Mat& face) {
   const int w = image.width(), h = image.height();
   cv::Mat keep(h, w, CV_8U, cv::Scalar(0));
   const cv::Rect hair_box = cv::boundingRect(view(labels) != 0);
@@ -154,7 +154,36 @@ cv::Mat front_outlines(const Image& image, const LabelMap& drawn, const LabelMap
   cv::Mat thick, parts;
   cv::morphologyEx(light, thick, cv::MORPH_OPEN,
                    cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
-  cv::connectedComponents(thick, parts, 8, CV_32S);
+  cv::Mat stats, centres;
+  cv::connectedComponentsWithStats(thick, parts, stats, centres, 8, CV_32S);
+  // The sheet round the figure lies behind everything: the areas reaching
+  // past the hair's top and one side, and the pieces of their colour the
+  // hair cuts off from them.
+  const int components = stats.rows;
+  std::vector<std::uint8_t> sheet(static_cast<std::size_t>(components), 0);
+  {
+    std::vector<cv::Vec3d> mean(static_cast<std::size_t>(components), cv::Vec3d(0, 0, 0));
+    for (int y = 0; y < box.height; ++y)
+      for (int x = 0; x < box.width; ++x) {
+        const int k = parts.at<int>(y, x);
+        if (k == 0) continue;
+        const Rgba& c = image.at(box.x + x, box.y + y);
+        mean[static_cast<std::size_t>(k)] += cv::Vec3d(c.r, c.g, c.b);
+      }
+    std::vector<cv::Vec3d> colours;
+    for (int k = 1; k < components; ++k) {
+      mean[static_cast<std::size_t>(k)] /= stats.at<int>(k, cv::CC_STAT_AREA);
+      const int left = stats.at<int>(k, cv::CC_STAT_LEFT);
+      const int right = left + stats.at<int>(k, cv::CC_STAT_WIDTH);
+      if (stats.at<int>(k, cv::CC_STAT_TOP) == 0 && (left == 0 || right == box.width))
+        colours.push_back(mean[static_cast<std::size_t>(k)]);
+    }
+    constexpr double kSheetColour = 12.0;
+    for (int k = 1; k < components; ++k)
+      for (const cv::Vec3d& c : colours)
+        if (cv::norm(mean[static_cast<std::size_t>(k)] - c) <= kSheetColour)
+          sheet[static_cast<std::size_t>(k)] = 1;
+  }
   std::vector<std::vector<cv::Point>> shapes;
   cv::findContours(thick.clone(), shapes, cv::RETR_LIST, cv::CHAIN_APPROX_NONE);
   cv::Mat kept(box.size(), CV_8U, cv::Scalar(0));
@@ -237,6 +266,19 @@ cv::Mat front_outlines(const Image& image, const LabelMap& drawn, const LabelMap
     auto pt = [&](int i) { return shape[static_cast<std::size_t>(wrap(i, n))]; };
     auto region_at = [&](int i) { return hn.nearest.at<int>(pt(i)); };
     const int own = parts.at<int>(shape[0]);
+    if (sheet[static_cast<std::size_t>(own)]) continue;
+    // The face: locks lying over it dent its border with their points and
+    // cross its chin, and what its border with them says was as often wrong
+    // as right on generated drawings; the head's own rules are left alone.
+    {
+      int on_face = 0;
+      for (const cv::Point& p : shape) {
+        const int x = p.x + box.x, y = p.y + box.y;
+        on_face += (!face.empty() && face.at<std::uint8_t>(y, x)) ||
+                   (!head.empty() && head.at<std::uint8_t>(y, x));
+      }
+      if (2 * on_face >= n) continue;
+    }
     int start = 0;
     while (!(faces(start) && !faces(start - 1))) ++start;
     std::vector<Run> runs;
@@ -304,15 +346,22 @@ cv::Mat front_outlines(const Image& image, const LabelMap& drawn, const LabelMap
         i = k + 1;
       }
       std::vector<std::uint8_t> under(parts_of_run.size(), 0);
+      int dents = 0;
       for (std::size_t k = 0; k + 1 < parts_of_run.size(); ++k) {
         const int j = parts_of_run[k].second;
         const double ta = turn_deg(pt(j - kArm), pt(j), pt(j + kArm));
+        dents += ta >= kSharp;
         const int before = region_at(j), after = region_at(j + 1);
         const HairEnd x = hair_end(hn, before, pt(j), pt(j - kArm));
         const HairEnd y = hair_end(hn, after, pt(j + 1), pt(j + 1 + kArm));
         if (x.turn >= 0 && x.turn <= kStraight && ta >= x.turn + kMargin) under[k] = 1;
         if (y.turn >= 0 && y.turn <= kStraight && ta >= y.turn + kMargin) under[k + 1] = 1;
       }
+      // A shape lying on the hair keeps its own smooth outline along it;
+      // one whose border bends sharply where the hair changes from one
+      // region to another is dented by locks lying on it (generated faces
+      // under their fringes: 2-4 such bends; wikipe-tan's clip: none).
+      if (dents >= 2) continue;
       // A region found over the shape at one of its changes lies over it all
       // along (a lock's tip poking into the face shows both its sides).
       std::vector<int> over;

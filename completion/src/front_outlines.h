@@ -21,10 +21,11 @@ namespace hair25d::completion::detail {
 // `image`: the drawing; `drawn`: the hair regions as given (0 on outlines);
 // `labels`: the regions with the outline pixels assigned; `dark` (CV_8U,
 // image size, non-zero on dark opaque pixels); `head` (CV_8U, image size,
-// or empty): the head, where the bangs lie on the face. Returns CV_8U, image size:
+// or empty): the head, where the bangs lie on the face; `face` (CV_8U, image
+// size, or empty): find_face's, left to the head's rules. Returns CV_8U, image size:
 // 255 on the pixels between such shapes and the hair (their outline, its
 // anti-aliased and light inner bands), which belong to the background.
 cv::Mat front_outlines(const Image& image, const LabelMap& drawn, const LabelMap& labels,
-                       const cv::Mat& dark, const cv::Mat& head);
+                       const cv::Mat& dark, const cv::Mat& head, const cv::Mat& face);
 
 }  // namespace hair25d::completion::detail
