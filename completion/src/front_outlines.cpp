@@ -24,8 +24,10 @@ constexpr int kMinRun = 12;
 // hair's outline growth crept on along the shape's line from the junction.
 constexpr int kExtend = 12;
 // At a junction the shape's outline runs on within kSmooth degrees and the
-// hair's turns by kMargin more (wikipe-tan's jaw over her twin tail: 3 and
-// 37), or the other way round where the hair lies on top.
+// hair's turns by kMargin more (wikipe-tan's clip over her twin tail: 21
+// against 99, 27 against 122), or the other way round where the hair lies
+// on top. Where no third area is seen, or where the hair changes region
+// along the border, the shape's outline bends sharply by kSharp or more.
 constexpr double kSmooth = 40.0;
 constexpr double kMargin = 30.0;
 constexpr double kSharp = 60.0;
