@@ -167,6 +167,8 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::band_high");
   app.add_option("--scorer-threshold", options.join_scorer.threshold,
                  "JoinScorerOptions::threshold");
+  app.add_option("--scorer-screentone-threshold", options.join_scorer.screentone_threshold,
+                 "JoinScorerOptions::screentone_threshold");
   app.add_option("--scorer-max-angle", options.join_scorer.max_angle_deg,
                  "JoinScorerOptions::max_angle_deg");
   app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,

@@ -105,6 +105,8 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
   if (!(band_high < 100)) return fail("band_high = " + num(band_high) + "; must be < 100");
   if (!(threshold > 0 && threshold < 1))
     return fail("threshold = " + num(threshold) + "; must be in (0, 1)");
+  if (!(screentone_threshold > 0 && screentone_threshold < 1))
+    return fail("screentone_threshold = " + num(screentone_threshold) + "; must be in (0, 1)");
   if (!(refuse_below >= 0 && refuse_below <= threshold))
     return fail("refuse_below = " + num(refuse_below) + "; must be in [0, threshold (" +
                 num(threshold) + ")]");

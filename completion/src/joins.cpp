@@ -265,10 +265,11 @@ void add_scorer_terms(RegionTones& tones, int ra, int rb, const std::map<int, in
 // band (join_scorer.h); every strand candidate is recorded when asked.
 void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                       const std::set<int>& front, const std::map<int, int>& edge_count,
-                      const std::vector<std::optional<JoinTerms>>& terms_of,
+                      const std::vector<std::optional<JoinTerms>>& terms_of, bool screentone,
                       std::vector<Join>* candidates) {
   const Options& o = *ctx.options;
   const JoinScorerOptions& s = o.join_scorer;
+  const double threshold = screentone ? s.screentone_threshold : s.threshold;
   std::vector<int> which;
   std::vector<double> costs;
   std::vector<std::pair<int, int>> ends;
@@ -314,8 +315,8 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                    : std::numeric_limits<double>::infinity();
     } else if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
       p = join_probability(net, features[k]);
-      if (p >= s.threshold)
-        j.cost = std::min(j.cost, o.max_join_cost + (s.threshold - p) * (s.band_high - s.band_low));
+      if (p >= threshold)
+        j.cost = std::min(j.cost, o.max_join_cost + (threshold - p) * (s.band_high - s.band_low));
       else if (p < s.refuse_below)
         j.cost = std::numeric_limits<double>::infinity();
     }
@@ -560,7 +561,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       candidates.push_back(std::move(join));
       terms_of.push_back(terms);
     }
-  if (scoring) score_candidates(ctx, edges, front, edge_count, terms_of, &candidates);
+  if (scoring)
+    score_candidates(ctx, edges, front, edge_count, terms_of, tones.screentone(), &candidates);
   // Greedy one-to-one: cheapest first, every edge joined at most once.
   std::erase_if(candidates, [&](const Join& x) { return x.cost > o.max_join_cost; });
   std::sort(candidates.begin(), candidates.end(),

@@ -115,6 +115,11 @@ constexpr double kMaxRarePathReach = 0.5;
 // The paths' mean direction within 60 degrees of the long axis of at least
 // one piece (a piece less than twice as long as wide has every direction).
 constexpr double kMinAxisCos = 0.5;
+// Tone path joins of two pieces lying above some region under a single
+// common occluder: the paths within 60 degrees of both pieces' long axes
+// (session 21, dev screentone 2000-2099 and 3000-3099: of such links one
+// piece was crossed sideways in 10 right and 11 wrong ones).
+constexpr double kMinToneAxisCos = 0.5;
 
 // Share of region `id`'s outline within kTouchReach px of region `other`.
 double outline_share(const Context& ctx, int id, int other) {
@@ -966,6 +971,16 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         if (common.empty()) continue;
         const std::vector<Landing> landings = crossing_paths(ctx, a, b, common, reach);
         if (static_cast<int>(landings.size()) < kMinLandings) continue;
+        // Two strands side by side under one occluder: a path across it
+        // from one strand's side to the other's runs across a piece's long
+        // axis, where a strand passing under runs along both (session 21).
+        if (fronts == 2 && common.size() == 1) {
+          Vec2 direction(0, 0);
+          for (const Landing& l : landings)
+            if ((l.to - l.from).norm() > 0) direction += (l.to - l.from).normalized();
+          if (std::min(axis_cos(ctx, a, direction), axis_cos(ctx, b, direction)) < kMinToneAxisCos)
+            continue;
+        }
         // Ranked by the dot masses' step, not an RGB step.
         toned.push_back(path_join(a, b, landings, mass_step(a, b)));
       }

@@ -1,6 +1,7 @@
 // Properties of completion over generated drawings (fixed seeds, non-square).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <initializer_list>
@@ -241,6 +242,73 @@ TEST(GeneratedCases, TwoWorkersGiveTheResultOfOne) {
     EXPECT_EQ(a.strand_inpaint.filled, b.strand_inpaint.filled);
     EXPECT_EQ(a.summary, b.summary);
   }
+}
+
+// Screentone drawings rescue strand candidates over the cost limit at their
+// own threshold (JoinScorerOptions::screentone_threshold, session 21), the
+// other drawings at `threshold`: with one threshold low (0.05) and the
+// other high (0.99), the candidates of the band are rescued by the one of
+// their drawing only.
+TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
+  auto run = [](const AnnotatedCase& c, double threshold, double screentone_threshold) {
+    Options o;
+    o.inpaint_strands = false;
+    o.inpaint_background = false;
+    o.join_scorer.record = true;
+    o.join_scorer.threshold = threshold;
+    o.join_scorer.screentone_threshold = screentone_threshold;
+    return complete_strands(test::input_from_case(c), o);
+  };
+  const JoinScorerOptions s;
+  for (const generator::Shading shading :
+       {generator::Shading::kScreentone, generator::Shading::kFlat}) {
+    const bool screentone = shading == generator::Shading::kScreentone;
+    const AnnotatedCase c = generated(800, 640, 20, 2004, shading);
+    for (const auto& [threshold, screentone_threshold] : {std::pair{0.05, 0.99}, {0.99, 0.05}}) {
+      const Result r = run(c, threshold, screentone_threshold);
+      const double t = screentone ? screentone_threshold : threshold;
+      int rescued = 0;
+      for (const JoinCandidate& j : r.join_candidates) {
+        if (j.hand_cost < s.band_low || j.hand_cost > s.band_high || j.probability < 0) continue;
+        if (j.probability >= t) {
+          EXPECT_DOUBLE_EQ(j.cost, std::min(j.hand_cost, 2.4 + (t - j.probability) *
+                                                                   (s.band_high - s.band_low)));
+          rescued += j.hand_cost > 2.4;
+        } else {
+          EXPECT_EQ(j.cost, j.hand_cost);
+        }
+      }
+      // The low threshold rescues some candidate over the limit, the high none.
+      SCOPED_TRACE(screentone);
+      if (t < 0.5)
+        EXPECT_GT(rescued, 0);
+      else
+        EXPECT_EQ(rescued, 0);
+    }
+  }
+}
+
+// Tone path joins of two pieces under one common occluder whose paths cross
+// a piece's long axis are two strands side by side (session 21,
+// mass_paths.cpp kMinToneAxisCos): dev screentone 2004's bang 13's piece 7
+// and side lock 9's piece 16, one tone, linked under one strand across
+// 16's axis, were joined (axis cosines 0.52 and 0.44); each keeps its own
+// strand.
+TEST(GeneratedCases, ScreentoneStrandsSideBySideAreNotJoinedAcrossAPiece) {
+  const AnnotatedCase c = generated(800, 640, 20, 2004, generator::Shading::kScreentone);
+  Options o;
+  o.inpaint_strands = false;
+  o.inpaint_background = false;
+  const Result r = complete_strands(test::input_from_case(c), o);
+  std::map<int, int> truth;
+  for (const AnnotatedRegion& reg : c.region_list) truth[reg.id] = reg.strand;
+  ASSERT_NE(truth.at(7), truth.at(16));
+  std::vector<int> with;
+  for (const CompletedStrand& s : r.strands)
+    if (std::count(s.regions.begin(), s.regions.end(), 7) > 0) with = s.regions;
+  ASSERT_FALSE(with.empty());
+  EXPECT_EQ(std::count(with.begin(), with.end(), 16), 0);
+  for (int id : with) EXPECT_EQ(truth.at(id), truth.at(7)) << id;
 }
 
 }  // namespace

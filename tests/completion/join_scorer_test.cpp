@@ -456,6 +456,11 @@ TEST(JoinScorer, BadInputThrows) {
   o.join_scorer.threshold = 1.0;
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
+  o.join_scorer.screentone_threshold = 0.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("screentone_threshold"), std::string::npos);
+  EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
+  o = {};
   o.join_scorer.refuse_below = 0.95;  // above the threshold
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
 }
