@@ -61,33 +61,28 @@ struct HairNear {
 HairNear hair_near(const cv::Mat& labels) {
   HairNear hn;
   hn.labels = labels;
-  const int w = labels.cols, h = labels.rows;
-  // Breadth-first from the regions' rims (8-connected: chessboard steps):
-  // each pixel takes the region that reached it first.
-  hn.nearest = labels.clone();
+  // Chessboard distance to the hair (DIST_C is exact with a 3x3 mask) and
+  // the hair pixel it is measured to, whose region is the nearest one.
+  const cv::Mat off_hair = labels == 0;
+  cv::Mat dist, index;
+  cv::distanceTransform(off_hair, dist, index, cv::DIST_C, 3, cv::DIST_LABEL_PIXEL);
+  std::vector<int> region_of_index(1, 0);
+  for (int y = 0; y < labels.rows; ++y)
+    for (int x = 0; x < labels.cols; ++x)
+      if (labels.at<int>(y, x) != 0) {
+        const int k = index.at<int>(y, x);
+        if (k >= static_cast<int>(region_of_index.size())) region_of_index.resize(k + 1, 0);
+        region_of_index[k] = labels.at<int>(y, x);
+      }
+  hn.nearest = cv::Mat(labels.size(), CV_32S, cv::Scalar(0));
   hn.dist = cv::Mat(labels.size(), CV_8U, cv::Scalar(255));
-  const cv::Mat hair = labels != 0;
-  hn.dist.setTo(0, hair);
-  cv::Mat inner;
-  cv::erode(hair, inner, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3)), {-1, -1}, 1,
-            cv::BORDER_CONSTANT, cv::Scalar(255));
-  std::vector<cv::Point> queue, next;
-  cv::findNonZero(hair & ~inner, queue);
-  for (int step = 1; step <= kAcross && !queue.empty(); ++step) {
-    next.clear();
-    for (const cv::Point& p : queue) {
-      const int id = hn.nearest.at<int>(p);
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int x = p.x + dx, y = p.y + dy;
-          if (x < 0 || y < 0 || x >= w || y >= h || hn.nearest.at<int>(y, x) != 0) continue;
-          hn.nearest.at<int>(y, x) = id;
-          hn.dist.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(step);
-          next.emplace_back(x, y);
-        }
+  for (int y = 0; y < labels.rows; ++y)
+    for (int x = 0; x < labels.cols; ++x) {
+      const float d = dist.at<float>(y, x);
+      if (d > kAcross) continue;
+      hn.nearest.at<int>(y, x) = region_of_index[index.at<int>(y, x)];
+      hn.dist.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(d);
     }
-    queue.swap(next);
-  }
   return hn;
 }
 
