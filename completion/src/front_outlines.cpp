@@ -42,12 +42,9 @@ constexpr double kStraight = 25.0;
 // back hair: 9-21; where locks' points dent it: 42-123).
 constexpr double kFaceBend = 30.0;
 
+// The turn (degrees) of the path a -> b -> c at b; 180 where two points coincide.
 double turn_deg(const cv::Point& a, const cv::Point& b, const cv::Point& c) {
-  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - b.x, vy = c.y - b.y;
-  const double nu = std::hypot(ux, uy), nv = std::hypot(vx, vy);
-  if (nu == 0 || nv == 0) return 180.0;
-  const double cosine = std::clamp((ux * vx + uy * vy) / (nu * nv), -1.0, 1.0);
-  return std::acos(cosine) * 180.0 / M_PI;
+  return angle(Vec2(b.x - a.x, b.y - a.y), Vec2(c.x - b.x, c.y - b.y)) * 180.0 / M_PI;
 }
 
 // The hair regions (outlines assigned) over the working box, and for every
@@ -304,8 +301,8 @@ cv::Mat front_outlines(const Image& image, const LabelMap& drawn, const LabelMap
       for (const auto& [j, step] : {std::pair{js, -1}, std::pair{je, 1}}) {
         const double ta = turn_deg(pt(j - kArm), pt(j), pt(j + kArm));
         const HairEnd hair = hair_end(hn, -1, pt(j), pt(j - step * kArm));
-        const bool junction = hair.turn >= 0 && third_area(pt(j), pt(j + step * kArm), hair, own);
         if (hair.turn < 0) continue;
+        const bool junction = third_area(pt(j), pt(j + step * kArm), hair, own);
         // Without a third area seen, only a sharp turn of the shape against
         // the hair's running on counts (a shirt's top line ending on a lock
         // over it: 109-135 against 4-11; the hair running on hidden into a

@@ -130,12 +130,6 @@ double colour_step_cost(const PaintStep& s) {
   return (s.flat ? kFlatStepWeight : kColourStepWeight) * s.step / 30.0;
 }
 
-double angle(const Vec2& a, const Vec2& b) {
-  const double la = a.norm(), lb = b.norm();
-  if (la <= 0 || lb <= 0) return M_PI;
-  return std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0));
-}
-
 bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
   auto orient = [](const Vec2& p, const Vec2& q, const Vec2& r) {
     return (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();

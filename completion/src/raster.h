@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <string>
@@ -41,6 +42,13 @@ inline double colour_distance(const Rgba& a, const Rgba& b) {
 
 // Index i of a closed contour of n points, wrapped into [0, n).
 inline int wrap(int i, int n) { return ((i % n) + n) % n; }
+
+// The angle (radians) between two directions; pi when either is zero.
+inline double angle(const Vec2& a, const Vec2& b) {
+  const double la = a.norm(), lb = b.norm();
+  if (la <= 0 || lb <= 0) return M_PI;
+  return std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0));
+}
 
 // A contour point's pixel centre.
 inline Vec2 centre(const cv::Point& p) { return {p.x + 0.5, p.y + 0.5}; }
