@@ -260,6 +260,7 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
     return complete_strands(test::input_from_case(c), o);
   };
   const JoinScorerOptions s;
+  const double limit = Options{}.max_join_cost;
   for (const generator::Shading shading :
        {generator::Shading::kScreentone, generator::Shading::kFlat}) {
     const bool screentone = shading == generator::Shading::kScreentone;
@@ -271,9 +272,9 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
       for (const JoinCandidate& j : r.join_candidates) {
         if (j.hand_cost < s.band_low || j.hand_cost > s.band_high || j.probability < 0) continue;
         if (j.probability >= t) {
-          EXPECT_DOUBLE_EQ(j.cost, std::min(j.hand_cost, 2.4 + (t - j.probability) *
-                                                                   (s.band_high - s.band_low)));
-          rescued += j.hand_cost > 2.4;
+          EXPECT_DOUBLE_EQ(j.cost, std::min(j.hand_cost, limit + (t - j.probability) *
+                                                                     (s.band_high - s.band_low)));
+          rescued += j.hand_cost > limit;
         } else {
           EXPECT_EQ(j.cost, j.hand_cost);
         }
