@@ -442,19 +442,15 @@ std::vector<MassJoin> mass_join_candidates(const Context& ctx, RegionTones& tone
                             (tones.screentone() && match != RegionTones::Match::kOther &&
                              tones.same_tone(a, b, &toned) && toned);
       if (!one_tone && (!wide(ab) || !wide(ba))) continue;
-      MassJoin j;
-      j.region_a = a;
-      j.region_b = b;
-      j.rays = fewer;
-      j.colour = j_colour;
-      std::vector<BankRay> band_rays;
-      for (const MassRay& r : ab) band_rays.emplace_back(r.index, r.from, r.to);
-      j.bands = ray_bands(band_rays);
-      out.push_back(std::move(j));
+      out.push_back(mass_join(a, b, fewer, j_colour, ab));
     }
-  std::sort(out.begin(), out.end(),
-            [](const MassJoin& x, const MassJoin& y) { return x.rays > y.rays; });
+  sort_by_rays(out);
   return out;
+}
+
+void sort_by_rays(std::vector<MassJoin>& joins) {
+  std::sort(joins.begin(), joins.end(),
+            [](const MassJoin& x, const MassJoin& y) { return x.rays > y.rays; });
 }
 
 bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b) {

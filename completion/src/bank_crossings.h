@@ -132,6 +132,17 @@ struct MassJoin {
   double colour = 0.0;          // median RGB step across the cut (the larger way)
   std::vector<Polyline> bands;  // the hidden part: runs of consecutive landing rays
 };
+// The join of `a` and `b` whose hidden part is the bands of `landing`, the
+// rays from a that land on b (any ray with index, from and to).
+template <class Ray>
+MassJoin mass_join(int a, int b, int rays, double colour, const std::vector<Ray>& landing) {
+  std::vector<BankRay> band_rays;
+  band_rays.reserve(landing.size());
+  for (const Ray& r : landing) band_rays.emplace_back(r.index, r.from, r.to);
+  return MassJoin{a, b, rays, colour, ray_bands(band_rays)};
+}
+// Most rays first: the candidates' order when their rays are counted.
+void sort_by_rays(std::vector<MassJoin>& joins);
 // Screentone (the generator's, and manga's): ink dots cover a share of a
 // strand's pixels that is the same all along the strand, so pieces of one
 // strand share it and the paper colour between the dots; a window's mean

@@ -222,18 +222,9 @@ std::vector<MassJoin> body_join_candidates(const Context& ctx, const Face& drawn
         paint = fields.step(a, b) <= kMaxMassFieldStep;
       }
       if (!paint) continue;
-      MassJoin j;
-      j.region_a = a;
-      j.region_b = b;
-      j.rays = fewer;
-      j.colour = step;
-      std::vector<BankRay> band_rays;
-      for (const BodyRay& r : kab) band_rays.emplace_back(r.index, r.from, r.to);
-      j.bands = ray_bands(band_rays);
-      out.push_back(std::move(j));
+      out.push_back(mass_join(a, b, fewer, step, kab));
     }
-  std::sort(out.begin(), out.end(),
-            [](const MassJoin& x, const MassJoin& y) { return x.rays > y.rays; });
+  sort_by_rays(out);
   return out;
 }
 
