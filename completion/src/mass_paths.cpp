@@ -82,6 +82,14 @@ struct Landing {
   Vec2 from{0, 0}, to{0, 0};
 };
 
+// The paths' mean direction: the sum of their unit directions.
+Vec2 mean_direction(const std::vector<Landing>& landings) {
+  Vec2 direction(0, 0);
+  for (const Landing& l : landings)
+    if ((l.to - l.from).norm() > 0) direction += (l.to - l.from).normalized();
+  return direction;
+}
+
 // |cos| of the angle between `dir` and region `id`'s long axis (second
 // moments of its outline); 1 for a piece less than twice as long as wide.
 double axis_cos(const Context& ctx, int id, const Vec2& dir) {
@@ -929,15 +937,11 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         if (common.empty()) continue;
         const std::vector<Landing> landings = crossing_paths(ctx, a, b, common, reach);
         if (static_cast<int>(landings.size()) < kMinLandings) continue;
-        Vec2 direction(0, 0);
         double length = 0.0;
-        for (const Landing& l : landings) {
-          const Vec2 d = l.to - l.from;
-          length += d.norm();
-          if (d.norm() > 0) direction += d.normalized();
-        }
+        for (const Landing& l : landings) length += (l.to - l.from).norm();
         length /= static_cast<double>(landings.size());
         if (length > kMaxRarePathReach * reach) continue;
+        const Vec2 direction = mean_direction(landings);
         if (std::max(axis_cos(ctx, a, direction), axis_cos(ctx, b, direction)) < kMinAxisCos)
           continue;
         rare.push_back(path_join(a, b, landings, step));
@@ -975,9 +979,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         // from one strand's side to the other's runs across a piece's long
         // axis, where a strand passing under runs along both (session 21).
         if (fronts == 2 && common.size() == 1) {
-          Vec2 direction(0, 0);
-          for (const Landing& l : landings)
-            if ((l.to - l.from).norm() > 0) direction += (l.to - l.from).normalized();
+          const Vec2 direction = mean_direction(landings);
           if (std::min(axis_cos(ctx, a, direction), axis_cos(ctx, b, direction)) < kMinToneAxisCos)
             continue;
         }
