@@ -226,7 +226,9 @@ TEST(GeneratedCases, TwoWorkersGiveTheResultOfOne) {
       EXPECT_EQ(x.outline, y.outline);
       EXPECT_EQ(x.body, y.body);
       EXPECT_EQ(x.root_hint.has_value(), y.root_hint.has_value());
-      if (x.root_hint && y.root_hint) EXPECT_EQ(*x.root_hint, *y.root_hint);
+      if (x.root_hint && y.root_hint) {
+        EXPECT_EQ(*x.root_hint, *y.root_hint);
+      }
       EXPECT_EQ(x.completed_pixels, y.completed_pixels);
     }
     ASSERT_EQ(a.edges.size(), b.edges.size());
