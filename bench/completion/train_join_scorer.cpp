@@ -123,7 +123,7 @@ void report(const std::string& name, const std::vector<Row>& rows,
       name.c_str(), low, high, label.size(), pos, auc(hand, label), auc(learned, label), limit,
       hand_tp, hand_fp, threshold, net_tp, net_fp);
   // Above the limit, accepted by the scorer (rescued); below it, refused (vetoed).
-  for (double t : {0.05, 0.1, 0.2, 0.5, 0.7, 0.8, 0.9}) {
+  for (double t : {0.05, 0.1, 0.2, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95}) {
     int rescued[2] = {0, 0}, vetoed[2] = {0, 0};
     for (std::size_t i = 0; i < label.size(); ++i) {
       const bool by_hand = -hand[i] <= limit, by_net = learned[i] >= t;
@@ -185,11 +185,19 @@ int main(int argc, char** argv) {
   train->add_flag(
       "--wide-only", wide_only,
       "Only candidates over the angle limit (worst_angle > 1, JoinScorerOptions::max_angle_deg)");
+  bool baseline = false;
+  // Session 23: the same report for the committed net, so a retrained one
+  // is compared with it on the same rows.
+  train->add_flag("--baseline", baseline,
+                  "Also report the committed net (default_join_scorer, with --wide-only "
+                  "wide_join_scorer) on the --eval files");
   std::vector<std::string> drop;
   train->add_option("--drop", drop, "Inputs left out (set to 0 everywhere): feature names");
   CLI11_PARSE(app, argc, argv);
 
   try {
+    // The committed net was trained on every input: zeroed ones would not be its rows.
+    if (baseline && !drop.empty()) throw std::runtime_error("--baseline with --drop");
     std::vector<int> dropped;
     for (const std::string& name : drop) {
       int k = 0;
@@ -249,8 +257,13 @@ int main(int argc, char** argv) {
     for (const std::string& path : eval_csv) {
       std::map<std::string, std::vector<Row>> by_set;
       for (const Row& r : rows_of(path)) by_set[r.set].push_back(r);
-      for (const auto& [name, rows] : by_set)
+      for (const auto& [name, rows] : by_set) {
         report(path + " " + name, rows, t.net, low, high, limit, threshold);
+        if (baseline)
+          report("  committed net: " + path + " " + name, rows,
+                 wide_only ? completion::wide_join_scorer() : completion::default_join_scorer(),
+                 low, high, limit, threshold);
+      }
     }
     if (!out.empty()) {
       std::ostringstream comment;
