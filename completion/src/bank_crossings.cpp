@@ -459,4 +459,10 @@ bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b) {
   return fields.step(a, b) <= kMaxOnePaintStep;
 }
 
+bool two_paints(RegionTones& tones, RegionFields& fields, int a, int b) {
+  if (tones.screentone()) return tones.match(a, b) == RegionTones::Match::kOther;
+  const double step = fields.cels().cel_drawing() ? fields.cels().step(a, b) : fields.step(a, b);
+  return std::isfinite(step) && step > kMinTwoPaintStep;
+}
+
 }  // namespace hair25d::completion::detail

@@ -320,6 +320,18 @@ inline constexpr double kMaxOnePaintStep = 0.5;
 // colour field, within kMaxOnePaintStep. The back hair's path joins and the
 // seam joins read it.
 bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b);
+// Smallest RGB step between two pieces painted apart (RegionCels::step on a
+// cel drawing, RegionFields::step else; RegionCels' own bar for "other"):
+// the generator varies each strand's colour by up to 8 %. On dev mixed
+// 2000-2099 and 3000-3099 the layering's weak `equal`s between pieces of
+// one strand stepped at most 2 RGB where measured but two (3.1, 17),
+// between two strands 3.0-77 RGB but two of one paint (session 23).
+inline constexpr double kMinTwoPaintStep = 3.0;
+// Whether a and b are measured to be painted apart: two tones by the dots on
+// screentone (RegionTones::match), else a finite step over
+// kMinTwoPaintStep. Unlike !one_paint, a paint that cannot be measured (a
+// piece too small for a field, no flat paint) says nothing.
+bool two_paints(RegionTones& tones, RegionFields& fields, int a, int b);
 
 // Back-hair pieces linked through the regions lying above both of them
 // (mass_paths.cpp), after the mass and face joins: a piece facing another

@@ -202,12 +202,17 @@ void write_contents(const fs::path& tmp, const HairModel& model) {
     doc["strands"] = std::move(strands);
     json relations = json::array();
     for (const RegionRelation& r : model.relations) {
-      relations.push_back({{"a", r.a},
-                           {"b", r.b},
-                           {"relation", to_string(r.relation)},
-                           {"score", r.score},
-                           {"user_fixed", r.user_fixed},
-                           {"overridden", r.overridden}});
+      json jr_rel = {{"a", r.a},
+                     {"b", r.b},
+                     {"relation", to_string(r.relation)},
+                     {"score", r.score},
+                     {"user_fixed", r.user_fixed},
+                     {"overridden", r.overridden}};
+      if (r.equal_evidence)
+        jr_rel["equal_evidence"] = {{"log_odds", r.equal_evidence->log_odds},
+                                    {"open", r.equal_evidence->open},
+                                    {"open_fraction", r.equal_evidence->open_fraction}};
+      relations.push_back(std::move(jr_rel));
     }
     doc["relations"] = std::move(relations);
     write_text_atomically(tmp / "model.json", doc.dump(1) + "\n");
@@ -411,6 +416,17 @@ HairModel read_model(const fs::path& folder, const ImageLimits& limits) {
       r.user_fixed = jr::as_bool(*v, src, jr::join(at, "user_fixed"));
     if (const json* v = jr::optional_member(jr_rel, src, at, "overridden"))
       r.overridden = jr::as_bool(*v, src, jr::join(at, "overridden"));
+    if (const json* v = jr::optional_member(jr_rel, src, at, "equal_evidence")) {
+      const std::string ev = jr::join(at, "equal_evidence");
+      jr::expect_object(*v, src, ev);
+      EqualEvidence e;
+      e.log_odds =
+          jr::as_number(jr::member(*v, src, ev, "log_odds"), src, jr::join(ev, "log_odds"));
+      e.open = jr::as_bool(jr::member(*v, src, ev, "open"), src, jr::join(ev, "open"));
+      e.open_fraction = jr::as_number(jr::member(*v, src, ev, "open_fraction"), src,
+                                      jr::join(ev, "open_fraction"));
+      r.equal_evidence = e;
+    }
     m.relations.push_back(r);
   }
   return m;

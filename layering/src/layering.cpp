@@ -821,6 +821,15 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     } else if (open_pair || same_depth) {
       r.relation = Relation::kEqual;
       r.score = 0.0;
+      // Its confidence, for completion to weigh (EqualEvidence): the
+      // log-odds of the boundaries that made it equal.
+      EqualEvidence e;
+      e.open = !same_depth;
+      e.log_odds = same_depth     ? acc.same / acc.occluding
+                   : acc.open > 0 ? acc.open_same / acc.open
+                                  : 0.0;
+      e.open_fraction = acc.total > 0 ? acc.open / acc.total : 0.0;
+      r.equal_evidence = e;
       firm.push_back(same_depth && use_patches && acc.same > kFirmEqualLogOdds * acc.occluding);
     } else {
       firm.push_back(0);
@@ -844,6 +853,7 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     }
     it->relation = rel;
     it->user_fixed = true;
+    it->equal_evidence.reset();  // the user's word, not the measure
   }
 
   DepthOrder order = order_regions(ids, out.relations, firm);

@@ -175,6 +175,29 @@ TEST(Completion, WeaklyOrderedPiecesOfOneStrandCutByALineAreJoined) {
   EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kBelow, -0.8}, kHair, true), apart);
 }
 
+// The layering's `equal`s carry its confidence (EqualEvidence). A weak one
+// (same-depth log-odds under 2, or an open pair's under 0) between the cut
+// band's pieces painted apart (20 RGB) makes no strand of them. One paint,
+// a firm equal, an open pair leaning to one depth, the user's equal, or an
+// equal without evidence (as before session 23) unite them.
+TEST(Completion, WeakEqualsBetweenTwoPaintsAreRefused) {
+  const Rgba other{185, 160, 100, 255};
+  const auto equal = [](double log_odds, bool open = false, bool user = false) {
+    RegionRelation r{1, 2, Relation::kEqual, 0.0, user};
+    r.equal_evidence = EqualEvidence{log_odds, open, open ? 0.9 : 0.1};
+    return r;
+  };
+  const std::vector<int> joined{1, 2}, apart{1};
+  EXPECT_EQ(strand_of_cut_band(equal(0.5), other), apart);
+  EXPECT_EQ(strand_of_cut_band(equal(1.9), other), apart);
+  EXPECT_EQ(strand_of_cut_band(equal(-1.0, true), other), apart);
+  EXPECT_EQ(strand_of_cut_band(equal(0.5)), joined);
+  EXPECT_EQ(strand_of_cut_band(equal(2.5), other), joined);
+  EXPECT_EQ(strand_of_cut_band(equal(1.0, true), other), joined);
+  EXPECT_EQ(strand_of_cut_band(equal(0.5, false, true), other), joined);
+  EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kEqual, 0.0}, other), joined);
+}
+
 // A wide piece (a cap, the back hair) cut by a strand lying over it, where
 // the cut runs between two other occluders: no side outline reaches the cut,
 // so only the banks of the strand facing each other tell that the two

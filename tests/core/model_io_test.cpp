@@ -46,6 +46,7 @@ HairModel small_model() {
   m.strands.push_back(t);
   m.relations.push_back({2, 3, Relation::kAbove, 0.75, true, false});
   m.relations.push_back({9, 3, Relation::kEqual, 0.0, false, true});
+  m.relations.back().equal_evidence = EqualEvidence{-1.25, true, 0.8};
   return m;
 }
 
@@ -79,6 +80,11 @@ TEST(ModelIo, RoundTripKeepsEverything) {
   EXPECT_DOUBLE_EQ(back.relations[0].score, 0.75);
   EXPECT_TRUE(back.relations[0].user_fixed);
   EXPECT_TRUE(back.relations[1].overridden);
+  EXPECT_FALSE(back.relations[0].equal_evidence);
+  ASSERT_TRUE(back.relations[1].equal_evidence);
+  EXPECT_DOUBLE_EQ(back.relations[1].equal_evidence->log_odds, -1.25);
+  EXPECT_TRUE(back.relations[1].equal_evidence->open);
+  EXPECT_DOUBLE_EQ(back.relations[1].equal_evidence->open_fraction, 0.8);
 }
 
 class EditedModel : public ::testing::Test {
@@ -120,6 +126,9 @@ TEST_F(EditedModel, WrongTypesAndUnknownIdsAreNamed) {
   doc = doc_;
   doc["relations"][0]["a"] = 77;
   EXPECT_NE(error_after(doc).find("relations[0].a"), std::string::npos);
+  doc = doc_;
+  doc["relations"][1]["equal_evidence"]["log_odds"] = "sure";
+  EXPECT_NE(error_after(doc).find("relations[1].equal_evidence.log_odds"), std::string::npos);
   doc = doc_;
   doc["strands"][0]["mesh"]["triangles"][1][2] = 40;
   EXPECT_NE(error_after(doc).find("strands[0].mesh.triangles[1][2]"), std::string::npos);

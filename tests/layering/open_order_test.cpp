@@ -58,6 +58,70 @@ TEST(OpenOrder, MinusInfinityKeepsOpenPairsEqual) {
   EXPECT_EQ(relation_of(r, 17, 10), Relation::kEqual);
 }
 
+// The mean same-depth log-odds over a pair's occluding hair boundaries.
+double occluding_same_log_odds(const Result& r, int a, int b) {
+  double length = 0.0, sum = 0.0;
+  for (const BoundaryReport& rep : r.boundaries) {
+    const bool pair = (rep.left == a && rep.right == b) || (rep.left == b && rep.right == a);
+    if (!pair || !rep.occluding) continue;
+    length += rep.length;
+    sum += rep.equal * rep.length;
+  }
+  return length > 0 ? sum / length : std::numeric_limits<double>::quiet_NaN();
+}
+
+const RegionRelation* find(const Result& r, int a, int b) {
+  for (const RegionRelation& x : r.relations)
+    if ((x.a == a && x.b == b) || (x.a == b && x.b == a)) return &x;
+  return nullptr;
+}
+
+// Each measured `equal` carries the log-odds it was decided on
+// (RegionRelation::equal_evidence, which completion weighs; its score is
+// 0); orders and the user's relations carry none. With the open rule off,
+// case 1's sliver 17 is an open equal of 10, its evidence its open
+// boundaries' mean; the pairs the same-depth model calls one depth carry
+// their occluding boundaries' mean, over 0.
+TEST(OpenOrder, EqualsCarryTheirEvidence) {
+  const AnnotatedCase c = case1();
+  Options o;
+  o.open_order_log_odds = -std::numeric_limits<double>::infinity();
+  const Result r = layer_regions(c.image, c.regions, o);
+  const RegionRelation* sliver = find(r, 17, 10);
+  ASSERT_NE(sliver, nullptr);
+  ASSERT_TRUE(sliver->equal_evidence);
+  EXPECT_TRUE(sliver->equal_evidence->open);
+  EXPECT_NEAR(sliver->equal_evidence->log_odds, open_same_log_odds(r, 17, 10), 1e-9);
+  EXPECT_GT(sliver->equal_evidence->open_fraction, 0.5);
+  // Case 3 has pairs the same-depth model calls one depth (13 and 14).
+  const AnnotatedCase c3 =
+      read_annotated_case(std::filesystem::path(HAIR25D_TEST_DATA_DIR) / "annotated" / "case3");
+  const Result case3 = layer_regions(c3.image, c3.regions);
+  int same_depth = 0;
+  for (const Result* result : {&r, &case3})
+    for (const RegionRelation& x : result->relations) {
+      if (!x.equal_evidence) continue;
+      EXPECT_EQ(x.score, 0.0) << x.a << " / " << x.b;
+      if (x.equal_evidence->open) continue;
+      ++same_depth;
+      EXPECT_GT(x.equal_evidence->log_odds, 0.0) << x.a << " / " << x.b;
+      EXPECT_NEAR(x.equal_evidence->log_odds, occluding_same_log_odds(*result, x.a, x.b), 1e-9);
+    }
+  EXPECT_GT(same_depth, 0);
+  // Measured orders carry none, nor does the user's word on the sliver.
+  const Result ordered = layer_regions(c.image, c.regions);
+  const RegionRelation* above = find(ordered, 17, 10);
+  ASSERT_NE(above, nullptr);
+  EXPECT_NE(above->relation, Relation::kEqual);
+  EXPECT_FALSE(above->equal_evidence);
+  o.fixed = {{17, 10, Relation::kEqual, 0.0, true}};
+  const Result with_user = layer_regions(c.image, c.regions, o);
+  const RegionRelation* fixed = find(with_user, 17, 10);
+  ASSERT_NE(fixed, nullptr);
+  EXPECT_TRUE(fixed->user_fixed);
+  EXPECT_FALSE(fixed->equal_evidence);
+}
+
 TEST(OpenOrder, RejectsNanAndPlusInfinity) {
   for (double bad :
        {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {

@@ -110,6 +110,9 @@ struct Result {
   // Regions made one strand by "equal" relations (two groups becoming one
   // counts one); with the joins, regions - strands = equal_merges + joins.
   int equal_merges = 0;
+  // The layering's weak "equal"s between pieces painted apart, not merged
+  // (EqualEvidence in core/hair_model.h; the user's are always merged).
+  int refused_equals = 0;
   InpaintResult strand_inpaint, background_inpaint;
   std::vector<JoinCandidate> join_candidates;  // with Options::join_scorer.record
   std::string summary;

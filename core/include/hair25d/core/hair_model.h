@@ -43,6 +43,18 @@ struct Strand {
   StrandPhysics physics;
 };
 
+// What the layering measured for an `equal` between two regions: its
+// confidence, which RegionRelation::score (whose sign means an order) cannot
+// carry. Completion refuses weak ones where the paint says two strands.
+struct EqualEvidence {
+  // The same-depth model's length-weighted mean log-odds of one depth
+  // (positive: one depth), over the pair's occluding boundaries, or, for a
+  // pair equal because its common boundary is mostly open, over the open ones.
+  double log_odds = 0.0;
+  bool open = false;           // equal because most of its common boundary is open
+  double open_fraction = 0.0;  // share of the common boundary with no occluding line
+};
+
 // The depth relation between two regions with its score (positive = a on top).
 struct RegionRelation {
   int a = 0;
@@ -54,6 +66,9 @@ struct RegionRelation {
   // stronger relations; by the model, where the strands' order (relations
   // summed over their pieces) disagrees. `score` keeps its original sign.
   bool overridden = false;
+  // Set by the layering on the `equal`s it measured (none on orders, the
+  // user's relations, pairs related by their drawing order alone).
+  std::optional<EqualEvidence> equal_evidence;
 };
 
 struct HairModel {
