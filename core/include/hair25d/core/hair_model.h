@@ -68,7 +68,7 @@ struct RegionRelation {
   bool overridden = false;
   // Set by the layering on the `equal`s it measured (none on orders, the
   // user's relations, pairs related by their drawing order alone).
-  std::optional<EqualEvidence> equal_evidence;
+  std::optional<EqualEvidence> equal_evidence{};
 };
 
 struct HairModel {
