@@ -465,4 +465,12 @@ bool two_paints(RegionTones& tones, RegionFields& fields, int a, int b) {
   return std::isfinite(step) && step > kMinTwoPaintStep;
 }
 
+bool two_tones_by_dots(RegionTones& tones, int a, int b) {
+  if (!tones.screentone()) return false;
+  if (tones.match(a, b) == RegionTones::Match::kOther) return true;
+  const double ta = tones.tone(a), tb = tones.tone(b);
+  return std::min(ta, tb) < RegionTones::kPaperWhite && std::max(ta, tb) >= RegionTones::kMinTone &&
+         std::abs(ta - tb) > RegionTones::kMinOtherToneStep;
+}
+
 }  // namespace hair25d::completion::detail

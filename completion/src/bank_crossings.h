@@ -195,6 +195,9 @@ class RegionTones {
   // other pieces while the dot masses agreed within 6.3 %; 4 and 10 measured
   // the same on dev 2000-2099 and 3000-3099).
   static constexpr int kMinShareDots = 4;
+  // A piece with a dark share under this is paper-white (a third of the
+  // generator's strands carry no tone).
+  static constexpr double kPaperWhite = 0.01;
 
   enum class Match { kUnknown, kSame, kOther };
 
@@ -285,6 +288,15 @@ class RegionTones {
 // dark-share step over kMinOtherToneStep when the dots are not measured).
 // 0 on other drawings.
 double tone_join_cost(RegionTones& tones, int a, int b);
+// Two strands by their dots (screentone drawings only; false elsewhere):
+// both pieces' dots are measured and differ (`match` kOther), or one piece
+// is paper-white and the other toned (dark shares over kMinTone and more
+// than kMinOtherToneStep apart). The strand joins' tone cost only weighs
+// this, so a pair whose outlines agree was joined all the same (session 23:
+// on dev screentone seeds 2000, 3000, 4000 and 5000, 100 drawings each, 9
+// edge links and one face link of such pairs were chosen, every one wrong);
+// the mass and path joins refuse kOther too.
+bool two_tones_by_dots(RegionTones& tones, int a, int b);
 // The colour at the 75th luma percentile of a region's own pixels in the
 // 11 x 11 window round `at`: the paper between screentone dots (which cover
 // under half of a tone).

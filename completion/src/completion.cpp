@@ -418,6 +418,9 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       const double field = fields.step(j.region_a, j.region_b);
       if (std::isfinite(field) && field > detail::kMinOtherFieldStep) continue;
     }
+    // Screentone pieces of two tones by their dots (session 23: dev 4079's
+    // back hair joined across the face to a lighter tail, 2 wrong pairs).
+    if (detail::two_tones_by_dots(tones, j.region_a, j.region_b)) continue;
     if (!try_join(j.region_a, j.region_b)) continue;
     EdgeReport ra, rb;
     ra.region = j.region_a, ra.p = j.pa, ra.q = j.qa, ra.joined_region = j.region_b;

@@ -568,7 +568,13 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
     bool free = true;
     for (int e : {j.edge_a, j.edge_b})
       for (int atom : edges[e].atoms) free = free && !used.count(atom);
-    if (!free || !try_join(edges[j.edge_a].region, edges[j.edge_b].region)) continue;
+    // Pieces of two tones by their dots are two strands whatever their
+    // outlines say; refused here, not among the candidates, so that the
+    // scorer still reads them as rivals (refused before scoring, dev
+    // screentone 5028 lost a right back-piece path join to a rescued one).
+    if (!free || two_tones_by_dots(tones, edges[j.edge_a].region, edges[j.edge_b].region) ||
+        !try_join(edges[j.edge_a].region, edges[j.edge_b].region))
+      continue;
     for (int e : {j.edge_a, j.edge_b}) used.insert(edges[e].atoms.begin(), edges[e].atoms.end());
     if (j.record >= 0) (*ctx.join_log)[j.record].chosen = true;
     chosen.push_back(std::move(j));

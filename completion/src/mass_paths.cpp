@@ -766,7 +766,8 @@ double tone_join_cost(RegionTones& tones, int a, int b) {
   // strand joins of one tone up to 3.6 through, where the candidates of one
   // strand were 131 of 320 and those of one tone 90 % right.
   constexpr double kSameToneBonus = 1.2, kOtherTonePenalty = 1.0;
-  constexpr double kWhiteBonus = 0.6, kWhiteTonePenalty = 0.6, kWhite = 0.01;
+  constexpr double kWhiteBonus = 0.6, kWhiteTonePenalty = 0.6;
+  constexpr double kWhite = RegionTones::kPaperWhite;
   if (!tones.screentone()) return 0.0;
   switch (tones.match(a, b)) {
     case RegionTones::Match::kSame:

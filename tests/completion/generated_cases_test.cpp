@@ -7,6 +7,8 @@
 #include <initializer_list>
 #include <map>
 #include <set>
+#include <tuple>
+#include <vector>
 
 #include "annotated_eval.h"
 #include "hair25d/completion/completion.h"
@@ -312,6 +314,31 @@ TEST(GeneratedCases, ScreentoneStrandsSideBySideAreNotJoinedAcrossAPiece) {
   ASSERT_FALSE(with.empty());
   EXPECT_EQ(std::count(with.begin(), with.end(), 16), 0);
   for (int id : with) EXPECT_EQ(truth.at(id), truth.at(7)) << id;
+}
+
+// Screentone pieces whose dots say two tones are two strands, whatever
+// their outlines say (session 23, bank_crossings.h two_tones_by_dots): on
+// dev screentone 2046 the cap (region 2, dark share 0.33) was edge-joined
+// under a bang to a strand of a lighter tone (14, 0.22), and on 4079 the
+// back hair (1, 0.37) across the face to a tail (9, 0.23). Neither pair is
+// one strand now (both fail without the rule, checked).
+TEST(GeneratedCases, ScreentonePiecesOfTwoTonesAreNotJoined) {
+  for (const auto& [seed, a, b] : {std::tuple{2046u, 2, 14}, std::tuple{4079u, 1, 9}}) {
+    SCOPED_TRACE(seed);
+    const AnnotatedCase c = generated(800, 640, 20, seed, generator::Shading::kScreentone);
+    Options o;
+    o.inpaint_strands = false;
+    o.inpaint_background = false;
+    const Result r = complete_strands(test::input_from_case(c), o);
+    std::map<int, int> truth;
+    for (const AnnotatedRegion& reg : c.region_list) truth[reg.id] = reg.strand;
+    ASSERT_NE(truth.at(a), truth.at(b));
+    std::vector<int> with;
+    for (const CompletedStrand& s : r.strands)
+      if (std::count(s.regions.begin(), s.regions.end(), a) > 0) with = s.regions;
+    ASSERT_FALSE(with.empty());
+    EXPECT_EQ(std::count(with.begin(), with.end(), b), 0);
+  }
 }
 
 }  // namespace
