@@ -172,6 +172,75 @@ const char* to_string(EdgeCase c) {
   return "unknown";
 }
 
+namespace {
+
+// Reads the relations: equal pairs and seams are united in `strands` (weak
+// equals between pieces painted apart refused), orders give each region its
+// occluders, remote orders and the chains above go to `ctx`. Returns region
+// -> the regions above it through chains of firm relations between touching
+// regions, which alone keep two regions out of one strand (try_join).
+std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& relations,
+                                            const std::set<std::pair<int, int>>& touching,
+                                            detail::RegionTones& tones,
+                                            detail::RegionFields& fields, detail::Context& ctx,
+                                            UnionFind& strands, Result& result) {
+  // Seams (seam_joins.h): two touching pieces of one paint that the
+  // layering orders weakly, whose side outlines run on across the line
+  // between them, are halves of one strand as an `equal` pair is.
+  std::map<std::pair<int, int>, Relation> direct;
+  for (const RegionRelation& r : relations)
+    if (!unmeasured(r, touching)) direct[{r.a, r.b}] = r.relation;
+  const auto directly_above = [&](int x, int y) {
+    auto it = direct.find({x, y});
+    if (it != direct.end()) return it->second == Relation::kAbove;
+    it = direct.find({y, x});
+    return it != direct.end() && it->second == Relation::kBelow;
+  };
+  std::set<std::pair<int, int>> seams;
+  for (const RegionRelation& r : relations) {
+    if (unmeasured(r, touching) || r.relation == Relation::kEqual || firm(r)) continue;
+    // One paint (bank_crossings.h), never on screentone: one tone there is
+    // shared by several strands (dev mixed 2000-2099, seed 2099: a seam of
+    // two strands of one tone, 5 wrong pairs).
+    if (!tones.screentone() && detail::one_paint(tones, fields, r.a, r.b) &&
+        detail::seam_geometry(ctx, r.a, r.b, directly_above))
+      seams.insert({r.a, r.b});
+  }
+  for (const RegionRelation& r : relations) {
+    if (unmeasured(r, touching)) continue;
+    if (weak_equal(r) && detail::two_paints(tones, fields, r.a, r.b)) {
+      ++result.refused_equals;
+      continue;
+    }
+    if (r.relation == Relation::kEqual || seams.count({r.a, r.b})) {
+      // Same depth and touching: halves of one strand (counted once per two
+      // groups made one, so the summary adds up: regions - strands).
+      if (strands.find(r.a) != strands.find(r.b)) ++result.equal_merges;
+      strands.unite(r.a, r.b);
+    } else if (r.relation == Relation::kBelow)
+      ctx.regions[r.a].occluders.insert(r.b);
+    else
+      ctx.regions[r.b].occluders.insert(r.a);
+  }
+
+  for (const RegionRelation& r : relations)
+    if (r.relation != Relation::kEqual && !unmeasured(r, touching) && remote(r, touching))
+      ctx.remote_orders.insert({std::min(r.a, r.b), std::max(r.a, r.b)});
+  // Only firm relations between touching regions keep two regions out of one
+  // strand (try_join).
+  std::map<int, std::set<int>> firm_occluders;
+  for (const RegionRelation& r : relations)
+    if (r.relation != Relation::kEqual && !remote(r, touching) && firm(r))
+      firm_occluders[r.relation == Relation::kBelow ? r.a : r.b].insert(
+          r.relation == Relation::kBelow ? r.b : r.a);
+  std::map<int, std::set<int>> occluders;
+  for (const auto& [id, info] : ctx.regions) occluders[id] = info.occluders;
+  ctx.above = chains_above(occluders);
+  return chains_above(firm_occluders);
+}
+
+}  // namespace
+
 Result complete_strands(const Input& input, const Options& options, Progress* progress) {
   check_input(input, options);
   const Image& image = *input.image;
@@ -199,63 +268,12 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // (region paint only: no relation is read).
   detail::RegionTones tones(ctx);
   detail::RegionFields fields(ctx);
-  // Seams (seam_joins.h): two touching pieces of one paint that the
-  // layering orders weakly, whose side outlines run on across the line
-  // between them, are halves of one strand as an `equal` pair is.
-  std::map<std::pair<int, int>, Relation> direct;
-  for (const RegionRelation& r : input.relations)
-    if (!unmeasured(r, touching)) direct[{r.a, r.b}] = r.relation;
-  const auto directly_above = [&](int x, int y) {
-    auto it = direct.find({x, y});
-    if (it != direct.end()) return it->second == Relation::kAbove;
-    it = direct.find({y, x});
-    return it != direct.end() && it->second == Relation::kBelow;
-  };
-  std::set<std::pair<int, int>> seams;
-  for (const RegionRelation& r : input.relations) {
-    if (unmeasured(r, touching) || r.relation == Relation::kEqual || firm(r)) continue;
-    // One paint (bank_crossings.h), never on screentone: one tone there is
-    // shared by several strands (dev mixed 2000-2099, seed 2099: a seam of
-    // two strands of one tone, 5 wrong pairs).
-    if (!tones.screentone() && detail::one_paint(tones, fields, r.a, r.b) &&
-        detail::seam_geometry(ctx, r.a, r.b, directly_above))
-      seams.insert({r.a, r.b});
-  }
-  for (const RegionRelation& r : input.relations) {
-    if (unmeasured(r, touching)) continue;
-    if (weak_equal(r) && detail::two_paints(tones, fields, r.a, r.b)) {
-      ++result.refused_equals;
-      continue;
-    }
-    if (r.relation == Relation::kEqual || seams.count({r.a, r.b})) {
-      // Same depth and touching: halves of one strand (counted once per two
-      // groups made one, so the summary adds up: regions - strands).
-      if (strands.find(r.a) != strands.find(r.b)) ++result.equal_merges;
-      strands.unite(r.a, r.b);
-    } else if (r.relation == Relation::kBelow)
-      ctx.regions[r.a].occluders.insert(r.b);
-    else
-      ctx.regions[r.b].occluders.insert(r.a);
-  }
-
-  for (const RegionRelation& r : input.relations)
-    if (r.relation != Relation::kEqual && !unmeasured(r, touching) && remote(r, touching))
-      ctx.remote_orders.insert({std::min(r.a, r.b), std::max(r.a, r.b)});
-  // Only firm relations between touching regions keep two regions out of one
-  // strand (try_join).
-  std::map<int, std::set<int>> firm_occluders;
-  for (const RegionRelation& r : input.relations)
-    if (r.relation != Relation::kEqual && !remote(r, touching) && firm(r))
-      firm_occluders[r.relation == Relation::kBelow ? r.a : r.b].insert(
-          r.relation == Relation::kBelow ? r.b : r.a);
-  const std::map<int, std::set<int>> firm_above = chains_above(firm_occluders);
+  const std::map<int, std::set<int>> firm_above =
+      read_relations(input.relations, touching, tones, fields, ctx, strands, result);
   const auto firmly_above = [&](int upper, int region) {
     const auto it = firm_above.find(region);
     return it != firm_above.end() && it->second.count(upper) > 0;
   };
-  std::map<int, std::set<int>> occluders;
-  for (const auto& [id, info] : ctx.regions) occluders[id] = info.occluders;
-  ctx.above = chains_above(occluders);
 
   // Head centre: given, else the centroid of the hair (it frames the face).
   if (input.head_center) {
