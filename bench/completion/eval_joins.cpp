@@ -10,10 +10,10 @@
 #include <string>
 
 #include "../../tests/completion/annotated_eval.h"
+#include "case_relations.h"
 #include "eval_joins_overlay.h"
 #include "hair25d/core/annotation.h"
 #include "hair25d/generator/generator.h"
-#include "hair25d/layering/layering.h"
 #include "join_upper_bound.h"
 #ifdef HAIR25D_HAVE_PIPELINE
 #include "hair25d/pipeline/joint_layering.h"
@@ -71,19 +71,23 @@ void score(const AnnotatedCase& c, Relations relations, const completion::Option
            Total* total) {
   completion::Input in = completion::test::input_from_case(c);
   if (relations != Relations::kAnnotated) {
-    in.relations.clear();  // a failed layering leaves no relations, not the annotation's
-    try {
+    std::string error;
 #ifdef HAIR25D_HAVE_PIPELINE
-      if (relations == Relations::kJoint)
+    if (relations == Relations::kJoint) {
+      in.relations.clear();  // a failed layering leaves no relations, not the annotation's
+      try {
         in.relations =
             pipeline::layer_with_joins(c.image, c.regions, {}, options).layering.relations;
-      else
+      } catch (const std::exception& e) {
+        error = e.what();
+      }
+    } else
 #endif
-        in.relations = layering::layer_regions(c.image, c.regions).relations;
-      if (!overlay.empty()) print_relation_errors(c, in.relations, name);
-    } catch (const std::exception& e) {
-      std::printf("%s: layering failed (%s); no relations\n", name.c_str(), e.what());
-    }
+      in.relations = completion::test::predicted_relations(c, &error);
+    if (!error.empty())
+      std::printf("%s: layering failed (%s); no relations\n", name.c_str(), error.c_str());
+    else if (!overlay.empty())
+      print_relation_errors(c, in.relations, name);
   }
   const completion::Result r = completion::complete_strands(in, options);
   if (bound) {

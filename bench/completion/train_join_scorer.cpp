@@ -1,7 +1,8 @@
 // Trains the learned join scorer (completion/include/hair25d/completion/
 // join_scorer.h, paper §5.1) and measures it against the hand cost.
 //   collect: runs completion on generated drawings (or annotated cases) with
-//            the candidates recorded, labels each by the ground truth
+//            the candidates recorded (with the annotation's relations or,
+//            --relations predicted, the layering's), labels each by the ground truth
 //            (one strand or two) and appends them to a CSV;
 //   train:   reads such CSVs, trains on the rows of the training files in
 //            the cost window, prints how the scorer and the hand cost
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "../../tests/completion/annotated_eval.h"
+#include "case_relations.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/core/annotation.h"
@@ -39,7 +41,7 @@ struct Row {
   JoinFeatures f{};
 };
 
-void collect_case(const AnnotatedCase& c, const std::string& set, double band_high,
+void collect_case(const AnnotatedCase& c, const std::string& set, bool predicted, double band_high,
                   double max_angle, std::FILE* out, int* rows) {
   completion::Options o;
   o.inpaint_strands = false;
@@ -48,8 +50,15 @@ void collect_case(const AnnotatedCase& c, const std::string& set, double band_hi
   o.join_scorer.record = true;
   o.join_scorer.band_high = band_high;
   o.join_scorer.max_angle_deg = max_angle;
-  const completion::Result r =
-      completion::complete_strands(completion::test::input_from_case(c), o);
+  completion::Input in = completion::test::input_from_case(c);
+  if (predicted) {
+    std::string error;
+    in.relations = completion::test::predicted_relations(c, &error);
+    if (!error.empty())
+      std::fprintf(stderr, "%s: layering failed (%s); no relations\n", c.name.c_str(),
+                   error.c_str());
+  }
+  const completion::Result r = completion::complete_strands(in, o);
   std::map<int, int> truth;
   for (const AnnotatedRegion& reg : c.region_list) truth[reg.id] = reg.strand;
   for (const completion::JoinCandidate& j : r.join_candidates) {
@@ -159,6 +168,14 @@ int main(int argc, char** argv) {
   double record_angle = 120.0;
   collect->add_option("--max-angle", record_angle,
                       "Record candidates whose tangents turn up to this (degrees)");
+  // Session 23 (joins42): `hair25d model` joins with the layering's
+  // relations, whose wrong ones make candidates the annotation's never do.
+  std::string relations = "annotated";
+  collect
+      ->add_option("--relations", relations,
+                   "Relations completion is given: annotated (the case's pairs) or predicted "
+                   "(the layering's, as eval_joins --relations predicted)")
+      ->check(CLI::IsMember({"annotated", "predicted"}));
   collect->add_option("--shading", shadings, "flat, two-tone, gradient, screentone or all")
       ->check(CLI::IsMember({"flat", "two-tone", "gradient", "screentone", "all"}));
 
@@ -218,7 +235,8 @@ int main(int argc, char** argv) {
       int rows = 0;
       if (!annotated.empty()) {
         for (const auto& folder : find_annotated_cases(annotated))
-          collect_case(read_annotated_case(folder), set, record_high, record_angle, f, &rows);
+          collect_case(read_annotated_case(folder), set, relations == "predicted", record_high,
+                       record_angle, f, &rows);
       } else {
         const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
                                             generator::Shading::kGradient,
@@ -235,7 +253,7 @@ int main(int argc, char** argv) {
             g.shading = kinds[s];
             AnnotatedCase c = generator::generate_case(g);
             c.name = std::string(names[s]) + "-" + std::to_string(seed + k);
-            collect_case(c, set, record_high, record_angle, f, &rows);
+            collect_case(c, set, relations == "predicted", record_high, record_angle, f, &rows);
           }
       }
       std::fclose(f);
