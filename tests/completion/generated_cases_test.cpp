@@ -30,6 +30,25 @@ AnnotatedCase generated(int width, int height, int strands, std::uint64_t seed,
   return generator::generate_case(g);
 }
 
+// The generator's strand of every region of `c`.
+std::map<int, int> true_strands(const AnnotatedCase& c) {
+  std::map<int, int> truth;
+  for (const AnnotatedRegion& reg : c.region_list) truth[reg.id] = reg.strand;
+  return truth;
+}
+
+// The regions of the strand completion (without inpainting, the case's
+// relations) makes of `region`; empty when no strand holds it.
+std::vector<int> completed_strand_of(const AnnotatedCase& c, int region) {
+  Options o;
+  o.inpaint_strands = false;
+  o.inpaint_background = false;
+  const Result r = complete_strands(test::input_from_case(c), o);
+  for (const CompletedStrand& s : r.strands)
+    if (std::count(s.regions.begin(), s.regions.end(), region) > 0) return s.regions;
+  return {};
+}
+
 TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     const AnnotatedCase c = generated(
@@ -301,16 +320,9 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
 // strand.
 TEST(GeneratedCases, ScreentoneStrandsSideBySideAreNotJoinedAcrossAPiece) {
   const AnnotatedCase c = generated(800, 640, 20, 2004, generator::Shading::kScreentone);
-  Options o;
-  o.inpaint_strands = false;
-  o.inpaint_background = false;
-  const Result r = complete_strands(test::input_from_case(c), o);
-  std::map<int, int> truth;
-  for (const AnnotatedRegion& reg : c.region_list) truth[reg.id] = reg.strand;
+  const std::map<int, int> truth = true_strands(c);
   ASSERT_NE(truth.at(7), truth.at(16));
-  std::vector<int> with;
-  for (const CompletedStrand& s : r.strands)
-    if (std::count(s.regions.begin(), s.regions.end(), 7) > 0) with = s.regions;
+  const std::vector<int> with = completed_strand_of(c, 7);
   ASSERT_FALSE(with.empty());
   EXPECT_EQ(std::count(with.begin(), with.end(), 16), 0);
   for (int id : with) EXPECT_EQ(truth.at(id), truth.at(7)) << id;
@@ -326,16 +338,9 @@ TEST(GeneratedCases, ScreentonePiecesOfTwoTonesAreNotJoined) {
   for (const auto& [seed, a, b] : {std::tuple{2046u, 2, 14}, std::tuple{4079u, 1, 9}}) {
     SCOPED_TRACE(seed);
     const AnnotatedCase c = generated(800, 640, 20, seed, generator::Shading::kScreentone);
-    Options o;
-    o.inpaint_strands = false;
-    o.inpaint_background = false;
-    const Result r = complete_strands(test::input_from_case(c), o);
-    std::map<int, int> truth;
-    for (const AnnotatedRegion& reg : c.region_list) truth[reg.id] = reg.strand;
+    const std::map<int, int> truth = true_strands(c);
     ASSERT_NE(truth.at(a), truth.at(b));
-    std::vector<int> with;
-    for (const CompletedStrand& s : r.strands)
-      if (std::count(s.regions.begin(), s.regions.end(), a) > 0) with = s.regions;
+    const std::vector<int> with = completed_strand_of(c, a);
     ASSERT_FALSE(with.empty());
     EXPECT_EQ(std::count(with.begin(), with.end(), b), 0);
   }
