@@ -428,46 +428,36 @@ struct Wedges {
 // converging lines.
 Wedges lock_wedges(const Head& head, const Rasters& r, const DarkPieces& p,
                    const cv::Mat& near_wedge) {
-  const int w = r.dark.cols, h = r.dark.rows;
-  const cv::Mat& dark = r.dark;
-  const cv::Mat& hair = r.hair;
-  const cv::Mat& hair_coloured = r.hair_coloured;
-  const cv::Mat& outline_coloured = r.outline_coloured;
-  const cv::Mat& features = r.features;
-  const cv::Mat& pieces = p.pieces;
-  const std::vector<std::uint8_t>& mixed = p.mixed;
+  if (head.mask.empty()) return {};
   constexpr int kMinWedge = 20;
-  cv::Mat wedge_parts, points;
-  std::vector<std::uint8_t> wedge_goes;
-  if (!head.mask.empty()) {
-    const cv::Mat own_colour = dark & (outline_coloured | hair_coloured) & (head.mask != 0);
-    const int parts = cv::connectedComponents(own_colour, wedge_parts, 8, CV_32S);
-    wedge_goes.assign(static_cast<std::size_t>(parts), 1);
-    wedge_goes[0] = 0;
-    std::vector<std::uint8_t> fill(static_cast<std::size_t>(parts), 0);
-    std::vector<int> size(static_cast<std::size_t>(parts), 0), line(size);
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const int k = wedge_parts.at<int>(y, x);
-        if (k == 0) continue;
-        ++size[static_cast<std::size_t>(k)];
-        line[static_cast<std::size_t>(k)] += outline_coloured.at<std::uint8_t>(y, x) != 0;
-        if (hair_coloured.at<std::uint8_t>(y, x)) fill[static_cast<std::size_t>(k)] = 1;
-        if (!mixed[static_cast<std::size_t>(pieces.at<int>(y, x))] ||
-            !near_wedge.at<std::uint8_t>(y, x) || features.at<std::uint8_t>(y, x))
-          wedge_goes[static_cast<std::size_t>(k)] = 0;
-      }
-    // Between a point's converging outlines lies the lock's own fill: a
-    // piece of the outline's colour with none of it is a face line of that
-    // colour (wikipe-tan's black upper lashes under her bangs), not a wedge.
-    // And a wedge is mostly the outline's colour: a dark body mostly of the
-    // hair's (sylvie's hair beside her chin) keeps the old rules.
-    for (std::size_t k = 0; k < fill.size(); ++k)
-      wedge_goes[k] &= fill[k] && 2 * line[k] >= size[k] && size[k] >= kMinWedge;
-    points = points_over_lines(own_colour, hair, near_wedge, features, pieces, mixed, hair_coloured,
-                               outline_coloured);
-  }
-  return {std::move(wedge_parts), std::move(wedge_goes), std::move(points)};
+  Wedges out;
+  const cv::Mat own_colour = r.dark & (r.outline_coloured | r.hair_coloured) & (head.mask != 0);
+  const int parts = cv::connectedComponents(own_colour, out.parts, 8, CV_32S);
+  out.goes.assign(static_cast<std::size_t>(parts), 1);
+  out.goes[0] = 0;
+  std::vector<std::uint8_t> fill(static_cast<std::size_t>(parts), 0);
+  std::vector<int> size(static_cast<std::size_t>(parts), 0), line(size);
+  for (int y = 0; y < r.dark.rows; ++y)
+    for (int x = 0; x < r.dark.cols; ++x) {
+      const auto k = static_cast<std::size_t>(out.parts.at<int>(y, x));
+      if (k == 0) continue;
+      ++size[k];
+      line[k] += r.outline_coloured.at<std::uint8_t>(y, x) != 0;
+      if (r.hair_coloured.at<std::uint8_t>(y, x)) fill[k] = 1;
+      if (!p.mixed[static_cast<std::size_t>(p.pieces.at<int>(y, x))] ||
+          !near_wedge.at<std::uint8_t>(y, x) || r.features.at<std::uint8_t>(y, x))
+        out.goes[k] = 0;
+    }
+  // Between a point's converging outlines lies the lock's own fill: a
+  // piece of the outline's colour with none of it is a face line of that
+  // colour (wikipe-tan's black upper lashes under her bangs), not a wedge.
+  // And a wedge is mostly the outline's colour: a dark body mostly of the
+  // hair's (sylvie's hair beside her chin) keeps the old rules.
+  for (std::size_t k = 0; k < fill.size(); ++k)
+    out.goes[k] &= fill[k] && 2 * line[k] >= size[k] && size[k] >= kMinWedge;
+  out.points = points_over_lines(own_colour, r.hair, near_wedge, r.features, p.pieces, p.mixed,
+                                 r.hair_coloured, r.outline_coloured);
+  return out;
 }
 
 }  // namespace
