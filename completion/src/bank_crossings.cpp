@@ -453,24 +453,38 @@ void sort_by_rays(std::vector<MassJoin>& joins) {
             [](const MassJoin& x, const MassJoin& y) { return x.rays > y.rays; });
 }
 
+namespace {
+
+// The RGB step between two pieces' paints: the flat cels' on a cel drawing,
+// the colour fields' else.
+double paint_step(RegionFields& fields, int a, int b) {
+  return fields.cels().cel_drawing() ? fields.cels().step(a, b) : fields.step(a, b);
+}
+
+}  // namespace
+
 bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b) {
   if (tones.screentone()) return tones.match(a, b) == RegionTones::Match::kSame;
-  if (fields.cels().cel_drawing()) return fields.cels().step(a, b) <= kMaxOnePaintStep;
-  return fields.step(a, b) <= kMaxOnePaintStep;
+  return paint_step(fields, a, b) <= kMaxOnePaintStep;
 }
 
 bool two_paints(RegionTones& tones, RegionFields& fields, int a, int b) {
   if (tones.screentone()) return tones.match(a, b) == RegionTones::Match::kOther;
-  const double step = fields.cels().cel_drawing() ? fields.cels().step(a, b) : fields.step(a, b);
+  const double step = paint_step(fields, a, b);
   return std::isfinite(step) && step > kMinTwoPaintStep;
+}
+
+bool dark_shares_apart(RegionTones& tones, int a, int b) {
+  const double ta = tones.tone(a), tb = tones.tone(b);
+  return std::max(ta, tb) >= RegionTones::kMinTone &&
+         std::abs(ta - tb) > RegionTones::kMinOtherToneStep;
 }
 
 bool two_tones_by_dots(RegionTones& tones, int a, int b) {
   if (!tones.screentone()) return false;
   if (tones.match(a, b) == RegionTones::Match::kOther) return true;
-  const double ta = tones.tone(a), tb = tones.tone(b);
-  return std::min(ta, tb) < RegionTones::kPaperWhite && std::max(ta, tb) >= RegionTones::kMinTone &&
-         std::abs(ta - tb) > RegionTones::kMinOtherToneStep;
+  return std::min(tones.tone(a), tones.tone(b)) < RegionTones::kPaperWhite &&
+         dark_shares_apart(tones, a, b);
 }
 
 }  // namespace hair25d::completion::detail

@@ -288,6 +288,9 @@ class RegionTones {
 // dark-share step over kMinOtherToneStep when the dots are not measured).
 // 0 on other drawings.
 double tone_join_cost(RegionTones& tones, int a, int b);
+// Dark shares that say two tones without the dots: the darker piece toned
+// (kMinTone) and the two more than kMinOtherToneStep apart.
+bool dark_shares_apart(RegionTones& tones, int a, int b);
 // Two strands by their dots (screentone drawings only; false elsewhere):
 // both pieces' dots are measured and differ (`match` kOther), or one piece
 // is paper-white and the other toned (dark shares over kMinTone and more

@@ -777,11 +777,8 @@ double tone_join_cost(RegionTones& tones, int a, int b) {
     case RegionTones::Match::kUnknown:
       break;
   }
-  const double ta = tones.tone(a), tb = tones.tone(b);
-  if (std::max(ta, tb) < kWhite) return -kWhiteBonus;
-  if (std::max(ta, tb) >= RegionTones::kMinTone &&
-      std::abs(ta - tb) > RegionTones::kMinOtherToneStep)
-    return kWhiteTonePenalty;
+  if (std::max(tones.tone(a), tones.tone(b)) < kWhite) return -kWhiteBonus;
+  if (dark_shares_apart(tones, a, b)) return kWhiteTonePenalty;
   return 0.0;
 }
 

@@ -202,17 +202,17 @@ void write_contents(const fs::path& tmp, const HairModel& model) {
     doc["strands"] = std::move(strands);
     json relations = json::array();
     for (const RegionRelation& r : model.relations) {
-      json jr_rel = {{"a", r.a},
-                     {"b", r.b},
-                     {"relation", to_string(r.relation)},
-                     {"score", r.score},
-                     {"user_fixed", r.user_fixed},
-                     {"overridden", r.overridden}};
+      json entry = {{"a", r.a},
+                    {"b", r.b},
+                    {"relation", to_string(r.relation)},
+                    {"score", r.score},
+                    {"user_fixed", r.user_fixed},
+                    {"overridden", r.overridden}};
       if (r.equal_evidence)
-        jr_rel["equal_evidence"] = {{"log_odds", r.equal_evidence->log_odds},
-                                    {"open", r.equal_evidence->open},
-                                    {"open_fraction", r.equal_evidence->open_fraction}};
-      relations.push_back(std::move(jr_rel));
+        entry["equal_evidence"] = {{"log_odds", r.equal_evidence->log_odds},
+                                   {"open", r.equal_evidence->open},
+                                   {"open_fraction", r.equal_evidence->open_fraction}};
+      relations.push_back(std::move(entry));
     }
     doc["relations"] = std::move(relations);
     write_text_atomically(tmp / "model.json", doc.dump(1) + "\n");
