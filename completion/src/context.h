@@ -121,11 +121,13 @@ struct Join {
 // records) or refuses joining the strands of regions a and b. `face` (CV_8U,
 // image size, 1 = face; may be empty) hides back hair as an occluder does:
 // a patch between two pieces that lie above no region may run behind it.
-// `tones` are the drawing's (bank_crossings.h), shared with the mass and path
-// joins so that its screentone test and dot masses are measured once.
+// `tones` and `fields` are the drawing's (bank_crossings.h, join_paint.h),
+// shared with the mass and path joins so that its screentone test, dot
+// masses and pieces' linear fields are measured once.
 class RegionTones;
+class RegionFields;
 std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
-                              const cv::Mat& face, RegionTones& tones,
+                              const cv::Mat& face, RegionTones& tones, RegionFields& fields,
                               const std::function<bool(int, int)>& try_join);
 
 // Cases 2 and 3 (grow.cpp): the completed area of an unmatched edge, or an

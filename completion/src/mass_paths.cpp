@@ -112,6 +112,18 @@ double axis_cos(const Context& ctx, int id, const Vec2& dir) {
 // 1.000 / 0.833 and 0.980 / 0.926 (flat 102: three regions of one paint,
 // two strands); step 1.0: 1.000 / 0.803, 0.992 / 0.908 (more regions share).
 constexpr double kMaxRareCelStep = 0.5;
+// Drawings not of cel paint (session 24): the pieces' one paint is one
+// linear field, the joint fit missing each piece by at most
+// kMaxRareFieldStep RGB beyond its own (`RegionFields::step`), with no
+// third region. The generator's gradients run along each strand, so a
+// strand's pieces share its field while its neighbours' differ in colour,
+// direction or offset: of the region pairs of dev gradient 2000-2099 that
+// lie neither above the other, at most 0.05 RGB and no third region held
+// 112 of one strand and 16 of two (any sharing 573 / 67). Gradient
+// 2000-2099 0.932 / 0.762 -> 0.933 / 0.776 (one third region allowed:
+// 0.930 / 0.787, the added pairs a quarter wrong; 0.1 RGB the same as
+// 0.05).
+constexpr double kMaxRareFieldStep = 0.05;
 // Rarity needs regions to compare with (as joins.cpp's kRarePaintRegions),
 // and screentone drawings are left to the tone: their dots and paper are
 // every toned piece's two flat colours (the tone tests' hand-built pieces
@@ -912,15 +924,19 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
   // along at least one piece (two bangs of one paint side by side, flat
   // 115); and they stay within half the back hair's reach (the cap joined
   // to a side lock's tip of its paint far below, two-tone 108).
-  if (!tones.screentone() && ctx.regions.size() >= kMinRarePaintRegions &&
-      fields.cels().cel_drawing()) {
-    RegionCels& cels = fields.cels();
+  // Elsewhere one linear field (kMaxRareFieldStep) is the one paint.
+  if (!tones.screentone() && ctx.regions.size() >= kMinRarePaintRegions) {
+    const bool cel = fields.cels().cel_drawing();
+    const auto paint_step = [&](int a, int b) {
+      return cel ? fields.cels().step(a, b) : fields.step(a, b);
+    };
+    const double max_step = cel ? kMaxRareCelStep : kMaxRareFieldStep;
     std::vector<int> ids;
     for (const auto& [id, info] : ctx.regions) ids.push_back(id);
     std::map<int, int> sharing;
     for (std::size_t i = 0; i < ids.size(); ++i)
       for (std::size_t k = i + 1; k < ids.size(); ++k)
-        if (cels.step(ids[i], ids[k]) <= kMaxRareCelStep) ++sharing[ids[i]], ++sharing[ids[k]];
+        if (paint_step(ids[i], ids[k]) <= max_step) ++sharing[ids[i]], ++sharing[ids[k]];
     std::vector<MassJoin> rare;
     for (std::size_t i = 0; i < ids.size(); ++i)
       for (std::size_t k = i + 1; k < ids.size(); ++k) {
@@ -929,8 +945,8 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         if (sharing[a] != 1 || sharing[b] != 1) continue;
         if (ctx.is_above(a, b) || ctx.is_above(b, a)) continue;
         if (one_strand && one_strand(a, b)) continue;
-        const double step = cels.step(a, b);
-        if (step > kMaxRareCelStep) continue;
+        const double step = paint_step(a, b);
+        if (step > max_step) continue;
         const std::set<int> common = common_above(above(a), above(b));
         if (common.empty()) continue;
         const std::vector<Landing> landings = crossing_paths(ctx, a, b, common, reach);
