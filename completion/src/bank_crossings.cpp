@@ -453,24 +453,14 @@ void sort_by_rays(std::vector<MassJoin>& joins) {
             [](const MassJoin& x, const MassJoin& y) { return x.rays > y.rays; });
 }
 
-namespace {
-
-// The RGB step between two pieces' paints: the flat cels' on a cel drawing,
-// the colour fields' else.
-double paint_step(RegionFields& fields, int a, int b) {
-  return fields.cels().cel_drawing() ? fields.cels().step(a, b) : fields.step(a, b);
-}
-
-}  // namespace
-
 bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b) {
   if (tones.screentone()) return tones.match(a, b) == RegionTones::Match::kSame;
-  return paint_step(fields, a, b) <= kMaxOnePaintStep;
+  return fields.paint_step(a, b) <= kMaxOnePaintStep;
 }
 
 bool two_paints(RegionTones& tones, RegionFields& fields, int a, int b) {
   if (tones.screentone()) return tones.match(a, b) == RegionTones::Match::kOther;
-  const double step = paint_step(fields, a, b);
+  const double step = fields.paint_step(a, b);
   return std::isfinite(step) && step > kMinTwoPaintStep;
 }
 

@@ -143,6 +143,9 @@ class RegionFields {
   // strands they belong to, and two flat pieces of nearly one colour fit
   // one sloping between them.
   double step(int a, int b);
+  // The step of the drawing's kind of paint: the cel step on a drawing of
+  // cel paint, else the field's.
+  double paint_step(int a, int b) { return cels_.cel_drawing() ? cels_.step(a, b) : step(a, b); }
   // The pieces' cel paint (measured once for the mass and path joins).
   RegionCels& cels() { return cels_; }
 

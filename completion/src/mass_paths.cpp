@@ -927,16 +927,13 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
   // Elsewhere one linear field (kMaxRareFieldStep) is the one paint.
   if (!tones.screentone() && ctx.regions.size() >= kMinRarePaintRegions) {
     const bool cel = fields.cels().cel_drawing();
-    const auto paint_step = [&](int a, int b) {
-      return cel ? fields.cels().step(a, b) : fields.step(a, b);
-    };
     const double max_step = cel ? kMaxRareCelStep : kMaxRareFieldStep;
     std::vector<int> ids;
     for (const auto& [id, info] : ctx.regions) ids.push_back(id);
     std::map<int, int> sharing;
     for (std::size_t i = 0; i < ids.size(); ++i)
       for (std::size_t k = i + 1; k < ids.size(); ++k)
-        if (paint_step(ids[i], ids[k]) <= max_step) ++sharing[ids[i]], ++sharing[ids[k]];
+        if (fields.paint_step(ids[i], ids[k]) <= max_step) ++sharing[ids[i]], ++sharing[ids[k]];
     std::vector<MassJoin> rare;
     for (std::size_t i = 0; i < ids.size(); ++i)
       for (std::size_t k = i + 1; k < ids.size(); ++k) {
@@ -945,7 +942,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
         if (sharing[a] != 1 || sharing[b] != 1) continue;
         if (ctx.is_above(a, b) || ctx.is_above(b, a)) continue;
         if (one_strand && one_strand(a, b)) continue;
-        const double step = paint_step(a, b);
+        const double step = fields.paint_step(a, b);
         if (step > max_step) continue;
         const std::set<int> common = common_above(above(a), above(b));
         if (common.empty()) continue;
