@@ -79,7 +79,11 @@ std::vector<Row> read_rows(const std::string& path) {
     std::vector<std::string> cells;
     std::stringstream s(line);
     for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
-    if (cells.size() != 7 + kJoinFeatures) throw std::runtime_error("bad row in " + path);
+    // Session 24's two relation inputs end the row: CSVs collected before
+    // them hold 7 + 44 cells (docs/completion.md says how to extend them).
+    if (cells.size() != 7 + kJoinFeatures)
+      throw std::runtime_error("bad row in " + path + ": " + std::to_string(cells.size()) +
+                               " cells; must be " + std::to_string(7 + kJoinFeatures));
     Row r;
     r.set = cells[0];
     r.label = std::stoi(cells[4]);

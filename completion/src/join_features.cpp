@@ -51,6 +51,20 @@ double luma(const Eigen::Vector3d& c) { return 0.299 * c.x() + 0.587 * c.y() + 0
 
 }  // namespace
 
+RelationTrust relation_trust(const Context& ctx, const Edge& a, const Edge& b) {
+  RelationTrust out;
+  for (const Edge* e : {&a, &b})
+    for (int upper : e->occluders) {
+      const auto it = ctx.order_source.find({upper, e->region});
+      if (it == ctx.order_source.end() || it->second.user) continue;
+      out.user = false;
+      // Bounded: the layering's firm bar (2) reads 0.76, a weak order of
+      // score 0.5 reads 0.24.
+      out.confidence = std::min(out.confidence, std::tanh(it->second.score / kFirmOrderScore));
+    }
+  return out;
+}
+
 JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, const JoinTerms& t,
                            const std::set<int>& front, const std::map<int, int>& edge_count) {
   JoinFeatures f{};
@@ -176,6 +190,13 @@ JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, con
   f[41] = static_cast<float>(std::min(t.dark_step, 0.3));
   f[42] = static_cast<float>(t.top_occluder);
   f[43] = static_cast<float>(std::min(t.patch_occluders, 4)) / 4.0f;
+  // Session 24: how sure the relations are that make the two edges (each
+  // piece below its edge's occluders). A wrong order of the layering makes
+  // an edge, and a candidate whose other inputs look right (session 23,
+  // joins40 / joins42 in docs/completion.md).
+  const RelationTrust trust = relation_trust(ctx, a, b);
+  f[44] = trust.user ? 1.0f : 0.0f;
+  f[45] = static_cast<float>(trust.confidence);
   return f;
 }
 

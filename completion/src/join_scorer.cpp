@@ -57,7 +57,9 @@ constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
                                                "mass_step",
                                                "dark_step",
                                                "top_occluder",
-                                               "patch_occluders"};
+                                               "patch_occluders",
+                                               "relations_user",
+                                               "relation_confidence"};
 
 std::string num(double v) {
   std::ostringstream s;
