@@ -59,7 +59,8 @@ constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
                                                "top_occluder",
                                                "patch_occluders",
                                                "relations_user",
-                                               "relation_confidence"};
+                                               "relation_confidence",
+                                               "cover_confidence"};
 
 std::string num(double v) {
   std::ostringstream s;

@@ -214,10 +214,11 @@ TEST(JoinScorer, FeaturesCountTheOccludersOverTheGap) {
   }
 }
 
-// Session 24: how sure the relations are that make the two edges. The
-// user's orders are certain; the layering's read their weakest |score|
-// through tanh(|score| / 2); a relation of a region far from the edges
-// (4 below 1) is not one the candidate rests on.
+// Session 24: how sure the relations are that make the two edges and the
+// cover over the join's middle. The user's orders are certain; the
+// layering's read their weakest |score| through tanh(|score| / 2); a
+// relation of a region far from the edges (4 below 1) is not one the
+// candidate rests on.
 TEST(JoinScorer, FeaturesSayHowSureTheEdgesRelationsAre) {
   auto measured = [](int a, int b, double score) {
     return RegionRelation{a, b, Relation::kBelow, score, false, false};
@@ -244,6 +245,8 @@ TEST(JoinScorer, FeaturesSayHowSureTheEdgesRelationsAre) {
     ASSERT_NE(c, nullptr);
     EXPECT_EQ(c->features[feature("relations_user")], k.user);
     EXPECT_NEAR(c->features[feature("relation_confidence")], k.confidence, 1e-6);
+    // Region 3 lies over the join's middle too.
+    EXPECT_NEAR(c->features[feature("cover_confidence")], k.confidence, 1e-6);
   }
 }
 
