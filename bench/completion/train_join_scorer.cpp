@@ -79,8 +79,8 @@ std::vector<Row> read_rows(const std::string& path) {
     std::vector<std::string> cells;
     std::stringstream s(line);
     for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
-    // Session 24's two relation inputs end the row: CSVs collected before
-    // them hold 7 + 44 cells (docs/completion.md says how to extend them).
+    // A CSV collected with another number of inputs (another session's
+    // scorer) says so rather than only "bad row".
     if (cells.size() != 7 + kJoinFeatures)
       throw std::runtime_error("bad row in " + path + ": " + std::to_string(cells.size()) +
                                " cells; must be " + std::to_string(7 + kJoinFeatures));

@@ -217,17 +217,10 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
       // groups made one, so the summary adds up: regions - strands).
       if (strands.find(r.a) != strands.find(r.b)) ++result.equal_merges;
       strands.unite(r.a, r.b);
-    } else {
-      const bool below = r.relation == Relation::kBelow;
-      const int lower = below ? r.a : r.b, upper = below ? r.b : r.a;
-      ctx.regions[lower].occluders.insert(upper);
-      // A pair related twice is as sure as its weaker relation.
-      const detail::Context::OrderSource source{r.user_fixed, std::abs(r.score)};
-      const auto [it, added] = ctx.order_source.try_emplace({upper, lower}, source);
-      if (!added && (it->second.user > source.user ||
-                     (it->second.user == source.user && it->second.score > source.score)))
-        it->second = source;
-    }
+    } else if (r.relation == Relation::kBelow)
+      ctx.regions[r.a].occluders.insert(r.b);
+    else
+      ctx.regions[r.b].occluders.insert(r.a);
   }
 
   for (const RegionRelation& r : relations)

@@ -80,14 +80,6 @@ struct Context {
     return (occludes(a, b) || occludes(b, a)) &&
            !remote_orders.count({std::min(a, b), std::max(a, b)});
   }
-  // Session 24: how sure the relation is that makes `upper` an occluder of
-  // `region` (read_relations; {upper, region}): the user's are certain, the
-  // layering's orders as sure as their score says (join_features.cpp).
-  struct OrderSource {
-    bool user = false;
-    double score = 0.0;  // |RegionRelation::score|
-  };
-  std::map<std::pair<int, int>, OrderSource> order_source;
   bool occludes(int occluder, int region) const {
     auto it = regions.find(region);
     return it != regions.end() && it->second.occluders.count(occluder) > 0;

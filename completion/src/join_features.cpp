@@ -51,27 +51,6 @@ double luma(const Eigen::Vector3d& c) { return 0.299 * c.x() + 0.587 * c.y() + 0
 
 }  // namespace
 
-namespace {
-
-// `out` weakened by the order `upper` above `region`, if there is one.
-void weaken(const Context& ctx, int upper, int region, RelationTrust* out) {
-  const auto it = ctx.order_source.find({upper, region});
-  if (it == ctx.order_source.end() || it->second.user) return;
-  out->user = false;
-  // Bounded: the layering's firm bar (2) reads 0.76, a weak order of score
-  // 0.5 reads 0.24.
-  out->confidence = std::min(out->confidence, std::tanh(it->second.score / kFirmOrderScore));
-}
-
-}  // namespace
-
-RelationTrust relation_trust(const Context& ctx, const Edge& a, const Edge& b) {
-  RelationTrust out;
-  for (const Edge* e : {&a, &b})
-    for (int upper : e->occluders) weaken(ctx, upper, e->region, &out);
-  return out;
-}
-
 JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, const JoinTerms& t,
                            const std::set<int>& front, const std::map<int, int>& edge_count) {
   JoinFeatures f{};
@@ -197,19 +176,6 @@ JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, con
   f[41] = static_cast<float>(std::min(t.dark_step, 0.3));
   f[42] = static_cast<float>(t.top_occluder);
   f[43] = static_cast<float>(std::min(t.patch_occluders, 4)) / 4.0f;
-  // Session 24: how sure the relations are that make the two edges (each
-  // piece below its edge's occluders). A wrong order of the layering makes
-  // an edge, and a candidate whose other inputs look right (session 23,
-  // joins40 / joins42 in docs/completion.md).
-  const RelationTrust trust = relation_trust(ctx, a, b);
-  f[44] = trust.user ? 1.0f : 0.0f;
-  f[45] = static_cast<float>(trust.confidence);
-  // And the direct orders that put the regions over the join's middle above
-  // a piece (mid_above_both and the cover read them).
-  RelationTrust over;
-  for (int l : crossed)
-    for (int region : {a.region, b.region}) weaken(ctx, l, region, &over);
-  f[46] = static_cast<float>(over.confidence);
   return f;
 }
 

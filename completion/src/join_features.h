@@ -38,18 +38,6 @@ struct JoinTerms {
   int patch_occluders = 0;  // occluders holding ≥ 10 % of the covered patch
 };
 
-// Session 24: how sure the relations are that make a candidate's two edges
-// (each piece lies below its edge's occluders; Context::order_source): `user`
-// when all are the user's (or there are none: an ink edge rests on no
-// order), `confidence` the weakest one's, 1 for the user's, else
-// tanh(|score| / kFirmOrderScore).
-struct RelationTrust {
-  bool user = true;
-  double confidence = 1.0;
-};
-inline constexpr double kFirmOrderScore = 2.0;  // completion.cpp kFirmRelationScore
-RelationTrust relation_trust(const Context& ctx, const Edge& a, const Edge& b);
-
 // Every input but the rivals' (indices 27–30, filled by `add_rival_features`).
 // `front`: regions above some region; `edge_count`: atoms of each region.
 JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, const JoinTerms& t,

@@ -57,10 +57,7 @@ constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
                                                "mass_step",
                                                "dark_step",
                                                "top_occluder",
-                                               "patch_occluders",
-                                               "relations_user",
-                                               "relation_confidence",
-                                               "cover_confidence"};
+                                               "patch_occluders"};
 
 std::string num(double v) {
   std::ostringstream s;

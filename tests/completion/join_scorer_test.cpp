@@ -214,42 +214,6 @@ TEST(JoinScorer, FeaturesCountTheOccludersOverTheGap) {
   }
 }
 
-// Session 24: how sure the relations are that make the two edges and the
-// cover over the join's middle. The user's orders are certain; the
-// layering's read their weakest |score| through tanh(|score| / 2); a
-// relation of a region far from the edges (4 below 1) is not one the
-// candidate rests on.
-TEST(JoinScorer, FeaturesSayHowSureTheEdgesRelationsAre) {
-  auto measured = [](int a, int b, double score) {
-    return RegionRelation{a, b, Relation::kBelow, score, false, false};
-  };
-  Drawing d = banded(false);
-  paint(
-      d, [](double x, double y) { return x > 20 && x < 60 && y > 120 && y < 160; },
-      Rgba{90, 140, 160, 255}, 4);
-  struct Case {
-    std::vector<RegionRelation> relations;
-    float user, confidence;
-  };
-  const Case cases[] = {
-      {{below(1, 3), below(2, 3), measured(4, 1, 0.1)}, 1.0f, 1.0f},
-      {{measured(1, 3, 3.0), below(2, 3), measured(4, 1, 0.1)}, 0.0f, std::tanh(1.5f)},
-      {{measured(1, 3, 3.0), measured(2, 3, -0.8)}, 0.0f, std::tanh(0.4f)},
-      // The same pair twice is as sure as its weaker relation.
-      {{below(1, 3), measured(1, 3, 1.0), below(2, 3)}, 0.0f, std::tanh(0.5f)},
-  };
-  for (const Case& k : cases) {
-    d.relations = k.relations;
-    const Result r = recorded(d, Vec2(150, 300));
-    const JoinCandidate* c = candidate(r, 1, 2);
-    ASSERT_NE(c, nullptr);
-    EXPECT_EQ(c->features[feature("relations_user")], k.user);
-    EXPECT_NEAR(c->features[feature("relation_confidence")], k.confidence, 1e-6);
-    // Region 3 lies over the join's middle too.
-    EXPECT_NEAR(c->features[feature("cover_confidence")], k.confidence, 1e-6);
-  }
-}
-
 TEST(JoinScorer, FeaturesDoNotChangeUnderMirrorOrTransposition) {
   const Drawing d = banded(false);
   const Result base = recorded(d, Vec2(150, 300));

@@ -12,9 +12,7 @@ namespace hair25d::completion {
 
 // Inputs of the scorer, all symmetric in the two pieces (join_features.cpp
 // says what each is; `join_feature_name` names them).
-// Session 24: 47 (relations_user, relation_confidence, cover_confidence);
-// nets trained on 44 read the three with zero weights (their rows end there).
-inline constexpr int kJoinFeatures = 47;
+inline constexpr int kJoinFeatures = 44;
 inline constexpr int kJoinHidden = 12;
 using JoinFeatures = std::array<float, kJoinFeatures>;
 
