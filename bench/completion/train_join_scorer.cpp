@@ -79,7 +79,11 @@ std::vector<Row> read_rows(const std::string& path) {
     std::vector<std::string> cells;
     std::stringstream s(line);
     for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
-    if (cells.size() != 7 + kJoinFeatures) throw std::runtime_error("bad row in " + path);
+    // A CSV collected with another number of inputs (another session's
+    // scorer) says so rather than only "bad row".
+    if (cells.size() != 7 + kJoinFeatures)
+      throw std::runtime_error("bad row in " + path + ": " + std::to_string(cells.size()) +
+                               " cells; must be " + std::to_string(7 + kJoinFeatures));
     Row r;
     r.set = cells[0];
     r.label = std::stoi(cells[4]);
