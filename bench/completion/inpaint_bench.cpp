@@ -1,6 +1,6 @@
 // The strands' colour fill (inpaint_cel) on screentone against flat paint:
 // a screentone's hidden parts are filled from whole dot-lattice translates
-// (docs/completion.md, session 15). Milliseconds, medians of 5 repetitions.
+// (docs/completion-record.md, session 15). Milliseconds, medians of 5 repetitions.
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -9,7 +9,7 @@
 //            separate right from wrong in the band on every file, and writes
 //            the weights as join_scorer_weights.cpp.
 // Training seeds must be disjoint from the evaluation seeds (101–116,
-// 201–216, 301–316, 401–416) and the annotated cases; docs/completion.md gives the
+// 201–216, 301–316, 401–416) and the annotated cases; docs/completion-record.md gives the
 // commands.
 #include <CLI/CLI.hpp>
 #include <algorithm>

@@ -55,7 +55,7 @@ std::set<std::pair<int, int>> touching_pairs(const LabelMap& labels) {
 // strands (merged into one); 978 such orders, 90 between pieces of one
 // strand (never joined then). Ignored, precision / recall with the
 // layering's relations: flat 2000-2099 0.744 / 0.585 -> 0.938 / 0.661, mixed
-// 0.681 / 0.488 -> 0.897 / 0.539 (docs/completion.md, "Session 16: joins
+// 0.681 / 0.488 -> 0.897 / 0.539 (docs/completion-record.md, "Session 16: joins
 // with the layering's relations"); with the annotation's relations
 // (user-fixed) nothing changes.
 bool unmeasured(const RegionRelation& r, const std::set<std::pair<int, int>>& touching) {
@@ -79,7 +79,7 @@ bool unmeasured(const RegionRelation& r, const std::set<std::pair<int, int>>& to
 // 2000-2099 0.882 / 0.634 -> 0.887 / 0.650, flat 3000-3099 0.924 / 0.752 ->
 // 0.926 / 0.766; fresh flat 4000 / 5000 +10 / +24 right pairs for 0 / +2
 // wrong ones, mixed +16 / +19 for +2 / +3, screentone 2000-2099 +31 for +4
-// (docs/completion.md, "Session 18: joins with the layering's relations").
+// (docs/completion-record.md, "Session 18: joins with the layering's relations").
 // With the annotation's relations (the user's) nothing changes.
 bool remote(const RegionRelation& r, const std::set<std::pair<int, int>>& touching) {
   return !r.user_fixed && !touching.count({std::min(r.a, r.b), std::max(r.a, r.b)});
@@ -92,7 +92,7 @@ bool remote(const RegionRelation& r, const std::set<std::pair<int, int>>& touchi
 // relation), 1.0, 1.5, 2.0, 3.0: flat 2000-2099 0.938 / 0.661, 0.940 /
 // 0.700, 0.942 / 0.725, 0.939 / 0.742, 0.934 / 0.755; mixed 3000-3099 0.896 /
 // 0.576, 0.898 / 0.629, 0.889 / 0.640, 0.887 / 0.644, 0.880 / 0.648 (all
-// four sets in docs/completion.md). The user's relations (the annotation's)
+// four sets in docs/completion-record.md). The user's relations (the annotation's)
 // are always firm.
 constexpr double kFirmRelationScore = 2.0;
 
@@ -110,11 +110,11 @@ bool firm(const RegionRelation& r) {
 // session 23 each such pair was united outright, and the false ones (the
 // annotation orders the pair) were the largest source of wrong pairs with
 // the layering's relations: on dev mixed 2000-2099 15 relations, 41 of the
-// 85 wrong pairs (docs/completion.md, "Session 22: joins with the
+// 85 wrong pairs (docs/completion-record.md, "Session 22: joins with the
 // layering's relations"). Session 23 (joins39), precision / recall with the
 // layering's relations: mixed 2000-2099 0.891 / 0.656 -> 0.912 / 0.659,
 // flat 2000-2099 0.934 / 0.788 -> 0.955 / 0.796 (all sets in
-// docs/completion.md, "Session 23: a confidence for the layering's
+// docs/completion-record.md, "Session 23: a confidence for the layering's
 // equals"). With the annotation's relations (the user's) nothing changes.
 constexpr double kFirmEqualLogOdds = 2.0;
 

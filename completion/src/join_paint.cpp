@@ -36,7 +36,7 @@ constexpr double kMaxShadingStep = 3.0;
 // less change predicted stepped at most 0.24 RGB, wrong ones 1.49, 8.66 and
 // 9.87 (change 0.4-2.5); elsewhere right ones stepped at most 2.56 (one
 // 7.37 at a change of 40), wrong ones 3.57 at 15 (and 1.2-3.8 at changes of
-// 10-45, kept). Figures in docs/completion.md, "Session 13".
+// 10-45, kept). Figures in docs/completion-record.md, "Session 13".
 constexpr double kMaxFlatFitStep = 1.0;
 constexpr double kFittedChangeShare = 0.2;
 

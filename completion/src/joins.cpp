@@ -34,7 +34,7 @@ constexpr double kNoCommonOccluderCost = 0.2;
 // joined behind strand 13 to back 27 across the 975 px of piece 25 (another
 // tone), 0.089 of the patch; right joins crossing a third back piece crossed
 // one of their own paint (flat 101-116: 0.06 of the patch, step 0). Every
-// limit from 0 to 0.08 measured the same on all sets (docs/completion.md).
+// limit from 0 to 0.08 measured the same on all sets (docs/completion-record.md).
 constexpr double kMaxOtherBackShare = 0.04;
 // Region colours further apart than this are another paint (not screentone).
 constexpr double kOtherBackColourStep = 20.0;
@@ -86,7 +86,7 @@ constexpr double kMaxBackWindowStep = 1.0;
 // 0.6), the 11 wrong ones of flat and two-tone 1.9-14.0. Pieces of back hair (above no region) are
 // left out: a two-tone back is one mass in a base and a band (`RegionCels`), and a right
 // back-to-back join stepped 1.9 RGB (two-tone 204, held out). Figures in
-// docs/completion.md "Session 12: wrong strand joins".
+// docs/completion-record.md "Session 12: wrong strand joins".
 constexpr double kMaxFlatStrandStep = 1.5;
 // *Rare paint* (session 13): a strand join between two pieces of one flat
 // paint (`PaintStep::flat`, step at most kRarePaintStep RGB), one of them a
@@ -102,7 +102,7 @@ constexpr double kMaxFlatStrandStep = 1.5;
 // 0.677); gradient, screentone and the annotated six unchanged. Sharing at
 // most 1 (the partner only) lost strands in three pieces, 3 two-tone
 // precision; without the front piece a right back-hair join chained into a
-// wrong one (flat 201-216 precision 0.964). Figures in docs/completion.md
+// wrong one (flat 201-216 precision 0.964). Figures in docs/completion-record.md
 // "Session 13: strand links over the cost limit".
 constexpr double kRarePaintBonus = 1.5;
 constexpr double kRarePaintStep = 0.5;
@@ -131,7 +131,7 @@ constexpr std::size_t kRarePaintRegions = 8;
 // by at most 0.1 RGB 1059 times, wrong ones 41. Gradient 2000-2099 with
 // the path joins' field below: 0.933 / 0.776 -> 0.940 / 0.795 (step 0.1:
 // 0.938 / 0.789, 0.5: 0.936 / 0.796, 1.0: 0.935 / 0.801; bonus 0.6: 0.937 /
-// 0.785, 1.2: 0.939 / 0.795). Figures in docs/completion.md, "Session 24".
+// 0.785, 1.2: 0.939 / 0.795). Figures in docs/completion-record.md, "Session 24".
 constexpr double kOneFieldStep = 0.25;
 constexpr double kOneFieldBonus = 0.9;
 

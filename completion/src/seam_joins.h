@@ -35,7 +35,7 @@ std::vector<SeamEnd> seam_ends(const Context& ctx, int a, int b);
 // (`through` at most 150°). Where a strand lies above both pieces, its own
 // outline makes the sides and says nothing. Chosen on the weakly ordered
 // touching pairs of one paint of dev sets flat and mixed 2000-2099
-// (docs/completion.md, "Session 17: seam joins").
+// (docs/completion-record.md, "Session 17: seam joins").
 bool seam_geometry(const Context& ctx, int a, int b, const std::function<bool(int, int)>& above);
 
 }  // namespace hair25d::completion::detail

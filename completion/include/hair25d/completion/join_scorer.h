@@ -47,7 +47,7 @@ struct JoinScorerOptions {
   // scorer's probability p: with p >= threshold the cost becomes at most
   // max_join_cost + (threshold − p) × (band_high − band_low) (accepted, and
   // ranked by p); with p < refuse_below the candidate is refused; else the
-  // hand cost stands. Session 14 (docs/completion.md): retrained on the
+  // hand cost stands. Session 14 (docs/completion-record.md): retrained on the
   // candidates of today's hand cost up to 4.0; with the band [1.4, 4.0] and
   // threshold 0.9 it raises recall on 10 of the 12 generated sets of seeds
   // 101-116, 201-216 and 401-416 and keeps the annotated six, but loses
@@ -57,7 +57,7 @@ struct JoinScorerOptions {
   // limit (band_low = max_join_cost 2.4) at p >= 0.8, which raises recall
   // on every 100-drawing dev set with precision within 0.003 with the
   // annotation's relations, but loses 0.004 on mixed with the layering's
-  // (docs/completion.md "Session 17"). On the lead's held sets it raised
+  // (docs/completion-record.md "Session 17"). On the lead's held sets it raised
   // recall by 0.007-0.035 with the annotation's relations at the same
   // precision, and by 0.013-0.052 with the layering's at 0.001-0.005 less
   // precision: on since session 17.
@@ -65,7 +65,7 @@ struct JoinScorerOptions {
   double band_low = 2.4, band_high = 4.0;
   double threshold = 0.8;
   // The threshold on screentone drawings (RegionTones::screentone), the
-  // others' `threshold`. Session 21 (docs/completion.md): 0.65 raised
+  // others' `threshold`. Session 21 (docs/completion-record.md): 0.65 raised
   // screentone recall by 0.009-0.021 on dev and fresh 100-drawing sets but
   // lost 0.006 / 0.003 precision on fresh 8000-8099 (annotation's /
   // layering's relations): left at `threshold`'s 0.8.
@@ -77,7 +77,7 @@ struct JoinScorerOptions {
   // other up to wide_band_high, judged by `wide_join_scorer` (trained on such
   // candidates only), joined at p >= wide_threshold and never by the hand
   // cost. With max_angle_deg <= max_join_angle_deg there are none. Mixed
-  // and flat 100-drawing sets (docs/completion.md "Session 18"): recall
+  // and flat 100-drawing sets (docs/completion-record.md "Session 18"): recall
   // +0.002 to +0.008 with no wrong pair more; the annotated six unchanged.
   // Off by default (0): on the lead's held sets it gained 3 right pairs of
   // 1596 (flat) and 1 of 1722 (mixed) and cost `hair25d model` of a 1024²
