@@ -103,11 +103,7 @@ std::vector<int> strand_joined_with_1(const Field& upper, const Field& lower,
   repaint_field(d, 2, lower);
   repaint_field(d, 3, kBand);
   repaint_field(d, 4, kBack);
-  Options o;
-  o.max_join_cost = max_join_cost;
-  o.inpaint_background = false;
-  o.face_joins = false;
-  return test::regions_with(complete_strands(test::input_of(d, Vec2(125, 10)), o), 1);
+  return test::joined_with_1(d, max_join_cost);
 }
 
 TEST(GradientJoins, StrandPiecesOfOneFieldJoinBelowTheShadingBonusAlone) {

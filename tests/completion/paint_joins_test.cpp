@@ -17,6 +17,7 @@ namespace {
 using test::below;
 using test::blank;
 using test::Drawing;
+using test::joined_with_1;
 using test::paint;
 
 constexpr Rgba kBase{200, 150, 110, 255};
@@ -36,14 +37,6 @@ Drawing strand_under_band() { return test::strand_under_band(kBack, kBase); }
 // Cel paint: `base` with a shadow band (0.72 of it) down the left 15 px.
 void cel(Drawing& d, int region, Rgba base) {
   repaint(d, region, [base](int x, int) { return x < 115 ? scaled(base, 0.72) : base; });
-}
-
-std::vector<int> joined_with_1(const Drawing& d, double max_join_cost) {
-  Options o;
-  o.max_join_cost = max_join_cost;
-  o.inpaint_background = false;
-  o.face_joins = false;
-  return test::regions_with(complete_strands(test::input_of(d, Vec2(125, 10)), o), 1);
 }
 
 TEST(PaintJoins, CelPiecesOfTwoBaseColoursAreNotJoined) {

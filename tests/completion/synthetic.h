@@ -184,4 +184,15 @@ inline std::vector<int> regions_with(const Result& r, int region) {
   return s != nullptr ? s->regions : std::vector<int>{};
 }
 
+// The regions completed in one strand with region 1 (the upper piece of
+// strand_under_band) under a join cost limit of `max_join_cost`: no
+// background fill, no face joins, the head above the strand at (125, 10).
+inline std::vector<int> joined_with_1(const Drawing& d, double max_join_cost) {
+  Options o;
+  o.max_join_cost = max_join_cost;
+  o.inpaint_background = false;
+  o.face_joins = false;
+  return regions_with(complete_strands(input_of(d, Vec2(125, 10)), o), 1);
+}
+
 }  // namespace hair25d::completion::test
