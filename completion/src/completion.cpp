@@ -12,6 +12,7 @@
 #include "context.h"
 #include "face_joins.h"
 #include "hair25d/core/error.h"
+#include "hair25d/core/firm_equal.h"
 #include "join_paint.h"
 #include "raster.h"
 #include "seam_joins.h"
@@ -102,7 +103,7 @@ bool firm(const RegionRelation& r) {
 
 // The layering's `equal`s it is not sure of (EqualEvidence), not the
 // user's: the same-depth model's mean log-odds under the layering's own
-// bar for a firm equal (kFirmEqualLogOdds in layering.cpp, 2), or, for a
+// bar for a firm equal (hair25d/core/firm_equal.h), or, for a
 // pair equal because its common boundary is open, under 0 (the model leans
 // to two depths). Such an equal between pieces painted apart
 // (bank_crossings.h `two_paints`) makes no strand of them: it is neither a
@@ -116,7 +117,6 @@ bool firm(const RegionRelation& r) {
 // flat 2000-2099 0.934 / 0.788 -> 0.955 / 0.796 (all sets in
 // docs/completion-record.md, "Session 23: a confidence for the layering's
 // equals"). With the annotation's relations (the user's) nothing changes.
-constexpr double kFirmEqualLogOdds = 2.0;
 
 bool weak_equal(const RegionRelation& r) {
   if (r.user_fixed || r.relation != Relation::kEqual || !r.equal_evidence) return false;

@@ -14,6 +14,7 @@
 #include "boundary_trace.h"
 #include "colour_line.h"
 #include "hair25d/core/error.h"
+#include "hair25d/core/firm_equal.h"
 #include "hair25d/layering/depth_order.h"
 #include "hair25d/layering/metrics.h"
 #include "hair25d/layering/optimizer.h"
@@ -797,10 +798,9 @@ Result layer_regions(const Image& image, const LabelMap& regions, const Options&
     return RelationAnchor{pts[m], b.left == a ? Vec2(-left_normal) : left_normal};
   };
   // Same-depth pairs the joined model (6c with the patch network) is sure
-  // of: mean log-odds over kFirmEqualLogOdds. They go before the orders
+  // of: mean log-odds over kFirmEqualLogOdds (core/firm_equal.h). They go before the orders
   // (depth_order.h), which otherwise override an "equal" between regions
   // ordered through others.
-  constexpr double kFirmEqualLogOdds = 2.0;
   std::vector<char> firm;
   // The same-depth model (6c) speaks only with the learned metric.
   const bool learned_same = options.learned_equal && options.metric == Metric::kLearned;
