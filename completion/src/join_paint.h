@@ -36,9 +36,11 @@ struct RegionPaint {
 // Flat colours of `pixels` of `image`, at most `most`: in 8-level bins, the
 // mean of the pixels in the 3 x 3 x 3 bins round the bin whose neighbourhood
 // holds most, taken out in turn while that holds at least `min_share` of the
-// pixels.
+// pixels. With `exact_paint`, a cluster one exact colour holds more than
+// half of is that colour's paint: the mean of the colours within 1 RGB of
+// it (a cel band's anti-aliased blends left out).
 std::vector<Eigen::Vector3d> flat_colours(const Image& image, const std::vector<cv::Point>& pixels,
-                                          int most, double min_share);
+                                          int most, double min_share, bool exact_paint = false);
 
 // The paint next to edge `e`'s cut, and the paint of a whole region.
 EdgePaint edge_paint(const Context& ctx, const Edge& e);

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace hair25d::completion::detail {
@@ -19,7 +21,7 @@ std::vector<Eigen::Vector3d> flats_of_halves(Rgba a, Rgba b) {
       if (x >= 10) image.at(x, y) = b;
       pixels.emplace_back(x, y);
     }
-  return flat_colours(image, pixels, 2, 0.15);
+  return flat_colours(image, pixels, 2, 0.15, true);
 }
 
 // White (every channel in the top bin) and yellow (blue near 0) are two
@@ -44,6 +46,83 @@ TEST(JoinPaint, NeighbouringBinsAreOnePaint) {
   ASSERT_EQ(flats.size(), 1u);
   EXPECT_NEAR(flats[0].x(), 103.0, 1e-9);
   EXPECT_NEAR(flats[0].y(), 60.0, 1e-9);
+}
+
+// A 24 x 16 piece of cel paint: `base` on the left, `band` from column 14,
+// and between them (columns 12, 13) the band edge's anti-aliased blends, a
+// quarter and a half of the way from the base to the band (rounded).
+std::vector<Eigen::Vector3d> flats_of_banded(Rgba base, Rgba band, int most,
+                                             std::vector<cv::Point>* taken = nullptr) {
+  Image image(24, 16, base);
+  std::vector<cv::Point> pixels;
+  const auto blend = [&](double t) {
+    const auto mix = [t](std::uint8_t a, std::uint8_t b) {
+      return static_cast<std::uint8_t>(std::lround((1 - t) * a + t * b));
+    };
+    return Rgba{mix(base.r, band.r), mix(base.g, band.g), mix(base.b, band.b), 255};
+  };
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 24; ++x) {
+      if (x == 12) image.at(x, y) = blend(0.25);
+      if (x == 13) image.at(x, y) = blend(0.5);
+      if (x >= 14) image.at(x, y) = band;
+      pixels.emplace_back(x, y);
+    }
+  if (taken) *taken = pixels;
+  return flat_colours(image, pixels, most, 0.05, true);
+}
+
+// A cel band's anti-aliased edge is no paint: its blends a quarter of the
+// way fall into the bins round the base, and their mean pulled the base
+// 0.8 RGB towards the band here (over 1.1 RGB for a tenth of the regions of
+// dev two-tone 2000-2099), so
+// two pieces of one strand, one seen with its band and one without, stepped
+// over the rare paint's 0.5 RGB (joins.cpp kRarePaintStep). The paint is the
+// exact colour holding most of the cluster.
+TEST(JoinPaint, BandEdgeBlendsAreNoPaint) {
+  const Rgba base{120, 80, 60, 255}, band{86, 58, 43, 255};
+  const std::vector<Eigen::Vector3d> flats = flats_of_banded(base, band, 2);
+  ASSERT_EQ(flats.size(), 2u);
+  EXPECT_NEAR((flats[0] - Eigen::Vector3d(120, 80, 60)).norm(), 0.0, 1e-9) << flats[0].transpose();
+  EXPECT_NEAR((flats[1] - Eigen::Vector3d(86, 58, 43)).norm(), 0.0, 1e-9) << flats[1].transpose();
+}
+
+// Pieces of one strand step nothing once the blends are left out, whichever
+// paints their cuts show; a strand one level off in red still steps a level.
+TEST(JoinPaint, OneStrandWithAndWithoutItsBandStepsNothing) {
+  const Rgba base{120, 80, 60, 255}, band{86, 58, 43, 255};
+  EdgePaint with_band, without, near;
+  RegionPaint region_with_band, region_without, region_near;
+  region_with_band.flats = with_band.flats = flats_of_banded(base, band, 2);
+  region_without.flats = without.flats = flats_of_halves(base, base);
+  region_near.flats = near.flats = flats_of_halves(Rgba{121, 80, 60, 255}, Rgba{121, 80, 60, 255});
+  for (RegionPaint* r : {&region_with_band, &region_without, &region_near}) r->exact_share = 1.0;
+  with_band.fit_residual = without.fit_residual = near.fit_residual = 30.0;  // not linear
+  const Edge a, b;
+  const Eigen::Vector3d no_shadow = Eigen::Vector3d::Zero();
+  const PaintStep same =
+      paint_step(a, b, with_band, without, region_with_band, region_without, no_shadow);
+  EXPECT_TRUE(same.flat);
+  EXPECT_NEAR(same.step, 0.0, 1e-9);
+  const PaintStep other =
+      paint_step(a, b, with_band, near, region_with_band, region_near, no_shadow);
+  EXPECT_TRUE(other.flat);
+  EXPECT_NEAR(other.step, 1.0, 1e-9);
+}
+
+// A gradient has no exact colour holding most of a cluster: its flat colour
+// stays the cluster's mean (reds 100-107 in equal shares: 103.5).
+TEST(JoinPaint, GradientClusterKeepsItsMean) {
+  Image image(16, 8, Rgba{0, 0, 0, 255});
+  std::vector<cv::Point> pixels;
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x) {
+      image.at(x, y) = Rgba{static_cast<std::uint8_t>(100 + x / 2), 60, 40, 255};
+      pixels.emplace_back(x, y);
+    }
+  const std::vector<Eigen::Vector3d> flats = flat_colours(image, pixels, 1, 0.15, true);
+  ASSERT_EQ(flats.size(), 1u);
+  EXPECT_NEAR(flats[0].x(), 103.5, 1e-9);
 }
 
 }  // namespace
