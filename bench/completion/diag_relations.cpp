@@ -1,0 +1,250 @@
+// Which of the layering's relations cost the joins right pairs and add
+// wrong ones, against the annotation's relations (session 25, joins50; the
+// method of session 22's joins38, docs/completion-record.md). Per generated
+// drawing: completion with the annotation's relations (A) and the
+// layering's (P); lost = right in A, not in P; added = wrong in P, not in A.
+// Each class of the layering's relations that disagrees with the annotation
+// is corrected alone (the annotation's relation, as the user's; a pair the
+// annotation does not relate dropped) and the lost pairs given back / added
+// pairs gone are counted (pairs a correction loses or adds anew are not).
+// Equals between two strands are printed one by one with their evidence and
+// paint, the true equals of screentone drawings with their tone tests.
+//   diag_relations --shading screentone|mixed|... --seed S --count N
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+
+#include "../../completion/src/bank_crossings.h"
+#include "../../completion/src/context.h"
+#include "../../completion/src/join_paint.h"
+#include "../../tests/completion/annotated_eval.h"
+#include "case_relations.h"
+#include "hair25d/generator/generator.h"
+
+using namespace hair25d;
+using PairSet = std::set<std::pair<int, int>>;
+
+namespace {
+
+PairSet joined_pairs(const completion::Result& r) {
+  PairSet out;
+  for (const auto& s : r.strands)
+    for (std::size_t i = 0; i < s.regions.size(); ++i)
+      for (std::size_t j = i + 1; j < s.regions.size(); ++j)
+        out.insert({std::min(s.regions[i], s.regions[j]), std::max(s.regions[i], s.regions[j])});
+  return out;
+}
+
+Relation flip(Relation r) {
+  return r == Relation::kAbove ? Relation::kBelow : r == Relation::kBelow ? Relation::kAbove : r;
+}
+
+struct Tally {
+  int relations = 0, back = 0, gone = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"diag"};
+  std::string shading = "mixed";
+  int seed = 2000, count = 100;
+  app.add_option("--seed", seed);
+  app.add_option("--count", count);
+  app.add_option("--shading", shading);
+  CLI11_PARSE(app, argc, argv);
+  completion::Options options;
+  options.inpaint_strands = false;
+  options.inpaint_background = false;
+  const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
+                                      generator::Shading::kGradient,
+                                      generator::Shading::kScreentone};
+  std::map<std::string, Tally> tally;
+  int lost_total = 0, added_total = 0, none_singly = 0, wrong_left = 0;
+  for (int k = 0; k < count; ++k) {
+    generator::Options g;
+    g.seed = seed + k;
+    g.width = 800, g.height = 640, g.strand_count = 20;  // eval_joins' defaults
+    g.shading = shading == "mixed"        ? kinds[k % 4]
+                : shading == "screentone" ? kinds[3]
+                : shading == "flat"       ? kinds[0]
+                : shading == "gradient"   ? kinds[2]
+                                          : kinds[1];
+    const AnnotatedCase c = generator::generate_case(g);
+    std::string err;
+    const std::vector<RegionRelation> pred = completion::test::predicted_relations(c, &err);
+    std::map<int, int> strand;
+    for (const auto& reg : c.region_list) strand[reg.id] = reg.strand;
+    std::map<std::pair<int, int>, Relation> truth;
+    for (const auto& p : c.pairs)
+      truth[{p.a, p.b}] = p.relation, truth[{p.b, p.a}] = flip(p.relation);
+    auto run = [&](const std::vector<RegionRelation>& rel) {
+      completion::Input in = completion::test::input_from_case(c);
+      in.relations = rel;
+      return joined_pairs(completion::complete_strands(in, options));
+    };
+    const PairSet A = run(completion::test::relations_from_pairs(c));
+    const PairSet P = run(pred);
+    PairSet lost, added;
+    for (auto p : A)
+      if (strand[p.first] == strand[p.second] && !P.count(p)) lost.insert(p);
+    for (auto p : P)
+      if (strand[p.first] != strand[p.second] && !A.count(p)) added.insert(p);
+    lost_total += lost.size();
+    added_total += added.size();
+
+    completion::detail::Context ctx;
+    ctx.image = &c.image;
+    ctx.original = &c.regions;
+    ctx.options = &options;
+    ctx.labels = completion::assign_outline_pixels(c.image, c.regions, options.outline_reach,
+                                                   options.dark_luma);
+    completion::detail::describe_regions(ctx);
+    PairSet touching;
+    const LabelMap& L = ctx.labels;
+    for (int y = 0; y < L.height(); ++y)
+      for (int x = 0; x < L.width(); ++x) {
+        auto add = [&](int a, int b) {
+          if (a && b && a != b) touching.insert({std::min(a, b), std::max(a, b)});
+        };
+        if (x + 1 < L.width()) add(L.at(x, y), L.at(x + 1, y));
+        if (y + 1 < L.height()) add(L.at(x, y), L.at(x, y + 1));
+      }
+    auto interior = [&](int region) {
+      const LabelMap& o = c.regions;
+      const auto own = [&](int x, int y) { return o.contains(x, y) && o.at(x, y) == region; };
+      int n = 0;
+      for (int y = 0; y < o.height(); ++y)
+        for (int x = 0; x < o.width(); ++x)
+          n += own(x, y) && own(x - 2, y) && own(x + 2, y) && own(x, y - 2) && own(x, y + 2);
+      return n;
+    };
+    completion::detail::RegionTones tones(ctx);
+    completion::detail::RegionFields fields(ctx);
+
+    // Class of each predicted relation (index -> class name).
+    std::map<std::string, std::vector<int>> classes;
+    std::set<std::pair<int, int>> predicted_pairs;
+    for (int i = 0; i < static_cast<int>(pred.size()); ++i) {
+      const RegionRelation& r = pred[i];
+      const std::pair<int, int> key{std::min(r.a, r.b), std::max(r.a, r.b)};
+      const bool touch = touching.count(key);
+      if (!r.user_fixed && r.score == 0.0 && !touch) continue;  // completion's `unmeasured`
+      predicted_pairs.insert(key);
+      const bool weak = std::abs(r.score) < 2.0;
+      const std::string w = weak ? ":weak" : ":firm";
+      auto it = truth.find({r.a, r.b});
+      const bool one = strand[r.a] == strand[r.b];
+      std::string cls;
+      if (it != truth.end()) {
+        if (it->second == r.relation) {
+          if (r.relation == Relation::kEqual && tones.screentone()) {
+            const auto& e = r.equal_evidence;
+            const bool weak = e && e->log_odds < (e->open ? 0.0 : 2.0);
+            std::printf(
+                "seed %d true_equal %d=%d px %d %d weak %d lo %.2f open %d tone %.3f %.3f match %d "
+                "mstep %.3f ttd %d dsa %d\n",
+                seed + k, r.a, r.b, interior(r.a), interior(r.b), weak, e ? e->log_odds : 0.0,
+                e ? e->open : 0, tones.tone(r.a), tones.tone(r.b),
+                static_cast<int>(tones.match(r.a, r.b)), tones.mass_step(r.a, r.b),
+                completion::detail::two_tones_by_dots(tones, r.a, r.b),
+                completion::detail::dark_shares_apart(tones, r.a, r.b));
+          }
+          continue;
+        }
+        if (r.relation == Relation::kEqual)
+          cls = "false_equal";
+        else if (it->second == Relation::kEqual)
+          cls = "order_of_equal" + w;
+        else
+          cls = "reversed" + w;
+      } else if (r.relation == Relation::kEqual)
+        cls = one ? "unrel_equal_one" : "unrel_equal_two";
+      else
+        cls = std::string(touch ? "touch_order_" : "remote_order_") + (one ? "one" : "two") + w;
+      classes[cls].push_back(i);
+    }
+    // Annotated pairs the layering does not relate.
+    std::vector<AnnotatedPair> missing;
+    for (const auto& p : c.pairs)
+      if (!predicted_pairs.count({std::min(p.a, p.b), std::max(p.a, p.b)})) missing.push_back(p);
+
+    auto corrected = [&](const std::vector<int>& idx) {
+      std::set<int> drop(idx.begin(), idx.end());
+      std::vector<RegionRelation> out;
+      for (int i = 0; i < static_cast<int>(pred.size()); ++i) {
+        if (!drop.count(i)) {
+          out.push_back(pred[i]);
+          continue;
+        }
+        auto it = truth.find({pred[i].a, pred[i].b});
+        if (it != truth.end()) out.push_back({pred[i].a, pred[i].b, it->second, 1.0, true, false});
+      }
+      return out;
+    };
+    PairSet back_any, gone_any;
+    for (const auto& [cls, idx] : classes) {
+      const PairSet C = run(corrected(idx));
+      Tally& t = tally[cls];
+      t.relations += idx.size();
+      int back = 0, gone = 0;
+      for (auto p : lost)
+        if (C.count(p)) ++back, back_any.insert(p);
+      for (auto p : added)
+        if (!C.count(p)) ++gone, gone_any.insert(p);
+      t.back += back;
+      t.gone += gone;
+      if (back || gone)
+        std::printf("seed %d class %s: %zu relations, lost back %d, wrong gone %d\n", seed + k,
+                    cls.c_str(), idx.size(), back, gone);
+    }
+    if (!missing.empty()) {
+      std::vector<RegionRelation> rel = pred;
+      for (const auto& p : missing) rel.push_back({p.a, p.b, p.relation, 1.0, true, false});
+      const PairSet C = run(rel);
+      Tally& t = tally["missing"];
+      t.relations += missing.size();
+      for (auto p : lost)
+        if (C.count(p)) ++t.back, back_any.insert(p);
+      for (auto p : added)
+        if (!C.count(p)) ++t.gone, gone_any.insert(p);
+    }
+    none_singly += lost.size() - back_any.size();
+    wrong_left += added.size() - gone_any.size();
+    // False equals and unrelated equals of two strands one by one.
+    for (const char* cls : {"false_equal", "unrel_equal_two", "unrel_equal_one"})
+      for (int i : classes[cls]) {
+        const RegionRelation& r = pred[i];
+        const PairSet C = run(corrected({i}));
+        int back = 0, gone = 0;
+        for (auto p : lost) back += C.count(p);
+        for (auto p : added) gone += !C.count(p);
+        const auto& e = r.equal_evidence;
+        std::printf(
+            "seed %d %s %d=%d px %d %d (strands %d %d, truth %s) ev %s lo %.2f open %d of %.2f; st "
+            "%d "
+            "tone %.3f %.3f match %d mstep %.3f ttd %d twotones %d pstep %.2f; back %d gone %d\n",
+            seed + k, cls, r.a, r.b, interior(r.a), interior(r.b), strand[r.a], strand[r.b],
+            truth.count({r.a, r.b}) ? (truth[{r.a, r.b}] == Relation::kAbove   ? "above"
+                                       : truth[{r.a, r.b}] == Relation::kBelow ? "below"
+                                                                               : "equal")
+                                    : "none",
+            e ? "yes" : "no", e ? e->log_odds : 0.0, e ? e->open : 0, e ? e->open_fraction : 0.0,
+            tones.screentone(), tones.tone(r.a), tones.tone(r.b),
+            static_cast<int>(tones.match(r.a, r.b)), tones.mass_step(r.a, r.b),
+            completion::detail::two_tones_by_dots(tones, r.a, r.b),
+            tones.screentone() ? tones.two_tones(r.a, r.b) : 0, fields.paint_step(r.a, r.b), back,
+            gone);
+      }
+    for (auto p : added) std::printf("seed %d added wrong %d-%d\n", seed + k, p.first, p.second);
+    std::fflush(stdout);
+  }
+  std::printf("TOTAL lost %d added %d; none singly %d, wrong left %d\n", lost_total, added_total,
+              none_singly, wrong_left);
+  for (const auto& [cls, t] : tally)
+    std::printf("CLASS %-26s relations %4d lost back %4d wrong gone %4d\n", cls.c_str(),
+                t.relations, t.back, t.gone);
+  return 0;
+}
