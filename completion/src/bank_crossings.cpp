@@ -459,7 +459,12 @@ bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b) {
 }
 
 bool two_paints(RegionTones& tones, RegionFields& fields, int a, int b) {
-  if (tones.screentone()) return tones.match(a, b) == RegionTones::Match::kOther;
+  if (tones.screentone()) {
+    if (tones.match(a, b) == RegionTones::Match::kOther) return true;
+    if (!two_tones_by_dots(tones, a, b)) return false;
+    const int white = tones.tone(a) < tones.tone(b) ? a : b, toned = white == a ? b : a;
+    return tones.tone_pixels(white) * tones.tone(toned) >= kMinWhiteDarkPixels;
+  }
   const double step = fields.paint_step(a, b);
   return std::isfinite(step) && step > kMinTwoPaintStep;
 }

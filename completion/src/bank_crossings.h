@@ -203,6 +203,9 @@ class RegionTones {
 
   explicit RegionTones(const Context& ctx) : ctx_(&ctx) {}
   double tone(int region);
+  // How many pixels the dark share was measured over (2 px inside the
+  // region): a sliver has few, and no dot need fall on them.
+  int tone_pixels(int region);
   // False when both are textured and their tones differ by more than
   // kMaxToneStep; `textured` says whether both are.
   bool same_tone(int a, int b, bool* textured);
@@ -274,7 +277,8 @@ class RegionTones {
 
   const Context* ctx_;
   std::map<int, double> tones_, masses_, cells_;
-  std::map<int, int> dots_;  // whole dots per region (with masses_)
+  std::map<int, int> tone_pixels_;  // with tones_
+  std::map<int, int> dots_;         // whole dots per region (with masses_)
   std::map<int, std::vector<std::pair<double, double>>> centres_;  // whole dots' centres
   int screentone_ = -1;
   int lattice_state_ = -1;
@@ -342,10 +346,26 @@ bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b);
 // one strand stepped at most 2 RGB where measured but two (3.1, 17),
 // between two strands 3.0-77 RGB but two of one paint (session 23).
 inline constexpr double kMinTwoPaintStep = 3.0;
+// A piece reads paper-white beside a toned one (`two_paints`) only where the
+// toned piece's dark share times the white piece's measured pixels is at
+// least this: with fewer expected dark pixels a sliver of a toned strand
+// shows none by chance (Poisson: e^-3, 5 %). Session 25, dev screentone
+// 3040: the sliver 13 of strand 11 (9 pixels measured, its strand's dark
+// share 0.18) read white, and a weak equal of one strand was refused.
+inline constexpr double kMinWhiteDarkPixels = 3.0;
 // Whether a and b are measured to be painted apart: two tones by the dots on
-// screentone (RegionTones::match), else a finite step over
+// screentone (`two_tones_by_dots`: the dots measured and differing, or a
+// paper-white piece beside a toned one, where the white piece is measured
+// over pixels enough that the toned one's dark share would have put
+// kMinWhiteDarkPixels dark ones among them), else a finite step over
 // kMinTwoPaintStep. Unlike !one_paint, a paint that cannot be measured (a
-// piece too small for a field, no flat paint) says nothing.
+// piece too small for a field, no flat paint) says nothing. The paper-white
+// case came with session 25 (joins50): of the layering's weak equals between
+// two strands on dev screentone 2000-2099 whose dots were not measured, 6
+// joined a toned piece to a white one (none of the 155 true equals there
+// pairs a white piece with a toned one); refused, precision / recall with the
+// layering's relations 0.888 / 0.633 -> 0.894 / 0.635 (docs/completion-record.md,
+// "Session 25: weak equals between a toned and a white piece").
 bool two_paints(RegionTones& tones, RegionFields& fields, int a, int b);
 
 // Back-hair pieces linked through the regions lying above both of them

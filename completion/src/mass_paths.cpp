@@ -418,7 +418,13 @@ double RegionTones::tone(int region) {
       ++n;
       dark += 0.299 * p.r + 0.587 * p.g + 0.114 * p.b < ctx_->options->dark_luma;
     }
+  tone_pixels_[region] = n;
   return tones_[region] = n > 0 ? static_cast<double>(dark) / n : 0.0;
+}
+
+int RegionTones::tone_pixels(int region) {
+  tone(region);
+  return tone_pixels_.at(region);
 }
 
 bool RegionTones::same_tone(int a, int b, bool* textured) {
