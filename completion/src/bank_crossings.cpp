@@ -462,8 +462,9 @@ bool two_paints(RegionTones& tones, RegionFields& fields, int a, int b) {
   if (tones.screentone()) {
     if (tones.match(a, b) == RegionTones::Match::kOther) return true;
     if (!two_tones_by_dots(tones, a, b)) return false;
-    const int white = tones.tone(a) < tones.tone(b) ? a : b, toned = white == a ? b : a;
-    return tones.tone_pixels(white) * tones.tone(toned) >= kMinWhiteDarkPixels;
+    const int white = tones.tone(a) < tones.tone(b) ? a : b;
+    const double period = tones.dot_period();
+    return period > 0 && tones.tone_pixels(white) >= RegionTones::kMinDots * period * period;
   }
   const double step = fields.paint_step(a, b);
   return std::isfinite(step) && step > kMinTwoPaintStep;

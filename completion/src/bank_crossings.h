@@ -206,6 +206,9 @@ class RegionTones {
   // How many pixels the dark share was measured over (2 px inside the
   // region): a sliver has few, and no dot need fall on them.
   int tone_pixels(int region);
+  // The drawing's dot lattice period (px), 0 without a lattice (too few
+  // whole dots).
+  double dot_period();
   // False when both are textured and their tones differ by more than
   // kMaxToneStep; `textured` says whether both are.
   bool same_tone(int a, int b, bool* textured);
@@ -346,26 +349,22 @@ bool one_paint(RegionTones& tones, RegionFields& fields, int a, int b);
 // one strand stepped at most 2 RGB where measured but two (3.1, 17),
 // between two strands 3.0-77 RGB but two of one paint (session 23).
 inline constexpr double kMinTwoPaintStep = 3.0;
-// A piece reads paper-white beside a toned one (`two_paints`) only where the
-// toned piece's dark share times the white piece's measured pixels is at
-// least this: with fewer expected dark pixels a sliver of a toned strand
-// shows none by chance (Poisson: e^-3, 5 %). Session 25, dev screentone
-// 3040: the sliver 13 of strand 11 (9 pixels measured, its strand's dark
-// share 0.18) read white, and a weak equal of one strand was refused.
-inline constexpr double kMinWhiteDarkPixels = 3.0;
 // Whether a and b are measured to be painted apart: two tones by the dots on
 // screentone (`two_tones_by_dots`: the dots measured and differing, or a
-// paper-white piece beside a toned one, where the white piece is measured
-// over pixels enough that the toned one's dark share would have put
-// kMinWhiteDarkPixels dark ones among them), else a finite step over
+// paper-white piece beside a toned one, where the white piece was measured
+// over room for RegionTones::kMinDots dot cells of the drawing's lattice,
+// the bar for a region to show dots), else a finite step over
 // kMinTwoPaintStep. Unlike !one_paint, a paint that cannot be measured (a
 // piece too small for a field, no flat paint) says nothing. The paper-white
-// case came with session 25 (joins50): of the layering's weak equals between
-// two strands on dev screentone 2000-2099 whose dots were not measured, 6
+// case came with session 25 (joins50): on dev screentone 2000-2099 6 of the
+// layering's weak equals between two strands whose dots were not measured
 // joined a toned piece to a white one (none of the 155 true equals there
-// pairs a white piece with a toned one); refused, precision / recall with the
-// layering's relations 0.888 / 0.633 -> 0.894 / 0.635 (docs/completion-record.md,
-// "Session 25: weak equals between a toned and a white piece").
+// pairs a white piece with a toned one), but a sliver of a toned strand
+// holds no dot (dev screentone 3040's piece 13, 9 pixels measured; fresh
+// mixed 7043's 18, 15), hence the room. Precision / recall with the
+// layering's relations: screentone 2000-2099 0.888 / 0.633 -> 0.892 / 0.635
+// (docs/completion-record.md, "Session 25: weak equals between a toned and a
+// white piece").
 bool two_paints(RegionTones& tones, RegionFields& fields, int a, int b);
 
 // Back-hair pieces linked through the regions lying above both of them

@@ -422,6 +422,8 @@ double RegionTones::tone(int region) {
   return tones_[region] = n > 0 ? static_cast<double>(dark) / n : 0.0;
 }
 
+double RegionTones::dot_period() { return lattice().valid ? lattice().period : 0.0; }
+
 int RegionTones::tone_pixels(int region) {
   tone(region);
   return tone_pixels_.at(region);

@@ -202,17 +202,19 @@ TEST(Completion, WeakEqualsBetweenTwoPaintsAreRefused) {
 // toned piece beside a paper-white one is two strands even where the dots
 // of one of them cannot be measured (session 25). The cut band's pieces on
 // the generator's paper (235, 205, 175): piece 1 toned (dots of 0.3
-// periods on a 6-px lattice), piece 2 toned alike or left white. A weak
-// equal between a toned and a white piece is refused; between two pieces
-// of one tone, or firm, or the user's, it unites them.
+// periods on a 6-px lattice), piece 2 toned alike or left white, 130 px
+// long or a 10-px sliver. A weak equal between a toned and a white piece is
+// refused; between two pieces of one tone, or firm, or the user's, it
+// unites them, as it does a white sliver too small to hold three dot cells
+// (a sliver of a toned strand may show no dot).
 TEST(Completion, WeakEqualsBetweenAToneAndPaperWhiteAreRefused) {
-  const auto strand_of = [](double log_odds, bool white, bool user = false) {
+  const auto strand_of = [](double log_odds, bool white, bool user = false, double end = 280) {
     Drawing d = blank(300, 170);
     const Rgba paper{235, 205, 175, 255};
     paint(
         d, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, paper, 1);
     paint(
-        d, [](double x, double y) { return x >= 150 && x < 280 && y > 60 && y < 100; }, paper, 2);
+        d, [&](double x, double y) { return x >= 150 && x < end && y > 60 && y < 100; }, paper, 2);
     const auto dots = [&](int x, int y) {
       const double k = test::dot_cover(x, y, 6.0, 0.3, 0.4);
       const auto mix = [&](int p, int ink) {
@@ -233,6 +235,7 @@ TEST(Completion, WeakEqualsBetweenAToneAndPaperWhiteAreRefused) {
   EXPECT_EQ(strand_of(0.5, false), joined);
   EXPECT_EQ(strand_of(2.5, true), joined);
   EXPECT_EQ(strand_of(0.5, true, true), joined);
+  EXPECT_EQ(strand_of(0.5, true, false, 160), joined);
 }
 
 // A wide piece (a cap, the back hair) cut by a strand lying over it, where
