@@ -173,6 +173,15 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::threshold");
   app.add_option("--scorer-screentone-threshold", options.join_scorer.screentone_threshold,
                  "JoinScorerOptions::screentone_threshold");
+  const std::map<std::string, completion::JoinScorerOptions::Ensemble> ensembles{
+      {"none", completion::JoinScorerOptions::Ensemble::kNone},
+      {"screentone", completion::JoinScorerOptions::Ensemble::kScreentone},
+      {"all", completion::JoinScorerOptions::Ensemble::kAll}};
+  app.add_option("--scorer-ensemble", options.join_scorer.ensemble,
+                 "JoinScorerOptions::ensemble: none, screentone or all")
+      ->transform(CLI::CheckedTransformer(ensembles));
+  app.add_option("--scorer-ensemble-threshold", options.join_scorer.ensemble_threshold,
+                 "JoinScorerOptions::ensemble_threshold");
   app.add_option("--scorer-max-angle", options.join_scorer.max_angle_deg,
                  "JoinScorerOptions::max_angle_deg");
   app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,

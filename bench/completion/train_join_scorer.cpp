@@ -114,14 +114,14 @@ double auc(const std::vector<double>& score, const std::vector<int>& label) {
 }
 
 void report(const std::string& name, const std::vector<Row>& rows,
-            const completion::JoinScorerNet& net, double low, double high, double limit,
-            double threshold) {
+            const std::vector<completion::JoinScorerNet>& nets, double low, double high,
+            double limit, double threshold) {
   std::vector<double> hand, learned;
   std::vector<int> label;
   int hand_tp = 0, hand_fp = 0, net_tp = 0, net_fp = 0, pos = 0;
   for (const Row& r : rows) {
     if (r.hand_cost < low || r.hand_cost > high) continue;
-    const double p = completion::join_probability(net, r.f);
+    const double p = completion::join_probability(nets, r.f);
     hand.push_back(-r.hand_cost);
     learned.push_back(p);
     label.push_back(r.label);
@@ -212,6 +212,11 @@ int main(int argc, char** argv) {
   train->add_flag("--baseline", baseline,
                   "Also report the committed net (default_join_scorer, with --wide-only "
                   "wide_join_scorer) on the --eval files");
+  // Session 25: nets of several training seeds, written as the ensemble.
+  std::vector<std::uint64_t> ensemble_seeds;
+  train->add_option("--ensemble-seeds", ensemble_seeds,
+                    "Train one net per seed (--seed ignored) and write them to --out as "
+                    "ensemble_join_scorers (join_scorer_ensemble_weights.cpp)");
   std::vector<std::string> drop;
   train->add_option("--drop", drop, "Inputs left out (set to 0 everywhere): feature names");
   CLI11_PARSE(app, argc, argv);
@@ -272,18 +277,58 @@ int main(int argc, char** argv) {
           x.push_back(r.f), y.push_back(r.label);
     std::printf("training on %zu candidates with hand cost in [%.2f, %.2f]\n", x.size(), win_low,
                 win_high);
+    if (!ensemble_seeds.empty()) {
+      std::vector<completion::JoinScorerNet> nets;
+      std::ostringstream comment;
+      comment << "The learned join scorer's ensemble (join_scorer.h), trained by\n"
+              << "bench/completion/train_join_scorer train on " << x.size()
+              << " candidates (hand cost " << win_low << "-" << win_high << "), " << topt.epochs
+              << " epochs, decay " << topt.decay << ", seeds";
+      for (std::uint64_t s : ensemble_seeds) {
+        completion::JoinTrainingOptions o = topt;
+        o.seed = s;
+        const completion::JoinTrainingResult t = completion::train_join_scorer(x, y, o);
+        std::printf("seed %llu: trained %d epochs, final loss %.4f\n",
+                    static_cast<unsigned long long>(s), t.epochs, t.final_loss);
+        nets.push_back(t.net);
+        comment << " " << s;
+      }
+      comment << ".";
+      for (const std::string& path : eval_csv) {
+        std::map<std::string, std::vector<Row>> by_set;
+        for (const Row& r : rows_of(path)) by_set[r.set].push_back(r);
+        for (const auto& [name, rows] : by_set) {
+          report(path + " " + name, rows, nets, low, high, limit, threshold);
+          if (baseline) {
+            std::vector<completion::JoinScorerNet> with = nets;
+            with.push_back(completion::default_join_scorer());
+            report("  with the committed net: " + path + " " + name, rows, with, low, high, limit,
+                   threshold);
+            report("  committed net: " + path + " " + name, rows,
+                   {completion::default_join_scorer()}, low, high, limit, threshold);
+          }
+        }
+      }
+      if (!out.empty()) {
+        std::ofstream file(out);
+        file << completion::join_scorer_ensemble_source(nets, comment.str());
+        if (!file) throw std::runtime_error("cannot write " + out);
+        std::printf("wrote %s\n", out.c_str());
+      }
+      return 0;
+    }
     const completion::JoinTrainingResult t = completion::train_join_scorer(x, y, topt);
     std::printf("trained %d epochs, final loss %.4f\n", t.epochs, t.final_loss);
     for (const std::string& path : train_csv)
-      report(path, rows_of(path), t.net, low, high, limit, threshold);
+      report(path, rows_of(path), {t.net}, low, high, limit, threshold);
     for (const std::string& path : eval_csv) {
       std::map<std::string, std::vector<Row>> by_set;
       for (const Row& r : rows_of(path)) by_set[r.set].push_back(r);
       for (const auto& [name, rows] : by_set) {
-        report(path + " " + name, rows, t.net, low, high, limit, threshold);
+        report(path + " " + name, rows, {t.net}, low, high, limit, threshold);
         if (baseline)
           report("  committed net: " + path + " " + name, rows,
-                 wide_only ? completion::wide_join_scorer() : completion::default_join_scorer(),
+                 {wide_only ? completion::wide_join_scorer() : completion::default_join_scorer()},
                  low, high, limit, threshold);
       }
     }

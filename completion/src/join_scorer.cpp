@@ -94,6 +94,13 @@ double join_probability(const JoinScorerNet& net, const JoinFeatures& features) 
   return 1.0 / (1.0 + std::exp(-static_cast<double>(out)));
 }
 
+double join_probability(std::span<const JoinScorerNet> nets, const JoinFeatures& features) {
+  if (nets.empty()) throw Error("join_probability: no nets");
+  double sum = 0;
+  for (const JoinScorerNet& net : nets) sum += join_probability(net, features);
+  return sum / static_cast<double>(nets.size());
+}
+
 bool JoinScorerOptions::is_valid(std::string* error) const {
   auto fail = [&](const std::string& m) {
     if (error != nullptr) *error = "JoinScorerOptions::" + m;
@@ -107,6 +114,8 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("threshold = " + num(threshold) + "; must be in (0, 1)");
   if (!(screentone_threshold > 0 && screentone_threshold < 1))
     return fail("screentone_threshold = " + num(screentone_threshold) + "; must be in (0, 1)");
+  if (!(ensemble_threshold > 0 && ensemble_threshold < 1))
+    return fail("ensemble_threshold = " + num(ensemble_threshold) + "; must be in (0, 1)");
   if (!(refuse_below >= 0 && refuse_below <= threshold))
     return fail("refuse_below = " + num(refuse_below) + "; must be in [0, threshold (" +
                 num(threshold) + ")]");
@@ -236,43 +245,80 @@ JoinTrainingResult train_join_scorer(const std::vector<JoinFeatures>& rows,
   return result;
 }
 
-std::string join_scorer_source(const JoinScorerNet& net, const std::string& comment,
-                               const std::string& function) {
+namespace {
+
+// %.9g round-trips every float exactly, so the file is the net bit for bit.
+std::string float_literal(float v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
+  std::string out(buf);
+  // "0" or "3" would not be a float literal with the suffix.
+  if (out.find_first_of(".en") == std::string::npos) out += ".0";
+  return out + "f";
+}
+
+template <class Values>
+std::string float_row(const Values& values) {
+  std::string out = "{";
+  for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + float_literal(values[i]);
+  return out + "}";
+}
+
+// The braced initialiser of one net, its lines led by `indent`.
+std::string net_initialiser(const JoinScorerNet& net, const std::string& indent) {
   std::ostringstream s;
-  // %.9g round-trips every float exactly, so the file is the net bit for bit.
-  auto f = [](float v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
-    std::string out(buf);
-    // "0" or "3" would not be a float literal with the suffix.
-    if (out.find_first_of(".en") == std::string::npos) out += ".0";
-    return out + "f";
-  };
-  auto row = [&](const auto& values) {
-    std::string out = "{";
-    for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + f(values[i]);
-    return out + "}";
-  };
-  // Kept as written (long rows, the comment's own lines): clang-format would
-  // reflow it and the file would no longer be what the trainer wrote.
+  s << "{\n"
+    << indent << float_row(net.mean) << ",\n"
+    << indent << float_row(net.inv_std) << ",\n"
+    << indent << "{{\n";
+  for (int k = 0; k < kJoinFeatures; ++k) s << indent << "    " << float_row(net.w1[k]) << ",\n";
+  s << indent << "}},\n"
+    << indent << float_row(net.b1) << ",\n"
+    << indent << float_row(net.w2) << ",\n"
+    << indent << float_literal(net.b2) << "}";
+  return s.str();
+}
+
+// Kept as written (long rows, the comment's own lines): clang-format would
+// reflow it and the file would no longer be what the trainer wrote.
+std::string generated_head(const std::string& comment) {
+  std::ostringstream s;
   s << "// clang-format off\n";
   std::istringstream lines(comment);
   for (std::string line; std::getline(lines, line);) s << "// " << line << "\n";
   s << "// Generated file: do not edit (bench/completion/train_join_scorer writes it).\n"
     << "#include \"hair25d/completion/join_scorer.h\"\n\n"
-    << "namespace hair25d::completion {\n\n"
-    << "const JoinScorerNet& " << function << "() {\n"
-    << "  static const JoinScorerNet net{\n"
-    << "      " << row(net.mean) << ",\n"
-    << "      " << row(net.inv_std) << ",\n"
-    << "      {{\n";
-  for (int k = 0; k < kJoinFeatures; ++k) s << "          " << row(net.w1[k]) << ",\n";
-  s << "      }},\n"
-    << "      " << row(net.b1) << ",\n"
-    << "      " << row(net.w2) << ",\n"
-    << "      " << f(net.b2) << "};\n"
+    << "namespace hair25d::completion {\n\n";
+  return s.str();
+}
+
+}  // namespace
+
+std::string join_scorer_source(const JoinScorerNet& net, const std::string& comment,
+                               const std::string& function) {
+  std::ostringstream s;
+  s << generated_head(comment) << "const JoinScorerNet& " << function << "() {\n"
+    << "  static const JoinScorerNet net" << net_initialiser(net, "      ") << ";\n"
     << "  return net;\n"
     << "}\n\n"
+    << "}  // namespace hair25d::completion\n";
+  return s.str();
+}
+
+std::string join_scorer_ensemble_source(std::span<const JoinScorerNet> nets,
+                                        const std::string& comment, const std::string& function) {
+  std::ostringstream s;
+  s << generated_head(comment) << "std::span<const JoinScorerNet> " << function << "() {\n";
+  if (nets.empty()) {
+    s << "  return {};\n";
+  } else {
+    s << "  static const JoinScorerNet nets[] = {\n";
+    for (const JoinScorerNet& net : nets)
+      s << "      " << net_initialiser(net, "          ") << ",\n";
+    s << "  };\n"
+      << "  return nets;\n";
+  }
+  s << "}\n\n"
     << "}  // namespace hair25d::completion\n";
   return s.str();
 }

@@ -315,6 +315,12 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       if (!(*candidates)[which[k]].wide) features[k] = own[k];
   }
   const JoinScorerNet& net = default_join_scorer();
+  // Session 25: the ensemble may rescue what the default net refuses.
+  using Ensemble = JoinScorerOptions::Ensemble;
+  const std::span<const JoinScorerNet> ensemble =
+      s.ensemble == Ensemble::kAll || (s.ensemble == Ensemble::kScreentone && screentone)
+          ? ensemble_join_scorers()
+          : std::span<const JoinScorerNet>{};
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
@@ -326,8 +332,14 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                    : std::numeric_limits<double>::infinity();
     } else if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
       p = join_probability(net, features[k]);
+      // The ensemble's mean, asked only for what the default net refuses.
+      const double q =
+          p < threshold && !ensemble.empty() ? join_probability(ensemble, features[k]) : 0.0;
       if (p >= threshold)
         j.cost = std::min(j.cost, o.max_join_cost + (threshold - p) * (s.band_high - s.band_low));
+      else if (q >= s.ensemble_threshold)
+        j.cost = std::min(
+            j.cost, o.max_join_cost + (s.ensemble_threshold - q) * (s.band_high - s.band_low));
       else if (p < s.refuse_below)
         j.cost = std::numeric_limits<double>::infinity();
     }

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,15 @@ const JoinScorerNet& default_join_scorer();
 // (JoinScorerOptions::max_angle_deg), trained on those alone (generated file
 // join_scorer_wide_weights.cpp).
 const JoinScorerNet& wide_join_scorer();
+// Session 25: nets of several training seeds (generated file
+// join_scorer_ensemble_weights.cpp), averaged where
+// JoinScorerOptions::ensemble says; empty when none was trained.
+std::span<const JoinScorerNet> ensemble_join_scorers();
+// The mean of the nets' probabilities (one net's alone when there is one):
+// a wrong candidate that one training seed happens to trust is refused
+// when the others do not. Throws hair25d::Error for no nets or a feature
+// that is not finite.
+double join_probability(std::span<const JoinScorerNet> nets, const JoinFeatures& features);
 
 // When and how completion uses the scorer (completion::Options::join_scorer).
 struct JoinScorerOptions {
@@ -70,6 +80,20 @@ struct JoinScorerOptions {
   // lost 0.006 / 0.003 precision on fresh 8000-8099 (annotation's /
   // layering's relations): left at `threshold`'s 0.8.
   double screentone_threshold = 0.8;
+  // Session 25: on which drawings the ensemble (ensemble_join_scorers) may
+  // rescue a candidate of the band that the default net refuses: none,
+  // screentone ones (RegionTones::screentone) or all; it does when the mean
+  // of its nets' probabilities q >= ensemble_threshold (the cost becomes at
+  // most max_join_cost + (ensemble_threshold − q) × (band_high − band_low)).
+  // The committed ensemble: 4 seeds trained on screentone candidates of both
+  // relations. With `kScreentone` it raised recall at equal or better
+  // precision on every dev set with either relations (screentone 2000 with
+  // the layering's 0.888 / 0.633 -> 0.890 / 0.646) but lost 2 wrong pairs on
+  // fresh mixed 7000 with the annotation's (docs/completion-record.md
+  // "Session 25"): off.
+  enum class Ensemble { kNone, kScreentone, kAll };
+  Ensemble ensemble = Ensemble::kNone;
+  double ensemble_threshold = 0.95;
   double refuse_below = 0.0;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
@@ -130,5 +154,9 @@ JoinTrainingResult train_join_scorer(const std::vector<JoinFeatures>& rows,
 // as `net` (floats printed to round-trip exactly); `comment` heads the file.
 std::string join_scorer_source(const JoinScorerNet& net, const std::string& comment,
                                const std::string& function = "default_join_scorer");
+// The same for several nets: `function` returns them as a span.
+std::string join_scorer_ensemble_source(std::span<const JoinScorerNet> nets,
+                                        const std::string& comment,
+                                        const std::string& function = "ensemble_join_scorers");
 
 }  // namespace hair25d::completion

@@ -1,0 +1,118 @@
+// The join scorer's ensemble (join_scorer.h, session 25): the mean of its
+// nets, its generated file, and the rescues it adds on screentone drawings
+// only.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "annotated_eval.h"
+#include "hair25d/completion/completion.h"
+#include "hair25d/completion/join_scorer.h"
+#include "hair25d/core/error.h"
+#include "hair25d/generator/generator.h"
+
+namespace hair25d::completion {
+namespace {
+
+// A net whose probability is logistic(b2) whatever the input.
+JoinScorerNet constant_net(float b2) {
+  JoinScorerNet net;
+  net.b2 = b2;
+  return net;
+}
+
+TEST(JoinScorerEnsemble, ProbabilityIsTheMeanOfTheNets) {
+  const JoinFeatures f{};
+  const std::vector<JoinScorerNet> two{constant_net(0.0f), constant_net(std::log(3.0f))};
+  EXPECT_NEAR(join_probability(two[0], f), 0.5, 1e-6);
+  EXPECT_NEAR(join_probability(two[1], f), 0.75, 1e-6);
+  EXPECT_NEAR(join_probability(std::span<const JoinScorerNet>(two), f), 0.625, 1e-6);
+  EXPECT_NEAR(join_probability(std::span<const JoinScorerNet>(two).first(1), f), 0.5, 1e-6);
+  EXPECT_THROW(join_probability(std::span<const JoinScorerNet>{}, f), Error);
+}
+
+// The committed file is the ensemble printed again, byte for byte below its
+// comment; its nets are of different training seeds.
+TEST(JoinScorerEnsemble, WeightsFileIsTheEnsemblePrinted) {
+  const std::span<const JoinScorerNet> nets = ensemble_join_scorers();
+  ASSERT_GE(nets.size(), 2u);
+  for (std::size_t i = 1; i < nets.size(); ++i) EXPECT_NE(nets[i].w1[0][0], nets[0].w1[0][0]);
+  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) +
+                   "/../../completion/src/join_scorer_ensemble_weights.cpp");
+  ASSERT_TRUE(in.good());
+  std::stringstream file;
+  file << in.rdbuf();
+  auto body = [](const std::string& s) {
+    const std::string::size_type at = s.find("// Generated file");
+    return at == std::string::npos ? std::string() : s.substr(at);
+  };
+  const std::string printed = join_scorer_ensemble_source(nets, "x");
+  EXPECT_FALSE(body(printed).empty());
+  EXPECT_EQ(body(file.str()), body(printed));
+  EXPECT_NE(join_scorer_ensemble_source({}, "x").find("return {};"), std::string::npos);
+}
+
+AnnotatedCase generated(std::uint64_t seed, generator::Shading shading) {
+  generator::Options g;
+  g.width = 800;
+  g.height = 640;
+  g.strand_count = 20;
+  g.seed = seed;
+  g.shading = shading;
+  g.strand_masks = false;
+  return generator::generate_case(g);
+}
+
+// With the default net's threshold out of reach (0.99) and the ensemble's
+// low (0.05), a band candidate over the limit is rescued exactly when the
+// ensemble's mean reaches 0.05, ranked by it, and only on the drawings
+// JoinScorerOptions::ensemble names (here screentone ones: a flat drawing
+// keeps every hand cost).
+TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
+  const JoinScorerOptions s;
+  const double limit = Options{}.max_join_cost;
+  for (const generator::Shading shading :
+       {generator::Shading::kScreentone, generator::Shading::kFlat}) {
+    const bool screentone = shading == generator::Shading::kScreentone;
+    SCOPED_TRACE(screentone);
+    const AnnotatedCase c = generated(2004, shading);
+    for (const auto ensemble :
+         {JoinScorerOptions::Ensemble::kScreentone, JoinScorerOptions::Ensemble::kNone}) {
+      Options o;
+      o.inpaint_strands = false;
+      o.inpaint_background = false;
+      o.join_scorer.record = true;
+      o.join_scorer.threshold = o.join_scorer.screentone_threshold = 0.99;
+      o.join_scorer.ensemble = ensemble;
+      o.join_scorer.ensemble_threshold = 0.05;
+      const Result r = complete_strands(test::input_from_case(c), o);
+      const bool on = screentone && ensemble != JoinScorerOptions::Ensemble::kNone;
+      int rescued = 0;
+      for (const JoinCandidate& j : r.join_candidates) {
+        // The default net's own rescues (p >= 0.99) are not the ensemble's.
+        if (j.hand_cost < s.band_low || j.hand_cost > s.band_high || j.probability < 0 ||
+            j.probability >= 0.99)
+          continue;
+        const double q = join_probability(ensemble_join_scorers(), j.features);
+        if (on && q >= 0.05) {
+          EXPECT_DOUBLE_EQ(j.cost,
+                           std::min(j.hand_cost, limit + (0.05 - q) * (s.band_high - s.band_low)));
+          rescued += j.hand_cost > limit;
+        } else {
+          EXPECT_EQ(j.cost, j.hand_cost);
+        }
+      }
+      if (on)
+        EXPECT_GT(rescued, 0);
+      else
+        EXPECT_EQ(rescued, 0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hair25d::completion
