@@ -116,6 +116,9 @@ struct Join {
   int record = -1;           // index into Context::join_log, or −1
   // Tangents over max_join_angle_deg: the scorer alone may join it.
   bool wide = false;
+  // Off the gradient by windows of uneven slopes: the scorer alone may join
+  // it, at kUnevenThreshold (joins.cpp).
+  bool uneven_gradient = false;
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
 // records) or refuses joining the strands of regions a and b. `face` (CV_8U,

@@ -40,6 +40,10 @@ constexpr double kMaxShadingStep = 3.0;
 // 10-45, kept). Figures in docs/completion-record.md, "Session 13".
 constexpr double kMaxFlatFitStep = 1.0;
 constexpr double kFittedChangeShare = 0.2;
+// `PaintStep::uneven_slopes`: one window's slope under this share of the
+// other's (session 24: 13 of the 33 right pairs of dev gradient 2000-2099
+// that `off_gradient` alone refused).
+constexpr double kUnevenSlopeShare = 0.25;
 
 // Flat paint: both regions' three commonest colours hold this share of their
 // pixels (generated flat drawings 1.0, two-tone 0.88-1.0, gradient mostly
@@ -289,6 +293,8 @@ PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const Ed
         out.step > (change.norm() < kMinShadingChange
                         ? kMaxFlatFitStep
                         : std::max(kMaxShadingStep, kFittedChangeShare * change.norm()));
+    out.uneven_slopes = std::min(pa.slope.norm(), pb.slope.norm()) <
+                        kUnevenSlopeShare * std::max(pa.slope.norm(), pb.slope.norm());
     return out;
   }
   out.step = std::max(0.0, (a.colour - b.colour).norm() - (a.colour_spread + b.colour_spread));

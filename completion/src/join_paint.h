@@ -72,6 +72,11 @@ struct PaintStep {
   // over 1 RGB where the slopes predict little change across the gap, over
   // 3 RGB and a fifth of the predicted change elsewhere (two strands).
   bool off_gradient = false;
+  // Both windows linear, one's slope under kUnevenSlopeShare of the
+  // other's: the shallow window missed the strand's rate (a gradient by the
+  // curve's parameter changes fastest where the curve is slowest), so the
+  // mean slope under-predicts the change and `off_gradient` says little.
+  bool uneven_slopes = false;
 };
 PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const EdgePaint& pb,
                      const RegionPaint& ra, const RegionPaint& rb, const Eigen::Vector3d& shadow);

@@ -134,6 +134,21 @@ constexpr std::size_t kRarePaintRegions = 8;
 // 0.785, 1.2: 0.939 / 0.795). Figures in docs/completion-record.md, "Session 24".
 constexpr double kOneFieldStep = 0.25;
 constexpr double kOneFieldBonus = 0.9;
+// *Uneven gradient* (session 25): a strand candidate `off_gradient` only
+// by windows of uneven slopes (`PaintStep::uneven_slopes`) is not refused
+// but left to the scorer: its hand cost is put just over max_join_cost
+// (kUnevenCostBase above it, plus kUnevenCostShare of the cost, so the hand
+// cost never joins it and its rivals keep their order) and it joins when
+// the scorer's probability reaches kUnevenThreshold. Every paint rule
+// tried (a cost for the step beyond the prediction, a gate on the step's
+// direction along the predicted change) joined as many wrong pairs as
+// right ones; the scorer, never trained on such candidates, still ranks
+// the right ones first (dev gradient 2000-2099: of 230 such candidates the
+// two right ones top at p 0.40 and 0.31, the best wrong one at 0.13).
+// Figures in docs/completion-record.md, "Session 25".
+constexpr double kUnevenCostBase = 0.01;
+constexpr double kUnevenCostShare = 0.5;
+constexpr double kUnevenThreshold = 0.2;
 
 // Joins across a cut of ink only (`Edge::ink`, find_ink_edges): the pieces
 // face each other across a crossing tip, so their cut chords are short (at
@@ -335,7 +350,10 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       // The ensemble's mean, asked only for what the default net refuses.
       const double q =
           p < threshold && !ensemble.empty() ? join_probability(ensemble, features[k]) : 0.0;
-      if (p >= threshold)
+      if (j.uneven_gradient) {
+        if (p >= kUnevenThreshold)
+          j.cost = o.max_join_cost + (kUnevenThreshold - p) * (s.band_high - s.band_low);
+      } else if (p >= threshold)
         j.cost = std::min(j.cost, o.max_join_cost + (threshold - p) * (s.band_high - s.band_low));
       else if (q >= s.ensemble_threshold)
         j.cost = std::min(
@@ -482,9 +500,11 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       // Two pieces of flat paint stepping more than kMaxFlatStrandStep, one
       // of them a strand (above some region), are two strands; so are two
       // linear pieces stepping more than their gradient explains.
+      // Off the gradient by uneven windows: for the scorer (kUnevenThreshold).
+      const bool uneven = scoring && step.off_gradient && step.uneven_slopes;
       const bool other_paint = (step.flat && step.step > kMaxFlatStrandStep &&
                                 (front.count(a.region) > 0 || front.count(b.region) > 0)) ||
-                               step.off_gradient ||
+                               (step.off_gradient && !uneven) ||
                                (ink && step.flat && step.step > kMaxInkFlatStep);
       if ((strand_like || wide_angle) && !other_paint) {
         // The hidden part keeps a strand's width: half-way along the joins its
@@ -526,6 +546,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         // Screentone: the colour says nothing there, the dots' tone does.
         const double tone_cost = tone_join_cost(tones, a.region, b.region);
         cost += tone_cost;
+        if (uneven) cost = o.max_join_cost + kUnevenCostBase + kUnevenCostShare * cost;
         if (cost <= (wide_angle ? wide_limit : limit)) {  // before the costly coverage raster
           join.patch = join_patch(a, b);
           int hidden = 0;
@@ -585,6 +606,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       }
       if (cost > (join.wide ? wide_limit : limit)) continue;
       join.cost = cost;
+      join.uneven_gradient = uneven && join.bands.empty();
       candidates.push_back(std::move(join));
       terms_of.push_back(terms);
     }

@@ -127,3 +127,39 @@ TEST(JoinPaint, GradientClusterKeepsItsMean) {
 
 }  // namespace
 }  // namespace hair25d::completion::detail
+
+namespace hair25d::completion::detail {
+namespace {
+
+// Linear windows at two cuts 40 px apart down a strand, sloping `top` and
+// `bottom` RGB a pixel (every channel, down y), the lower one's colour
+// `below` levels from the upper one's.
+PaintStep step_of_windows(double top, double bottom, double below) {
+  EdgePaint pa, pb;
+  pa.fit_colour = Eigen::Vector3d(180, 140, 100);
+  pb.fit_colour = pa.fit_colour + Eigen::Vector3d::Constant(below);
+  pa.fit_centre = Vec2(120, 120);
+  pb.fit_centre = Vec2(120, 160);
+  pa.slope.col(1).setConstant(top);
+  pb.slope.col(1).setConstant(bottom);
+  pa.fit_residual = pb.fit_residual = 0.5;
+  const RegionPaint shaded;  // no flat paint
+  return paint_step(Edge{}, Edge{}, pa, pb, shaded, shaded, Eigen::Vector3d::Zero());
+}
+
+TEST(JoinPaint, UnevenWindowsOffTheGradientAreTold) {
+  // The mean slope (-0.275 a channel) predicts -11 levels over 40 px; the
+  // lower window is 30 darker: off the gradient both ways, and uneven where
+  // one slope is under a quarter of the other's (0.05 against 0.5).
+  const PaintStep uneven = step_of_windows(-0.5, -0.05, -30);
+  EXPECT_TRUE(uneven.off_gradient);
+  EXPECT_TRUE(uneven.uneven_slopes);
+  const PaintStep even = step_of_windows(-0.5, -0.3, -40);
+  EXPECT_TRUE(even.off_gradient);
+  EXPECT_FALSE(even.uneven_slopes);
+  // Where the slopes predict the step, nothing is off.
+  EXPECT_FALSE(step_of_windows(-0.5, -0.5, -20).off_gradient);
+}
+
+}  // namespace
+}  // namespace hair25d::completion::detail

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "hair25d/completion/completion.h"
 #include "synthetic.h"
@@ -170,6 +171,50 @@ TEST(PaintJoins, BankJoinComparesThePaint) {
   EXPECT_EQ(joined_with_1(wide_piece_under_strand(kBase), 2.4), (std::vector<int>{1, 2}));
   EXPECT_EQ(joined_with_1(wide_piece_under_strand(scaled(kBase, 1.25)), 2.4),
             (std::vector<int>{1}));
+}
+
+// Whether completing `d` offered the scorer a join of pieces 1 and 2 (the
+// scorer on, its candidates recorded): the candidate, its hand cost and the
+// scorer's probability, or none.
+std::optional<JoinCandidate> candidate_1_2(const Drawing& d) {
+  Options o;
+  o.inpaint_background = false;
+  o.face_joins = false;
+  o.join_scorer.record = true;
+  const Result r = complete_strands(test::input_of(d, Vec2(125, 10)), o);
+  for (const JoinCandidate& c : r.join_candidates)
+    if (std::min(c.region_a, c.region_b) == 1 && std::max(c.region_a, c.region_b) == 2) return c;
+  return std::nullopt;
+}
+
+TEST(PaintJoins, OffTheGradientByUnevenWindowsIsLeftToTheScorer) {
+  // The upper piece falls 0.5 levels a pixel down the strand, the lower one
+  // is one colour (its window's slope 0, under a quarter of the other's),
+  // 40 levels darker than the upper one's slope predicts: off the gradient.
+  // A window that measured no slope may have missed the strand's rate, so
+  // the candidate is not refused but priced just over the limit and left to
+  // the scorer (asked: a probability), which alone may join it; with the
+  // scorer off it stays apart, as before.
+  Drawing uneven = strand_under_band();
+  repaint(uneven, 1, [](int, int y) { return ramp(kBase, y); });
+  repaint(uneven, 2, [](int, int) { return ramp(kBase, 210); });
+  const std::optional<JoinCandidate> c = candidate_1_2(uneven);
+  ASSERT_TRUE(c.has_value()) << "uneven windows: refused, not left to the scorer";
+  EXPECT_GT(c->hand_cost, Options{}.max_join_cost);
+  EXPECT_GE(c->probability, 0.0);
+  Options off;
+  off.inpaint_background = false;
+  off.face_joins = false;
+  off.join_scorer.enabled = false;
+  EXPECT_EQ(test::regions_with(complete_strands(test::input_of(uneven, Vec2(125, 10)), off), 1),
+            (std::vector<int>{1}));
+  // Both pieces falling 0.5 a pixel, the lower one 30 levels lighter than
+  // the slopes predict: even windows measured the rate, so the step is
+  // another strand's and the candidate is refused before the scorer.
+  Drawing even = strand_under_band();
+  repaint(even, 1, [](int, int y) { return ramp(kBase, y); });
+  repaint(even, 2, [](int, int y) { return ramp(kBase, y - 60); });
+  EXPECT_FALSE(candidate_1_2(even).has_value());
 }
 
 }  // namespace
