@@ -143,8 +143,9 @@ constexpr double kOneFieldBonus = 0.9;
 // tried (a cost for the step beyond the prediction, a gate on the step's
 // direction along the predicted change) joined as many wrong pairs as
 // right ones; the scorer, never trained on such candidates, still ranks
-// the right ones first (dev gradient 2000-2099: of 230 such candidates the
-// two right ones top at p 0.40 and 0.31, the best wrong one at 0.13).
+// the right ones first (dev gradient 2000-2099: of the 230 candidates
+// `off_gradient` alone refused, two right ones top at p 0.40 and 0.31, both
+// uneven; the best wrong uneven one is at 0.13, wrong even ones reach 0.30).
 // Figures in docs/completion-record.md, "Session 25".
 constexpr double kUnevenCostBase = 0.01;
 constexpr double kUnevenCostShare = 0.5;
