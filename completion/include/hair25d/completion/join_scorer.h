@@ -90,9 +90,11 @@ struct JoinScorerOptions {
   // precision on every dev set with either relations (screentone 2000 with
   // the layering's 0.888 / 0.633 -> 0.890 / 0.646) but lost 2 wrong pairs on
   // fresh mixed 7000 with the annotation's (docs/completion-record.md
-  // "Session 25"): off.
+  // "Session 25"). On the lead's held sets it added right pairs only
+  // (mixed 1000-1099 +4 / +4, screentone 1000-1049 +2 / +6 with the
+  // annotation's / layering's relations, no wrong one): on for screentone.
   enum class Ensemble { kNone, kScreentone, kAll };
-  Ensemble ensemble = Ensemble::kNone;
+  Ensemble ensemble = Ensemble::kScreentone;
   double ensemble_threshold = 0.95;
   double refuse_below = 0.0;
   // Session 18: edge pairs whose tangents turn more than
