@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "annotated_eval.h"
@@ -14,6 +12,7 @@
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/core/error.h"
 #include "hair25d/generator/generator.h"
+#include "weights_file.h"
 
 namespace hair25d::completion {
 namespace {
@@ -41,18 +40,10 @@ TEST(JoinScorerEnsemble, WeightsFileIsTheEnsemblePrinted) {
   const std::span<const JoinScorerNet> nets = ensemble_join_scorers();
   ASSERT_GE(nets.size(), 2u);
   for (std::size_t i = 1; i < nets.size(); ++i) EXPECT_NE(nets[i].w1[0][0], nets[0].w1[0][0]);
-  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) +
-                   "/../../completion/src/join_scorer_ensemble_weights.cpp");
-  ASSERT_TRUE(in.good());
-  std::stringstream file;
-  file << in.rdbuf();
-  auto body = [](const std::string& s) {
-    const std::string::size_type at = s.find("// Generated file");
-    return at == std::string::npos ? std::string() : s.substr(at);
-  };
-  const std::string printed = join_scorer_ensemble_source(nets, "x");
-  EXPECT_FALSE(body(printed).empty());
-  EXPECT_EQ(body(file.str()), body(printed));
+  const std::string printed = test::generated_part(join_scorer_ensemble_source(nets, "x"));
+  EXPECT_FALSE(printed.empty());
+  EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_ensemble_weights.cpp")),
+            printed);
   EXPECT_NE(join_scorer_ensemble_source({}, "x").find("return {};"), std::string::npos);
 }
 

@@ -7,13 +7,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <random>
-#include <sstream>
 
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
 #include "synthetic.h"
+#include "weights_file.h"
 
 namespace hair25d::completion {
 namespace {
@@ -333,27 +332,14 @@ TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
   EXPECT_NE(join_scorer_source(train_join_scorer(x, y, o).net, "a"), a);
   // The committed weights file is the default net printed again, byte for
   // byte below its comment (the floats round-trip).
-  std::ifstream in(std::string(HAIR25D_TEST_DATA_DIR) +
-                   "/../../completion/src/join_scorer_weights.cpp");
-  ASSERT_TRUE(in.good());
-  std::stringstream file;
-  file << in.rdbuf();
-  auto body = [](const std::string& s) {
-    const std::string::size_type at = s.find("// Generated file");
-    return at == std::string::npos ? std::string() : s.substr(at);
-  };
-  const std::string printed = join_scorer_source(default_join_scorer(), "x");
-  EXPECT_FALSE(body(printed).empty());
-  EXPECT_EQ(body(file.str()), body(printed));
+  const std::string printed = test::generated_part(join_scorer_source(default_join_scorer(), "x"));
+  EXPECT_FALSE(printed.empty());
+  EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_weights.cpp")), printed);
   // And the net for candidates over the angle limit (session 18).
-  std::ifstream wide_in(std::string(HAIR25D_TEST_DATA_DIR) +
-                        "/../../completion/src/join_scorer_wide_weights.cpp");
-  ASSERT_TRUE(wide_in.good());
-  std::stringstream wide_file;
-  wide_file << wide_in.rdbuf();
   const std::string wide = join_scorer_source(wide_join_scorer(), "x", "wide_join_scorer");
   EXPECT_NE(wide.find("wide_join_scorer()"), std::string::npos);
-  EXPECT_EQ(body(wide_file.str()), body(wide));
+  EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_wide_weights.cpp")),
+            test::generated_part(wide));
 }
 
 // A strand that turns a corner under a band (session 18): piece 1 comes
