@@ -11,11 +11,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::paint;
-using test::paint_skin;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 const Rgba kBack{110, 70, 60, 255};
 const Rgba kOther{70, 110, 150, 255};

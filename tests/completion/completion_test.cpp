@@ -10,11 +10,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::paint;
-using test::strand_with;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 const Rgba kHair{200, 170, 90, 255};
 const Rgba kFront{120, 90, 160, 255};

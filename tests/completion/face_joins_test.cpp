@@ -10,11 +10,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::paint;
-using test::strand_with;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 const Rgba kBack{110, 70, 60, 255};
 const Rgba kOther{60, 150, 210, 255};

@@ -14,10 +14,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::paint;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 // A linear field: `base` plus `sx`, `sy` levels a pixel on every channel.
 struct Field {

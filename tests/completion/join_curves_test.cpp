@@ -12,10 +12,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::blank;
-using test::Drawing;
-using test::paint;
-using test::strand_with;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 const Rgba kBack{110, 70, 60, 255};
 const Rgba kSkin{252, 228, 205, 255};

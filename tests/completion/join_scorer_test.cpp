@@ -17,10 +17,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::paint;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 int feature(const char* name) {
   for (int i = 0; i < kJoinFeatures; ++i)

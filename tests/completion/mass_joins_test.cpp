@@ -13,14 +13,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::paint;
-using test::strand_with;
-
-using test::kBack;
-using test::kFan;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 // Back hair in kBack (the right piece in `right_colour`) behind a fan of
 // three strands (test::back_hair_under_fan).

@@ -14,13 +14,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::paint;
-
-using test::kBack;
-using test::kFan;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 // The back hair's gradient: lighter to the right and down (0.46 RGB a px
 // along x), plus `offset` a channel.

@@ -15,11 +15,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::joined_with_1;
-using test::paint;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 constexpr Rgba kBase{200, 150, 110, 255};
 constexpr Rgba kBack{120, 90, 70, 255};

@@ -14,10 +14,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::paint;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 constexpr Rgba kBack{120, 90, 70, 255};
 constexpr Rgba kStrand{200, 150, 110, 255};

@@ -13,11 +13,8 @@
 namespace hair25d::completion {
 namespace {
 
-using test::below;
-using test::blank;
-using test::Drawing;
-using test::paint;
-using test::paint_skin;
+// The shared synthetic drawings and helpers (synthetic.h).
+using namespace test;
 
 const Rgba kBack{110, 70, 60, 255};
 const Rgba kBand{77, 49, 42, 255};  // kBack x 0.7: the back's cel shadow
