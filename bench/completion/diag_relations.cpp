@@ -9,7 +9,13 @@
 // pairs gone are counted (pairs a correction loses or adds anew are not).
 // Equals between two strands are printed one by one with their evidence and
 // paint, the true equals of screentone drawings with their tone tests.
-//   diag_relations --shading screentone|mixed|... --seed S --count N
+// With --seams (session 26, joins52): every touching order of the layering
+// with completion's seam tests (one paint, seam geometry and its meeting
+// points, x^a: the third region directly above a), whether it overrode a
+// measured equal (ov, ev: its EqualEvidence), and the right / wrong pairs
+// that uniting its two pieces alone adds (weak orders a seam test could
+// take only).
+//   diag_relations [--seams] --shading screentone|mixed|... --seed S --count N
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <map>
@@ -19,6 +25,7 @@
 #include "../../completion/src/bank_crossings.h"
 #include "../../completion/src/context.h"
 #include "../../completion/src/join_paint.h"
+#include "../../completion/src/seam_joins.h"
 #include "../../tests/completion/annotated_eval.h"
 #include "case_relations.h"
 #include "hair25d/generator/generator.h"
@@ -54,6 +61,9 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed);
   app.add_option("--count", count);
   app.add_option("--shading", shading);
+  bool seams_only = false;
+  app.add_flag("--seams", seams_only,
+               "print each touching order with its seam tests and what uniting it does");
   CLI11_PARSE(app, argc, argv);
   completion::Options options;
   options.inpaint_strands = false;
@@ -124,6 +134,65 @@ int main(int argc, char** argv) {
     completion::detail::RegionTones tones(ctx);
     completion::detail::RegionFields fields(ctx);
 
+    if (seams_only) {
+      // Each measured touching order, its seam tests (completion.cpp
+      // read_relations) and what uniting its pieces (the user's equal) does.
+      std::map<std::pair<int, int>, Relation> direct;
+      for (const RegionRelation& r : pred)
+        if (r.user_fixed || r.score != 0.0 ||
+            touching.count({std::min(r.a, r.b), std::max(r.a, r.b)}))
+          direct[{r.a, r.b}] = r.relation;
+      const auto above = [&](int x, int y) {
+        auto it = direct.find({x, y});
+        if (it != direct.end()) return it->second == Relation::kAbove;
+        it = direct.find({y, x});
+        return it != direct.end() && it->second == Relation::kBelow;
+      };
+      int right_p = 0, wrong_p = 0;
+      for (auto p : P) (strand[p.first] == strand[p.second] ? right_p : wrong_p)++;
+      for (int i = 0; i < static_cast<int>(pred.size()); ++i) {
+        const RegionRelation& r = pred[i];
+        if (r.relation == Relation::kEqual) continue;
+        if (!touching.count({std::min(r.a, r.b), std::max(r.a, r.b)})) continue;
+        const bool one = strand[r.a] == strand[r.b];
+        const auto it = truth.find({r.a, r.b});
+        const char* t = it == truth.end()                ? "none"
+                        : it->second == Relation::kEqual ? "equal"
+                        : it->second == r.relation       ? "order"
+                                                         : "reversed";
+        const bool paint = completion::detail::one_paint(tones, fields, r.a, r.b);
+        const bool geom = completion::detail::seam_geometry(ctx, r.a, r.b, above);
+        // Only the weak ones that a seam test could take are united (each is
+        // one more completion of the drawing).
+        int right_c = right_p, wrong_c = wrong_p;
+        if (std::abs(r.score) < 2.0 && (one || paint || geom)) {
+          std::vector<RegionRelation> rel = pred;
+          rel[i] = {r.a, r.b, Relation::kEqual, 1.0, true, false};
+          right_c = wrong_c = 0;
+          for (auto p : run(rel)) (strand[p.first] == strand[p.second] ? right_c : wrong_c)++;
+        }
+        std::printf(
+            "seed %d seamcand %d-%d %s truth %s score %.2f st %d paint %d geom %d step %.2f "
+            "match %d mstep %.3f tone %.3f %.3f px %d %d ttd %d ov %d ev %s %.2f; unite %+d %+d;",
+            seed + k, r.a, r.b, one ? "one" : "two", t, r.score, tones.screentone(), paint, geom,
+            fields.paint_step(r.a, r.b), static_cast<int>(tones.match(r.a, r.b)),
+            tones.mass_step(r.a, r.b), tones.tone(r.a), tones.tone(r.b), tones.tone_pixels(r.a),
+            tones.tone_pixels(r.b), completion::detail::two_tones_by_dots(tones, r.a, r.b),
+            r.overridden,
+            !r.equal_evidence        ? "no"
+            : r.equal_evidence->open ? "open"
+                                     : "occl",
+            r.equal_evidence ? r.equal_evidence->log_odds : 0.0, right_c - right_p,
+            wrong_c - wrong_p);
+        for (const auto& e : completion::detail::seam_ends(ctx, r.a, r.b))
+          std::printf(" [x%d%s%s s%.0f t%.0f]", e.third,
+                      e.third != 0 && above(e.third, r.a) ? "^a" : "",
+                      e.third != 0 && above(e.third, r.b) ? "^b" : "", e.sides, e.through);
+        std::printf("\n");
+      }
+      std::fflush(stdout);
+      continue;
+    }
     // Class of each predicted relation (index -> class name).
     std::map<std::string, std::vector<int>> classes;
     std::set<std::pair<int, int>> predicted_pairs;

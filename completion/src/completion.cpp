@@ -124,6 +124,32 @@ bool weak_equal(const RegionRelation& r) {
   return e.log_odds < (e.open ? 0.0 : kFirmEqualLogOdds);
 }
 
+// An order the layering measured as an `equal` (it carries EqualEvidence,
+// score 0) and its drawing order overrode (depth_order.h: the two were
+// already ordered through chains of other relations, taken first): the
+// pieces' own common boundary said one depth, the order came from
+// elsewhere. Between pieces of one paint (read_relations) it is a seam,
+// with no seam geometry: such pairs seldom meet a third region where the
+// angles can be read. Its evidence must say one depth: over drawn lines
+// with mean log-odds of at least kMinOverriddenEqualLogOdds (half the
+// firm bar; below it dev flat 2069's two thin pieces of two strands of one
+// flat colour, 0.91), or, for an open pair (no line between the pieces:
+// the layering's equal says only that none was drawn), on screentone only,
+// where one paint is both pieces' dots measured alike (annotated case1's
+// open pair of two strands of one flat colour). Session 26 (joins52),
+// precision / recall with the layering's relations: dev mixed 2000-2099
+// 0.924 / 0.669 -> 0.924 / 0.672, screentone 3000-3099 0.915 / 0.661 ->
+// 0.916 / 0.665 (docs/completion-record.md, "Session 26: equals the
+// drawing order overrode").
+constexpr double kMinOverriddenEqualLogOdds = 1.0;
+
+bool overridden_equal(const RegionRelation& r, bool screentone) {
+  if (r.user_fixed || !r.overridden || !r.equal_evidence || r.relation == Relation::kEqual)
+    return false;
+  if (r.equal_evidence->open) return screentone;
+  return r.equal_evidence->log_odds >= kMinOverriddenEqualLogOdds;
+}
+
 // region -> the regions above it through any chain of `occluders` (region ->
 // the regions directly above it).
 std::map<int, std::set<int>> chains_above(const std::map<int, std::set<int>>& occluders) {
@@ -186,7 +212,8 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
                                             UnionFind& strands, Result& result) {
   // Seams (seam_joins.h): two touching pieces of one paint that the
   // layering orders weakly, whose side outlines run on across the line
-  // between them, are halves of one strand as an `equal` pair is.
+  // between them or whose order overrode the layering's equal
+  // (overridden_equal), are halves of one strand as an `equal` pair is.
   std::map<std::pair<int, int>, Relation> direct;
   for (const RegionRelation& r : relations)
     if (!unmeasured(r, touching)) direct[{r.a, r.b}] = r.relation;
@@ -199,11 +226,14 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
   std::set<std::pair<int, int>> seams;
   for (const RegionRelation& r : relations) {
     if (unmeasured(r, touching) || r.relation == Relation::kEqual || firm(r)) continue;
-    // One paint (bank_crossings.h), never on screentone: one tone there is
-    // shared by several strands (dev mixed 2000-2099, seed 2099: a seam of
-    // two strands of one tone, 5 wrong pairs).
-    if (!tones.screentone() && detail::one_paint(tones, fields, r.a, r.b) &&
-        detail::seam_geometry(ctx, r.a, r.b, directly_above))
+    // One paint (bank_crossings.h). The seam geometry never on screentone:
+    // one tone there is shared by several strands (dev mixed 2000-2099, seed
+    // 2099: a seam of two strands of one tone, 5 wrong pairs); an equal the
+    // drawing order overrode needs no geometry (overridden_equal).
+    const bool overridden = overridden_equal(r, tones.screentone());
+    if (!overridden && tones.screentone()) continue;
+    if (detail::one_paint(tones, fields, r.a, r.b) &&
+        (overridden || detail::seam_geometry(ctx, r.a, r.b, directly_above)))
       seams.insert({r.a, r.b});
   }
   for (const RegionRelation& r : relations) {

@@ -235,6 +235,53 @@ TEST(Completion, WeakEqualsBetweenAToneAndPaperWhiteAreRefused) {
   EXPECT_EQ(strand_of(0.5, true, false, 160), joined);
 }
 
+// An order the drawing order made of the layering's `equal` (overridden,
+// with the equal's evidence) between pieces of one paint is a seam without
+// the seam geometry (session 26): the T of strand_of_cut_band, whose sides
+// say nothing, is joined where its weak order is such an equal measured
+// over drawn lines (log-odds 1.5), not where the evidence is under the bar
+// (0.5), open (no line between the pieces: the paint alone off
+// screentone), the order a measured one (not overridden) or the paint
+// another. On screentone (the pieces dotted as in the test above) an open
+// overridden equal joins two pieces whose dots match, never a toned piece
+// and a white one, and a plain weak order joins nothing.
+TEST(Completion, EqualsTheDrawingOrderOverrodeBetweenOnePaintAreSeams) {
+  const auto overridden = [](double log_odds, bool open = false) {
+    RegionRelation r{1, 2, Relation::kBelow, 0.0, false, true};
+    r.equal_evidence = EqualEvidence{log_odds, open, open ? 0.9 : 0.1};
+    return r;
+  };
+  const std::vector<int> joined{1, 2}, apart{1};
+  EXPECT_EQ(strand_of_cut_band(overridden(1.5), kHair, true), joined);
+  EXPECT_EQ(strand_of_cut_band(overridden(0.5), kHair, true), apart);
+  EXPECT_EQ(strand_of_cut_band(overridden(-1.0, true), kHair, true), apart);
+  EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kBelow, 0.0}, kHair, true), apart);
+  EXPECT_EQ(strand_of_cut_band(overridden(1.5), Rgba{185, 160, 100, 255}, true), apart);
+
+  const auto dotted = [](const RegionRelation& r, bool white) {
+    Drawing d = blank(300, 170);
+    const Rgba paper{235, 205, 175, 255};
+    paint(
+        d, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, paper, 1);
+    paint(
+        d, [](double x, double y) { return x >= 150 && x < 280 && y > 60 && y < 100; }, paper, 2);
+    const auto dots = [&](int x, int y) {
+      const double k = test::dot_cover(x, y, 6.0, 0.3, 0.4);
+      const auto mix = [&](int p, int ink) {
+        return static_cast<std::uint8_t>(std::lround(p + k * (ink - p)));
+      };
+      return Rgba{mix(235, 60), mix(205, 40), mix(175, 30), 255};
+    };
+    repaint(d, 1, dots);
+    if (!white) repaint(d, 2, dots);
+    d.relations = {r};
+    return test::regions_with(run(d, Vec2(150, 300)), 1);
+  };
+  EXPECT_EQ(dotted(overridden(-1.0, true), false), joined);
+  EXPECT_EQ(dotted(overridden(-1.0, true), true), apart);
+  EXPECT_EQ(dotted({1, 2, Relation::kBelow, 0.5}, false), apart);
+}
+
 // A wide piece (a cap, the back hair) cut by a strand lying over it, where
 // the cut runs between two other occluders: no side outline reaches the cut,
 // so only the banks of the strand facing each other tell that the two
