@@ -186,11 +186,6 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::max_angle_deg");
   app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,
                  "JoinScorerOptions::wide_threshold");
-  app.add_option("--scorer-tangent-threshold", options.join_scorer.tangent_threshold,
-                 "JoinScorerOptions::tangent_threshold (1: off)");
-  app.add_option("--scorer-tangent-ensemble-threshold",
-                 options.join_scorer.tangent_ensemble_threshold,
-                 "JoinScorerOptions::tangent_ensemble_threshold (1: off)");
   app.add_option("--scorer-refuse-below", options.join_scorer.refuse_below,
                  "JoinScorerOptions::refuse_below");
   bool bound = false;

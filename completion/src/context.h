@@ -3,7 +3,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <array>
 #include <functional>
 #include <map>
 #include <opencv2/core.hpp>
@@ -120,12 +119,6 @@ struct Join {
   // Off the gradient by windows of uneven slopes: the scorer alone may join
   // it, at kUnevenThreshold (joins.cpp).
   bool uneven_gradient = false;
-  // Over max_join_angle_deg with its own tangents, within it with one end's
-  // tangent standing in for a piece's other end (JoinScorerOptions::
-  // tangent_threshold): the scorer alone may join it. `tangents` holds the
-  // ones it was measured with: a's p, a's q, b's p, b's q.
-  bool second_tangent = false;
-  std::array<Vec2, 4> tangents{};
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
 // records) or refuses joining the strands of regions a and b. `face` (CV_8U,

@@ -125,11 +125,6 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("wide_band_high = " + num(wide_band_high) + "; must be in [0, 100)");
   if (!(wide_threshold > 0 && wide_threshold < 1))
     return fail("wide_threshold = " + num(wide_threshold) + "; must be in (0, 1)");
-  if (!(tangent_threshold > 0 && tangent_threshold <= 1))
-    return fail("tangent_threshold = " + num(tangent_threshold) + "; must be in (0, 1]");
-  if (!(tangent_ensemble_threshold > 0 && tangent_ensemble_threshold <= 1))
-    return fail("tangent_ensemble_threshold = " + num(tangent_ensemble_threshold) +
-                "; must be in (0, 1]");
   return true;
 }
 

@@ -7,7 +7,6 @@
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <set>
-#include <tuple>
 
 #include "bank_crossings.h"
 #include "context.h"
@@ -224,42 +223,6 @@ Polyline join_patch(const Edge& a, const Edge& b) {
   return patch;
 }
 
-// The pair measured again with either end's tangent standing in for both
-// ends of a piece (JoinScorerOptions::tangent_threshold), when its own
-// tangents lie over `max_angle` off the chords and such a choice brings them
-// within it: the choice with the smallest worst angle. A piece's end whose
-// outline turns round its tip or a corner within the tangent arm, or a
-// sliver's side, spoils that end's tangent while the other end's still runs
-// along the strand (docs/completion-record.md "Session 22").
-std::optional<std::pair<Edge, Edge>> with_either_tangent(const Edge& a, const Edge& b,
-                                                         double max_angle) {
-  auto choices = [](const Edge& e) {
-    std::vector<std::pair<Vec2, Vec2>> out{{e.tangent_p, e.tangent_q}};
-    if (e.tangent_p != e.tangent_q) {
-      out.emplace_back(e.tangent_p, e.tangent_p);
-      out.emplace_back(e.tangent_q, e.tangent_q);
-    }
-    return out;
-  };
-  const auto ta = choices(a), tb = choices(b);
-  const Vec2 c1 = b.q - a.p, c2 = a.q - b.p;
-  auto worst = [&](const std::pair<Vec2, Vec2>& x, const std::pair<Vec2, Vec2>& y) {
-    return std::max(
-        {angle(x.first, c1), angle(-y.second, c1), angle(y.first, c2), angle(-x.second, c2)});
-  };
-  double best = max_angle;
-  int best_a = -1, best_b = -1;
-  for (std::size_t x = 0; x < ta.size(); ++x)
-    for (std::size_t y = 0; y < tb.size(); ++y)
-      if (const double w = worst(ta[x], tb[y]); w <= best)
-        best = w, best_a = static_cast<int>(x), best_b = static_cast<int>(y);
-  if (best_a <= 0 && best_b <= 0) return std::nullopt;  // none, or the own tangents
-  std::pair<Edge, Edge> out{a, b};
-  std::tie(out.first.tangent_p, out.first.tangent_q) = ta[best_a];
-  std::tie(out.second.tangent_p, out.second.tangent_q) = tb[best_b];
-  return out;
-}
-
 // Share of the patch's pixels outside both pieces that lie under an occluder
 // of either piece: the hidden part may only be where the drawing shows hair
 // in front (§5 "completed part lies under the occluders").
@@ -344,50 +307,28 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
     which.push_back(static_cast<int>(i));
     costs.push_back(j.cost);
     ends.emplace_back(j.edge_a, j.edge_b);
-    if (j.second_tangent) {
-      // Read with the tangents it was measured with.
-      Edge a = edges[j.edge_a], b = edges[j.edge_b];
-      std::tie(a.tangent_p, a.tangent_q, b.tangent_p, b.tangent_q) =
-          std::tie(j.tangents[0], j.tangents[1], j.tangents[2], j.tangents[3]);
-      features.push_back(join_features(ctx, a, b, *terms_of[i], front, edge_count));
-    } else {
-      features.push_back(
-          join_features(ctx, edges[j.edge_a], edges[j.edge_b], *terms_of[i], front, edge_count));
-    }
+    features.push_back(
+        join_features(ctx, edges[j.edge_a], edges[j.edge_b], *terms_of[i], front, edge_count));
   }
   // The rivals of a candidate within the angle limit are the others within
   // it (as the default net was trained); a wide candidate's are all up to
   // wide_band_high (as the wide net was).
-  // A second-tangent candidate is no rival of the others (they are read
-  // as without it), but its rivals are all within the band.
-  std::vector<double> inner = costs, with_second = costs;
-  bool any_wide = false, any_second = false;
-  for (std::size_t k = 0; k < which.size(); ++k) {
-    const Join& j = (*candidates)[which[k]];
-    if (j.wide) inner[k] = with_second[k] = std::numeric_limits<double>::infinity();
-    if (j.second_tangent) inner[k] = std::numeric_limits<double>::infinity();
-    any_wide = any_wide || j.wide;
-    any_second = any_second || j.second_tangent;
-  }
+  std::vector<double> inner = costs;
+  bool any_wide = false;
+  for (std::size_t k = 0; k < which.size(); ++k)
+    if ((*candidates)[which[k]].wide)
+      inner[k] = std::numeric_limits<double>::infinity(), any_wide = true;
   if (any_wide) {
     std::vector<JoinFeatures> all = features;
     add_rival_features(costs, ends, std::max(s.band_high, s.wide_band_high), &all);
     for (std::size_t k = 0; k < which.size(); ++k)
       if ((*candidates)[which[k]].wide) features[k] = all[k];
   }
-  if (any_second) {
-    std::vector<JoinFeatures> all = features;
-    add_rival_features(with_second, ends, s.band_high, &all);
-    for (std::size_t k = 0; k < which.size(); ++k)
-      if ((*candidates)[which[k]].second_tangent) features[k] = all[k];
-  }
   {
     std::vector<JoinFeatures> own = features;
     add_rival_features(inner, ends, s.band_high, &own);
-    for (std::size_t k = 0; k < which.size(); ++k) {
-      const Join& j = (*candidates)[which[k]];
-      if (!j.wide && !j.second_tangent) features[k] = own[k];
-    }
+    for (std::size_t k = 0; k < which.size(); ++k)
+      if (!(*candidates)[which[k]].wide) features[k] = own[k];
   }
   const JoinScorerNet& net = default_join_scorer();
   // Session 25: the ensemble may rescue what the default net refuses.
@@ -405,17 +346,6 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       j.cost = s.enabled && p >= s.wide_threshold
                    ? o.max_join_cost + (s.wide_threshold - p) * (s.band_high - s.band_low)
                    : std::numeric_limits<double>::infinity();
-    } else if (j.second_tangent) {
-      // Measured with stand-in tangents: joined only where the hand cost
-      // would have joined it with them and the default net and the ensemble
-      // both trust it; ranked as the default net's rescues.
-      p = join_probability(net, features[k]);
-      const bool trusted =
-          costs[k] <= o.max_join_cost && p >= s.tangent_threshold &&
-          !ensemble_join_scorers().empty() &&
-          join_probability(ensemble_join_scorers(), features[k]) >= s.tangent_ensemble_threshold;
-      j.cost = trusted ? o.max_join_cost + (s.tangent_threshold - p) * (s.band_high - s.band_low)
-                       : std::numeric_limits<double>::infinity();
     } else if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
       p = join_probability(net, features[k]);
       // The ensemble's mean, asked only for what the default net refuses.
@@ -466,10 +396,6 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   const bool scoring = scorer.enabled || ctx.join_log != nullptr;
   const double limit = scoring ? std::max(o.max_join_cost, scorer.band_high) : o.max_join_cost;
   const double wide_limit = std::max(limit, scorer.wide_band_high);
-  // Pairs over the angle limit measured again with either end's tangent
-  // (with_either_tangent), joined by the scorer alone.
-  const bool second_tangents =
-      scorer.enabled && scorer.tangent_threshold < 1 && scorer.tangent_ensemble_threshold < 1;
   std::vector<EdgePaint> paints(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) paints[i] = edge_paint(ctx, edges[i]);
   std::map<int, RegionPaint> region_paints;
@@ -527,9 +453,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         bank = bank_join(crossings[i], crossings[j], a, b);
       // p_a ↔ q_b and p_b ↔ q_a: the outlines traverse both pieces the same way.
       const Vec2 c1 = b.q - a.p, c2 = a.q - b.p;
-      double angles[4] = {angle(a.tangent_p, c1), angle(-b.tangent_q, c1), angle(b.tangent_p, c2),
-                          angle(-a.tangent_q, c2)};
-      double worst = *std::max_element(angles, angles + 4);
+      const double angles[4] = {angle(a.tangent_p, c1), angle(-b.tangent_q, c1),
+                                angle(b.tangent_p, c2), angle(-a.tangent_q, c2)};
+      const double worst = *std::max_element(angles, angles + 4);
       const double wide = std::max(a.width, b.width), narrow = std::min(a.width, b.width);
       // A wide piece's side under a strand (tangents only guessed) is no cut
       // across a strand: on the annotated cases such edges joined the cap to
@@ -564,20 +490,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       // Over the angle limit but within the scorer's (JoinScorerOptions::max_angle_deg).
       const bool wide_angle = scoring && cut_pair && across && !strand_like &&
                               worst <= scorer.max_angle_deg * M_PI / 180.0;
-      // Refused only by the angle: a second chance with either end's tangent
-      // (not across ink, whose chords are a crossing tip's few pixels).
-      std::optional<std::pair<Edge, Edge>> mended;
-      if (second_tangents && cut_pair && across && !ink && !strand_like && !wide_angle)
-        mended = with_either_tangent(a, b, max_angle);
-      // The strand join's edges: the pair's own, or with the stand-in tangents.
-      const Edge& sa = mended ? mended->first : a;
-      const Edge& sb = mended ? mended->second : b;
-      if (mended) {
-        angles[0] = angle(sa.tangent_p, c1), angles[1] = angle(-sb.tangent_q, c1);
-        angles[2] = angle(sb.tangent_p, c2), angles[3] = angle(-sa.tangent_q, c2);
-        worst = *std::max_element(angles, angles + 4);
-      }
-      if (!strand_like && !wide_angle && !mended && bank.share < kMinBankShare) continue;
+      if (!strand_like && !wide_angle && bank.share < kMinBankShare) continue;
       Join join;
       join.edge_a = static_cast<int>(i);
       join.edge_b = static_cast<int>(j);
@@ -590,18 +503,17 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       // linear pieces stepping more than their gradient explains.
       // Off the gradient by uneven windows: for the scorer (kUnevenThreshold).
       const bool uneven = scoring && step.off_gradient && step.uneven_slopes;
-      const bool second = mended && !step.off_gradient;
       const bool other_paint = (step.flat && step.step > kMaxFlatStrandStep &&
                                 (front.count(a.region) > 0 || front.count(b.region) > 0)) ||
                                (step.off_gradient && !uneven) ||
                                (ink && step.flat && step.step > kMaxInkFlatStep);
-      if ((strand_like || wide_angle || second) && !other_paint) {
+      if ((strand_like || wide_angle) && !other_paint) {
         // The hidden part keeps a strand's width: half-way along the joins its
         // width lies near the widths at the two cuts (criterion 3 of §5.1 seen
         // from the whole join, not only its ends).
-        const CubicBezier first = join_bezier(sa.p, sa.tangent_p, sb.q, -sb.tangent_q);
-        const CubicBezier other = join_bezier(sb.p, sb.tangent_p, sa.q, -sa.tangent_q);
-        const double middle = (first.point(0.5) - other.point(0.5)).norm();
+        const CubicBezier first = join_bezier(a.p, a.tangent_p, b.q, -b.tangent_q);
+        const CubicBezier second = join_bezier(b.p, b.tangent_p, a.q, -a.tangent_q);
+        const double middle = (first.point(0.5) - second.point(0.5)).norm();
         const double ends = 0.5 * (a.width + b.width);
         const double bulge = std::abs(std::log(std::max(middle, 1.0) / std::max(ends, 1.0)));
         const double gap = 0.5 * (c1.norm() + c2.norm());
@@ -637,7 +549,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         cost += tone_cost;
         if (uneven) cost = o.max_join_cost + kUnevenCostBase + kUnevenCostShare * cost;
         if (cost <= (wide_angle ? wide_limit : limit)) {  // before the costly coverage raster
-          join.patch = join_patch(sa, sb);
+          join.patch = join_patch(a, b);
           int hidden = 0;
           join.behind_face = !face.empty() && !front.count(a.region) && !front.count(b.region);
           std::map<int, int> lowest, under_by;
@@ -684,8 +596,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       if (bank.window && (!front.count(a.region) || !front.count(b.region)) &&
           step.step > kMaxBackWindowStep)
         bank.share = 0.0;
-      // A second chance never takes the place of a bank join.
-      if (bank.share >= kMinBankShare && (bank_cost < cost || wide_angle || second)) {
+      if (bank.share >= kMinBankShare && (bank_cost < cost || wide_angle)) {
         cost = bank_cost;
         join.patch.clear();
         join.behind_face = false;
@@ -693,10 +604,6 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         terms.reset();
       } else if (wide_angle && std::isfinite(cost)) {
         join.wide = true;
-      } else if (second) {
-        if (!std::isfinite(cost)) continue;
-        join.second_tangent = true;
-        join.tangents = {sa.tangent_p, sa.tangent_q, sb.tangent_p, sb.tangent_q};
       }
       if (cost > (join.wide ? wide_limit : limit)) continue;
       join.cost = cost;

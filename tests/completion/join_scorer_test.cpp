@@ -447,15 +447,6 @@ TEST(JoinScorer, BadInputThrows) {
   o = {};
   o.join_scorer.refuse_below = 0.95;  // above the threshold
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
-  o = {};
-  o.join_scorer.tangent_threshold = 0.0;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("tangent_threshold"), std::string::npos);
-  o = {};
-  o.join_scorer.tangent_ensemble_threshold = 1.5;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("tangent_ensemble_threshold"), std::string::npos);
-  EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
 }
 
 }  // namespace

@@ -7,8 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <optional>
-#include <utility>
 
 #include "hair25d/completion/completion.h"
 #include "synthetic.h"
@@ -254,83 +252,6 @@ TEST(StrandJoins, StrandCutByInkOnlyIsJoined) {
   // Two strands side by side, ink between them all along: no cut across a
   // strand, whatever the paint.
   EXPECT_EQ(joined_with_1(strands_beside_ink()), (std::vector<int>{1}));
-}
-
-// The strand of strand_under_band (both pieces kStrand) whose upper piece
-// 1 has a step in its left side `step` px above the band: its left outline
-// runs down x 100 to y 118 − step, across to x 118, then down to the band.
-Drawing stepped_strand_under_band(double step) {
-  Drawing d = blank(250, 300);
-  paint(
-      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kBack, 4);
-  paint(
-      d,
-      [step](double x, double y) {
-        return x > 100 && x < 140 && y > 40 && y < 140 && !(x < 118 && y > 118 - step);
-      },
-      kStrand, 1);
-  paint(
-      d, [](double x, double y) { return x > 100 && x < 140 && y >= 140 && y < 230; }, kStrand, 2);
-  paint(
-      d, [](double x, double y) { return x > 40 && x < 210 && y > 118 && y < 162; }, kBang, 3);
-  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3), below(2, 3)};
-  return d;
-}
-
-// Completing `d` with `scorer`'s options (candidates recorded): the regions
-// joined with 1 and the candidate joining 1 and 2, if any.
-std::pair<std::vector<int>, std::optional<JoinCandidate>> with_scorer(
-    const Drawing& d, const JoinScorerOptions& scorer, double max_join_cost = 2.4) {
-  Options o;
-  o.inpaint_background = false;
-  o.face_joins = false;
-  o.path_joins = false;
-  o.max_join_cost = max_join_cost;
-  o.join_scorer = scorer;
-  o.join_scorer.record = true;
-  const Result r = complete_strands(test::input_of(d, Vec2(125, 10)), o);
-  std::optional<JoinCandidate> candidate;
-  for (const JoinCandidate& c : r.join_candidates)
-    if (std::min(c.region_a, c.region_b) == 1 && std::max(c.region_a, c.region_b) == 2)
-      candidate = c;
-  return {test::regions_with(r, 1), candidate};
-}
-
-TEST(StrandJoins, TangentSpoiltByAStepIsGivenASecondChanceByTheScorer) {
-  // The step turns the last visible 12 px of piece 1's left side
-  // crosswise, so that end's tangent lies over 70° off the join's chords:
-  // refused by the angle, never scored. Its right end's tangent, standing in
-  // for both, runs along the strand: measured so (hand cost within the
-  // limit) the pair becomes a candidate that joins when the default net's p
-  // and the ensemble's mean q both reach their thresholds, and not when
-  // either falls short, nor when its hand cost is over max_join_cost.
-  const Drawing d = stepped_strand_under_band(5);
-  JoinScorerOptions off;
-  off.tangent_threshold = 1.0;
-  const auto [off_joined, off_candidate] = with_scorer(d, off);
-  EXPECT_EQ(off_joined, (std::vector<int>{1}));
-  EXPECT_FALSE(off_candidate.has_value()) << "the pair's own tangents passed the angle";
-
-  // The nets give this hand-built drawing p ~0.8, q ~0.7: thresholds under.
-  JoinScorerOptions low;
-  low.tangent_threshold = 0.5;
-  low.tangent_ensemble_threshold = 0.5;
-  const auto [joined, c] = with_scorer(d, low);
-  ASSERT_TRUE(c.has_value()) << "no second chance";
-  const double q = join_probability(ensemble_join_scorers(), c->features);
-  ASSERT_GE(c->probability, low.tangent_threshold);
-  ASSERT_GE(q, low.tangent_ensemble_threshold);
-  EXPECT_LE(c->hand_cost, 2.4);
-  EXPECT_TRUE(c->chosen);
-  EXPECT_EQ(joined, (std::vector<int>{1, 2}));
-
-  JoinScorerOptions above_p = low;
-  above_p.tangent_threshold = c->probability + 0.01;
-  EXPECT_EQ(with_scorer(d, above_p).first, (std::vector<int>{1}));
-  JoinScorerOptions above_q = low;
-  above_q.tangent_ensemble_threshold = q + 0.01;
-  EXPECT_EQ(with_scorer(d, above_q).first, (std::vector<int>{1}));
-  EXPECT_EQ(with_scorer(d, low, c->hand_cost - 0.05).first, (std::vector<int>{1}));
 }
 
 }  // namespace

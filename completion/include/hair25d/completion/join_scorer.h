@@ -112,21 +112,6 @@ struct JoinScorerOptions {
   double max_angle_deg = 0.0;
   double wide_band_high = 5.0;
   double wide_threshold = 0.95;
-  // Session 26: a cut pair refused only because its tangents turn more than
-  // Options::max_join_angle_deg from the join's chords is measured again
-  // with either end's tangent standing in for both ends of a piece (an arm
-  // round a tip or a corner, or a sliver's side, spoils one end's;
-  // docs/completion-record.md "Session 22", joins37). When that brings it
-  // within the limit it is a candidate the hand cost never joins: it joins
-  // only when its hand cost so measured is at most max_join_cost, the
-  // default net's p >= tangent_threshold and the ensemble's mean (on every
-  // drawing) >= tangent_ensemble_threshold. Joined by the hand cost it lost
-  // precision with the layering's relations, by either net alone on dev flat
-  // 2000; so gated it added 3-6 right pairs and no wrong one on every dev
-  // set (docs/completion-record.md "Session 26", joins53). Either at 1 turns
-  // it off.
-  double tangent_threshold = 0.9;
-  double tangent_ensemble_threshold = 0.95;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
