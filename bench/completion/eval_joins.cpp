@@ -182,10 +182,6 @@ int main(int argc, char** argv) {
       ->transform(CLI::CheckedTransformer(ensembles));
   app.add_option("--scorer-ensemble-threshold", options.join_scorer.ensemble_threshold,
                  "JoinScorerOptions::ensemble_threshold");
-  app.add_option("--scorer-uneven-threshold", options.join_scorer.uneven_threshold,
-                 "JoinScorerOptions::uneven_threshold (1: off)");
-  app.add_option("--scorer-uneven-band-high", options.join_scorer.uneven_band_high,
-                 "JoinScorerOptions::uneven_band_high");
   app.add_option("--scorer-max-angle", options.join_scorer.max_angle_deg,
                  "JoinScorerOptions::max_angle_deg");
   app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,

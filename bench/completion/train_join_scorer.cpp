@@ -42,7 +42,7 @@ struct Row {
 };
 
 void collect_case(const AnnotatedCase& c, const std::string& set, bool predicted, double band_high,
-                  double max_angle, double uneven_high, std::FILE* out, int* rows) {
+                  double max_angle, std::FILE* out, int* rows) {
   completion::Options o;
   o.inpaint_strands = false;
   o.inpaint_background = false;
@@ -50,7 +50,6 @@ void collect_case(const AnnotatedCase& c, const std::string& set, bool predicted
   o.join_scorer.record = true;
   o.join_scorer.band_high = band_high;
   o.join_scorer.max_angle_deg = max_angle;
-  o.join_scorer.uneven_band_high = uneven_high;
   completion::Input in = completion::test::input_from_case(c);
   if (predicted) {
     std::string error;
@@ -137,7 +136,7 @@ void report(const std::string& name, const std::vector<Row>& rows,
       name.c_str(), low, high, label.size(), pos, auc(hand, label), auc(learned, label), limit,
       hand_tp, hand_fp, threshold, net_tp, net_fp);
   // Above the limit, accepted by the scorer (rescued); below it, refused (vetoed).
-  for (double t : {0.05, 0.1, 0.2, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95, 0.98, 0.99}) {
+  for (double t : {0.05, 0.1, 0.2, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95}) {
     int rescued[2] = {0, 0}, vetoed[2] = {0, 0};
     for (std::size_t i = 0; i < label.size(); ++i) {
       const bool by_hand = -hand[i] <= limit, by_net = learned[i] >= t;
@@ -173,10 +172,6 @@ int main(int argc, char** argv) {
   double record_angle = 120.0;
   collect->add_option("--max-angle", record_angle,
                       "Record candidates whose tangents turn up to this (degrees)");
-  // Session 26: the uneven gradient candidates (joins.cpp) up to this cost.
-  double record_uneven = completion::JoinScorerOptions{}.uneven_band_high;
-  collect->add_option("--uneven-band-high", record_uneven,
-                      "Record the uneven gradient candidates up to this hand cost");
   // Session 23 (joins42): `hair25d model` joins with the layering's
   // relations, whose wrong ones make candidates the annotation's never do.
   std::string relations = "annotated";
@@ -206,19 +201,11 @@ int main(int argc, char** argv) {
   train->add_option("--seed", topt.seed);
   train->add_option("--out", out, "join_scorer_weights.cpp to write");
   std::string function = "default_join_scorer";
-  train->add_option("--function", function,
-                    "The net's function in --out (wide_join_scorer; with --ensemble-seeds "
-                    "uneven_join_scorers)");
+  train->add_option("--function", function, "The net's function in --out (wide_join_scorer)");
   bool wide_only = false;
   train->add_flag(
       "--wide-only", wide_only,
       "Only candidates over the angle limit (worst_angle > 1, JoinScorerOptions::max_angle_deg)");
-  // Session 26: the uneven gradient candidates (joins.cpp), told by their
-  // inputs: off the gradient (step_excess > 1) by uneven slopes
-  // (slope_ratio < 0.25, join_paint.cpp's kUnevenSlopeShare).
-  bool uneven_only = false;
-  train->add_flag("--uneven-only", uneven_only,
-                  "Only the uneven gradient candidates (step_excess > 1, slope_ratio < 0.25)");
   bool baseline = false;
   // Session 23: the same report for the committed net, so a retrained one
   // is compared with it on the same rows.
@@ -247,8 +234,6 @@ int main(int argc, char** argv) {
     auto rows_of = [&](const std::string& path) {
       std::vector<Row> rows = read_rows(path);
       if (wide_only) std::erase_if(rows, [](const Row& r) { return !(r.f[1] > 1.0f); });
-      if (uneven_only)
-        std::erase_if(rows, [](const Row& r) { return !(r.f[44] > 1.0f && r.f[45] < 0.25f); });
       for (Row& r : rows)
         for (int k : dropped) r.f[k] = 0;
       return rows;
@@ -260,7 +245,7 @@ int main(int argc, char** argv) {
       if (!annotated.empty()) {
         for (const auto& folder : find_annotated_cases(annotated))
           collect_case(read_annotated_case(folder), set, relations == "predicted", record_high,
-                       record_angle, record_uneven, f, &rows);
+                       record_angle, f, &rows);
       } else {
         const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
                                             generator::Shading::kGradient,
@@ -277,8 +262,7 @@ int main(int argc, char** argv) {
             g.shading = kinds[s];
             AnnotatedCase c = generator::generate_case(g);
             c.name = std::string(names[s]) + "-" + std::to_string(seed + k);
-            collect_case(c, set, relations == "predicted", record_high, record_angle, record_uneven,
-                         f, &rows);
+            collect_case(c, set, relations == "predicted", record_high, record_angle, f, &rows);
           }
       }
       std::fclose(f);
@@ -327,10 +311,7 @@ int main(int argc, char** argv) {
       }
       if (!out.empty()) {
         std::ofstream file(out);
-        if (uneven_only) comment << "\nOnly the uneven gradient candidates (--uneven-only).";
-        file << completion::join_scorer_ensemble_source(
-            nets, comment.str(),
-            function == "default_join_scorer" ? "ensemble_join_scorers" : function);
+        file << completion::join_scorer_ensemble_source(nets, comment.str());
         if (!file) throw std::runtime_error("cannot write " + out);
         std::printf("wrote %s\n", out.c_str());
       }
@@ -361,7 +342,6 @@ int main(int argc, char** argv) {
       for (const std::string& name : drop) comment << " " << name;
       std::ofstream file(out);
       if (wide_only) comment << "\nOnly candidates over the angle limit (--wide-only).";
-      if (uneven_only) comment << "\nOnly the uneven gradient candidates (--uneven-only).";
       file << completion::join_scorer_source(t.net, comment.str(), function);
       if (!file) throw std::runtime_error("cannot write " + out);
       std::printf("wrote %s\n", out.c_str());

@@ -176,11 +176,6 @@ JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, con
   f[41] = static_cast<float>(std::min(t.dark_step, 0.3));
   f[42] = static_cast<float>(t.top_occluder);
   f[43] = static_cast<float>(std::min(t.patch_occluders, 4)) / 4.0f;
-  // Session 26: how far a step off the gradient goes beyond what the
-  // windows' slopes allow, and how uneven those slopes are (the uneven
-  // gradient candidates of joins.cpp, which the default net never saw).
-  f[44] = static_cast<float>(std::min(t.step_excess, 10.0));
-  f[45] = static_cast<float>(t.slope_ratio);
   return f;
 }
 

@@ -36,9 +36,6 @@ struct JoinTerms {
   double dark_step = 0;     // |tone(a) − tone(b)| (screentone)
   double top_occluder = 1;  // share of the covered patch under its largest occluder
   int patch_occluders = 0;  // occluders holding ≥ 10 % of the covered patch
-  // Session 26: `PaintStep::step_excess` and `slope_ratio` (linear windows).
-  double step_excess = 0;
-  double slope_ratio = 1;
 };
 
 // Every input but the rivals' (indices 27–30, filled by `add_rival_features`).

@@ -289,15 +289,12 @@ PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const Ed
         0.0, (pb.fit_colour - pa.fit_colour - change).norm() - (pa.fit_residual + pb.fit_residual));
     out.shading_continues =
         sloped && out.step <= kMaxShadingStep && change.norm() >= kMinShadingChange;
-    const double allowed = change.norm() < kMinShadingChange
-                               ? kMaxFlatFitStep
-                               : std::max(kMaxShadingStep, kFittedChangeShare * change.norm());
-    out.off_gradient = out.step > allowed;
-    out.step_excess = out.step / allowed;
-    const double shallow = std::min(pa.slope.norm(), pb.slope.norm());
-    const double steep = std::max(pa.slope.norm(), pb.slope.norm());
-    out.uneven_slopes = shallow < kUnevenSlopeShare * steep;
-    out.slope_ratio = steep > 0 ? shallow / steep : 1.0;
+    out.off_gradient =
+        out.step > (change.norm() < kMinShadingChange
+                        ? kMaxFlatFitStep
+                        : std::max(kMaxShadingStep, kFittedChangeShare * change.norm()));
+    out.uneven_slopes = std::min(pa.slope.norm(), pb.slope.norm()) <
+                        kUnevenSlopeShare * std::max(pa.slope.norm(), pb.slope.norm());
     return out;
   }
   out.step = std::max(0.0, (a.colour - b.colour).norm() - (a.colour_spread + b.colour_spread));

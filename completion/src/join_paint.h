@@ -77,12 +77,6 @@ struct PaintStep {
   // curve's parameter changes fastest where the curve is slowest), so the
   // mean slope under-predicts the change and `off_gradient` says little.
   bool uneven_slopes = false;
-  // Session 26, the join scorer's inputs for such candidates: `step` over
-  // the step `off_gradient` allows (over 1 off the gradient), and the
-  // smaller window slope over the larger (under kUnevenSlopeShare uneven);
-  // 0 and 1 unless both windows are linear.
-  double step_excess = 0.0;
-  double slope_ratio = 1.0;
 };
 PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const EdgePaint& pb,
                      const RegionPaint& ra, const RegionPaint& rb, const Eigen::Vector3d& shadow);

@@ -57,9 +57,7 @@ constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
                                                "mass_step",
                                                "dark_step",
                                                "top_occluder",
-                                               "patch_occluders",
-                                               "step_excess",
-                                               "slope_ratio"};
+                                               "patch_occluders"};
 
 std::string num(double v) {
   std::ostringstream s;
@@ -118,10 +116,6 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("screentone_threshold = " + num(screentone_threshold) + "; must be in (0, 1)");
   if (!(ensemble_threshold > 0 && ensemble_threshold < 1))
     return fail("ensemble_threshold = " + num(ensemble_threshold) + "; must be in (0, 1)");
-  if (!(uneven_threshold > 0 && uneven_threshold <= 1))
-    return fail("uneven_threshold = " + num(uneven_threshold) + "; must be in (0, 1]");
-  if (!(uneven_band_high >= 0 && uneven_band_high < 100))
-    return fail("uneven_band_high = " + num(uneven_band_high) + "; must be in [0, 100)");
   if (!(refuse_below >= 0 && refuse_below <= threshold))
     return fail("refuse_below = " + num(refuse_below) + "; must be in [0, threshold (" +
                 num(threshold) + ")]");

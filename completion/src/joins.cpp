@@ -337,7 +337,6 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       s.ensemble == Ensemble::kAll || (s.ensemble == Ensemble::kScreentone && screentone)
           ? ensemble_join_scorers()
           : std::span<const JoinScorerNet>{};
-  const std::span<const JoinScorerNet> uneven_nets = uneven_join_scorers();
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
@@ -347,24 +346,15 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       j.cost = s.enabled && p >= s.wide_threshold
                    ? o.max_join_cost + (s.wide_threshold - p) * (s.band_high - s.band_low)
                    : std::numeric_limits<double>::infinity();
-    } else if (s.enabled && j.uneven_gradient) {
-      // In the band the default net decides (session 25); session 26: the
-      // net trained on such candidates adds what it refuses, and over the
-      // band (up to uneven_band_high) decides alone.
-      if (j.cost >= s.band_low && j.cost <= s.band_high) p = join_probability(net, features[k]);
-      const double u = p < kUnevenThreshold && s.uneven_threshold < 1 && !uneven_nets.empty()
-                           ? join_probability(uneven_nets, features[k])
-                           : 0.0;
-      if (p >= kUnevenThreshold)
-        j.cost = o.max_join_cost + (kUnevenThreshold - p) * (s.band_high - s.band_low);
-      else if (u >= s.uneven_threshold)
-        j.cost = o.max_join_cost + (s.uneven_threshold - u) * (s.band_high - s.band_low);
     } else if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
       p = join_probability(net, features[k]);
       // The ensemble's mean, asked only for what the default net refuses.
       const double q =
           p < threshold && !ensemble.empty() ? join_probability(ensemble, features[k]) : 0.0;
-      if (p >= threshold)
+      if (j.uneven_gradient) {
+        if (p >= kUnevenThreshold)
+          j.cost = o.max_join_cost + (kUnevenThreshold - p) * (s.band_high - s.band_low);
+      } else if (p >= threshold)
         j.cost = std::min(j.cost, o.max_join_cost + (threshold - p) * (s.band_high - s.band_low));
       else if (q >= s.ensemble_threshold)
         j.cost = std::min(
@@ -406,8 +396,6 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   const bool scoring = scorer.enabled || ctx.join_log != nullptr;
   const double limit = scoring ? std::max(o.max_join_cost, scorer.band_high) : o.max_join_cost;
   const double wide_limit = std::max(limit, scorer.wide_band_high);
-  // Uneven gradient candidates (kUnevenThreshold) up to the uneven net's top.
-  const double uneven_limit = scoring ? std::max(limit, scorer.uneven_band_high) : limit;
   std::vector<EdgePaint> paints(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) paints[i] = edge_paint(ctx, edges[i]);
   std::map<int, RegionPaint> region_paints;
@@ -560,8 +548,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         const double tone_cost = tone_join_cost(tones, a.region, b.region);
         cost += tone_cost;
         if (uneven) cost = o.max_join_cost + kUnevenCostBase + kUnevenCostShare * cost;
-        const double own_limit = wide_angle ? wide_limit : uneven ? uneven_limit : limit;
-        if (cost <= own_limit) {  // before the costly coverage raster
+        if (cost <= (wide_angle ? wide_limit : limit)) {  // before the costly coverage raster
           join.patch = join_patch(a, b);
           int hidden = 0;
           join.behind_face = !face.empty() && !front.count(a.region) && !front.count(b.region);
@@ -594,8 +581,6 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                               rare,
                               tone_cost,
                               one_sided.has_value()};
-            terms->step_excess = step.step_excess;
-            terms->slope_ratio = step.slope_ratio;
             add_scorer_terms(tones, a.region, b.region, under_by, &*terms);
           }
         }
@@ -620,9 +605,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       } else if (wide_angle && std::isfinite(cost)) {
         join.wide = true;
       }
-      join.uneven_gradient = uneven && join.bands.empty();
-      if (cost > (join.wide ? wide_limit : join.uneven_gradient ? uneven_limit : limit)) continue;
+      if (cost > (join.wide ? wide_limit : limit)) continue;
       join.cost = cost;
+      join.uneven_gradient = uneven && join.bands.empty();
       candidates.push_back(std::move(join));
       terms_of.push_back(terms);
     }

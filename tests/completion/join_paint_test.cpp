@@ -161,25 +161,5 @@ TEST(JoinPaint, UnevenWindowsOffTheGradientAreTold) {
   EXPECT_FALSE(step_of_windows(-0.5, -0.5, -20).off_gradient);
 }
 
-TEST(JoinPaint, UnevenWindowsTellHowFarOffAndHowUneven) {
-  // The scorer's inputs of session 26. The windows above: 19 levels a
-  // channel beyond the predicted -11, less the fits' deviations (1 RGB),
-  // over the step allowed, a fifth of the predicted change (11 √3 RGB);
-  // slopes 0.05 against 0.5.
-  const double r3 = std::sqrt(3.0);
-  const PaintStep uneven = step_of_windows(-0.5, -0.05, -30);
-  EXPECT_NEAR(uneven.step_excess, (19 * r3 - 1) / (0.2 * 11 * r3), 1e-9);
-  EXPECT_NEAR(uneven.slope_ratio, 0.1, 1e-12);
-  // Within what the change allows: under 1; the ratio is the same either
-  // way round.
-  const PaintStep near = step_of_windows(-0.05, -0.5, -13);
-  EXPECT_FALSE(near.off_gradient);
-  EXPECT_NEAR(near.step_excess, (2 * r3 - 1) / (0.2 * 11 * r3), 1e-9);
-  EXPECT_NEAR(near.slope_ratio, 0.1, 1e-12);
-  // Where little change is predicted the allowance is 1 RGB.
-  EXPECT_NEAR(step_of_windows(0.0, 0.0, -3).step_excess, 3 * r3 - 1, 1e-9);
-  EXPECT_EQ(step_of_windows(0.0, 0.0, -3).slope_ratio, 1.0);
-}
-
 }  // namespace
 }  // namespace hair25d::completion::detail

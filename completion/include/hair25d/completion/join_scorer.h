@@ -13,7 +13,7 @@ namespace hair25d::completion {
 
 // Inputs of the scorer, all symmetric in the two pieces (join_features.cpp
 // says what each is; `join_feature_name` names them).
-inline constexpr int kJoinFeatures = 46;
+inline constexpr int kJoinFeatures = 44;
 inline constexpr int kJoinHidden = 12;
 using JoinFeatures = std::array<float, kJoinFeatures>;
 
@@ -40,12 +40,6 @@ const JoinScorerNet& default_join_scorer();
 // (JoinScorerOptions::max_angle_deg), trained on those alone (generated file
 // join_scorer_wide_weights.cpp).
 const JoinScorerNet& wide_join_scorer();
-// Session 26: the nets for the uneven gradient candidates (joins.cpp: off
-// the gradient only by windows of uneven slopes), trained on those alone
-// (generated file join_scorer_uneven_weights.cpp), their probabilities
-// averaged; see JoinScorerOptions::uneven_threshold. Empty when none was
-// trained.
-std::span<const JoinScorerNet> uneven_join_scorers();
 // Session 25: nets of several training seeds (generated file
 // join_scorer_ensemble_weights.cpp), averaged where
 // JoinScorerOptions::ensemble says; empty when none was trained.
@@ -102,15 +96,6 @@ struct JoinScorerOptions {
   enum class Ensemble { kNone, kScreentone, kAll };
   Ensemble ensemble = Ensemble::kScreentone;
   double ensemble_threshold = 0.95;
-  // Session 26: an uneven gradient candidate (joins.cpp, kUnevenThreshold)
-  // that the default net refuses joins when `uneven_join_scorers`' mean
-  // probability u >= uneven_threshold (its cost then at most max_join_cost +
-  // (uneven_threshold − u) × (band_high − band_low)); 1 turns it off.
-  // Such candidates are costed up to uneven_band_high (over band_high the
-  // uneven net alone decides; a cost over band_high changes no other
-  // candidate's rival inputs).
-  double uneven_threshold = 0.9;
-  double uneven_band_high = 5.0;
   double refuse_below = 0.0;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
