@@ -176,12 +176,15 @@ int main(int argc, char** argv) {
   const std::map<std::string, completion::JoinScorerOptions::Ensemble> ensembles{
       {"none", completion::JoinScorerOptions::Ensemble::kNone},
       {"screentone", completion::JoinScorerOptions::Ensemble::kScreentone},
-      {"all", completion::JoinScorerOptions::Ensemble::kAll}};
+      {"all", completion::JoinScorerOptions::Ensemble::kAll},
+      {"each", completion::JoinScorerOptions::Ensemble::kEach}};
   app.add_option("--scorer-ensemble", options.join_scorer.ensemble,
-                 "JoinScorerOptions::ensemble: none, screentone or all")
+                 "JoinScorerOptions::ensemble: none, screentone, all or each")
       ->transform(CLI::CheckedTransformer(ensembles));
   app.add_option("--scorer-ensemble-threshold", options.join_scorer.ensemble_threshold,
                  "JoinScorerOptions::ensemble_threshold");
+  app.add_option("--scorer-paint-ensemble-threshold", options.join_scorer.paint_ensemble_threshold,
+                 "JoinScorerOptions::paint_ensemble_threshold");
   app.add_option("--scorer-max-angle", options.join_scorer.max_angle_deg,
                  "JoinScorerOptions::max_angle_deg");
   app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,

@@ -200,8 +200,10 @@ int main(int argc, char** argv) {
   train->add_option("--decay", topt.decay);
   train->add_option("--seed", topt.seed);
   train->add_option("--out", out, "join_scorer_weights.cpp to write");
-  std::string function = "default_join_scorer";
-  train->add_option("--function", function, "The net's function in --out (wide_join_scorer)");
+  std::string function;
+  train->add_option("--function", function,
+                    "The function in --out (default_join_scorer, with --ensemble-seeds "
+                    "ensemble_join_scorers; wide_join_scorer, paint_ensemble_join_scorers)");
   bool wide_only = false;
   train->add_flag(
       "--wide-only", wide_only,
@@ -311,7 +313,8 @@ int main(int argc, char** argv) {
       }
       if (!out.empty()) {
         std::ofstream file(out);
-        file << completion::join_scorer_ensemble_source(nets, comment.str());
+        file << completion::join_scorer_ensemble_source(
+            nets, comment.str(), function.empty() ? "ensemble_join_scorers" : function);
         if (!file) throw std::runtime_error("cannot write " + out);
         std::printf("wrote %s\n", out.c_str());
       }
@@ -342,7 +345,8 @@ int main(int argc, char** argv) {
       for (const std::string& name : drop) comment << " " << name;
       std::ofstream file(out);
       if (wide_only) comment << "\nOnly candidates over the angle limit (--wide-only).";
-      file << completion::join_scorer_source(t.net, comment.str(), function);
+      file << completion::join_scorer_source(t.net, comment.str(),
+                                             function.empty() ? "default_join_scorer" : function);
       if (!file) throw std::runtime_error("cannot write " + out);
       std::printf("wrote %s\n", out.c_str());
     }

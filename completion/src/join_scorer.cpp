@@ -116,6 +116,9 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("screentone_threshold = " + num(screentone_threshold) + "; must be in (0, 1)");
   if (!(ensemble_threshold > 0 && ensemble_threshold < 1))
     return fail("ensemble_threshold = " + num(ensemble_threshold) + "; must be in (0, 1)");
+  if (!(paint_ensemble_threshold > 0 && paint_ensemble_threshold < 1))
+    return fail("paint_ensemble_threshold = " + num(paint_ensemble_threshold) +
+                "; must be in (0, 1)");
   if (!(refuse_below >= 0 && refuse_below <= threshold))
     return fail("refuse_below = " + num(refuse_below) + "; must be in [0, threshold (" +
                 num(threshold) + ")]");

@@ -333,10 +333,16 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   const JoinScorerNet& net = default_join_scorer();
   // Session 25: the ensemble may rescue what the default net refuses.
   using Ensemble = JoinScorerOptions::Ensemble;
-  const std::span<const JoinScorerNet> ensemble =
-      s.ensemble == Ensemble::kAll || (s.ensemble == Ensemble::kScreentone && screentone)
-          ? ensemble_join_scorers()
-          : std::span<const JoinScorerNet>{};
+  // Session 26: with kEach, the paint ensemble on the drawings without
+  // screentone (trained on theirs).
+  const bool screentone_nets =
+      s.ensemble == Ensemble::kAll ||
+      ((s.ensemble == Ensemble::kScreentone || s.ensemble == Ensemble::kEach) && screentone);
+  const bool paint_nets = s.ensemble == Ensemble::kEach && !screentone;
+  const std::span<const JoinScorerNet> ensemble = screentone_nets ? ensemble_join_scorers()
+                                                  : paint_nets    ? paint_ensemble_join_scorers()
+                                                               : std::span<const JoinScorerNet>{};
+  const double ensemble_threshold = paint_nets ? s.paint_ensemble_threshold : s.ensemble_threshold;
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
@@ -348,17 +354,21 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                    : std::numeric_limits<double>::infinity();
     } else if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
       p = join_probability(net, features[k]);
-      // The ensemble's mean, asked only for what the default net refuses.
-      const double q =
-          p < threshold && !ensemble.empty() ? join_probability(ensemble, features[k]) : 0.0;
+      // The ensemble's mean, asked only for what the default net refuses;
+      // the paint nets only for pieces compared as flat paint (session 26:
+      // on dev gradient 2000 their rescues added 2 right pairs and 1 wrong
+      // one with the annotation's relations, none with the layering's).
+      const bool ask =
+          p < threshold && !ensemble.empty() && (!paint_nets || terms_of[which[k]]->flat_paint);
+      const double q = ask ? join_probability(ensemble, features[k]) : 0.0;
       if (j.uneven_gradient) {
         if (p >= kUnevenThreshold)
           j.cost = o.max_join_cost + (kUnevenThreshold - p) * (s.band_high - s.band_low);
       } else if (p >= threshold)
         j.cost = std::min(j.cost, o.max_join_cost + (threshold - p) * (s.band_high - s.band_low));
-      else if (q >= s.ensemble_threshold)
-        j.cost = std::min(
-            j.cost, o.max_join_cost + (s.ensemble_threshold - q) * (s.band_high - s.band_low));
+      else if (q >= ensemble_threshold)
+        j.cost = std::min(j.cost,
+                          o.max_join_cost + (ensemble_threshold - q) * (s.band_high - s.band_low));
       else if (p < s.refuse_below)
         j.cost = std::numeric_limits<double>::infinity();
     }

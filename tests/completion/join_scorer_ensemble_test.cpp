@@ -1,10 +1,11 @@
-// The join scorer's ensemble (join_scorer.h, session 25): the mean of its
-// nets, its generated file, and the rescues it adds on screentone drawings
-// only.
+// The join scorer's ensembles (join_scorer.h, sessions 25-26): the mean of
+// their nets, their generated files, and the rescues they add: the
+// screentone nets' on screentone drawings, the paint nets' on the others.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "annotated_eval.h"
@@ -47,6 +48,18 @@ TEST(JoinScorerEnsemble, WeightsFileIsTheEnsemblePrinted) {
   EXPECT_NE(join_scorer_ensemble_source({}, "x").find("return {};"), std::string::npos);
 }
 
+TEST(JoinScorerEnsemble, PaintWeightsFileIsTheEnsemblePrinted) {
+  const std::span<const JoinScorerNet> nets = paint_ensemble_join_scorers();
+  ASSERT_GE(nets.size(), 2u);
+  for (std::size_t i = 1; i < nets.size(); ++i) EXPECT_NE(nets[i].w1[0][0], nets[0].w1[0][0]);
+  // Other nets than the screentone ones (trained on other drawings).
+  EXPECT_NE(nets[0].w1[0][0], ensemble_join_scorers()[0].w1[0][0]);
+  const std::string printed =
+      test::generated_part(join_scorer_ensemble_source(nets, "x", "paint_ensemble_join_scorers"));
+  EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_paint_ensemble_weights.cpp")),
+            printed);
+}
+
 AnnotatedCase generated(std::uint64_t seed, generator::Shading shading) {
   generator::Options g;
   g.width = 800;
@@ -58,21 +71,28 @@ AnnotatedCase generated(std::uint64_t seed, generator::Shading shading) {
   return generator::generate_case(g);
 }
 
-// With the default net's threshold out of reach (0.99) and the ensemble's
-// low (0.05), a band candidate over the limit is rescued exactly when the
-// ensemble's mean reaches 0.05, ranked by it, and only on the drawings
-// JoinScorerOptions::ensemble names (here screentone ones: a flat drawing
-// keeps every hand cost).
+// With the default net's threshold out of reach (0.99) and the ensembles'
+// low (0.05 screentone, 0.06 paint), a band candidate over the limit is
+// rescued exactly when the mean of the drawing's ensemble reaches its
+// threshold, ranked by it, and only on the drawings
+// JoinScorerOptions::ensemble names: kScreentone the screentone ones (a
+// flat drawing keeps every hand cost), kEach those with the screentone
+// nets and the others with the paint nets, which judge only pieces compared
+// as flat paint.
 TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
+  using Ensemble = JoinScorerOptions::Ensemble;
   const JoinScorerOptions s;
   const double limit = Options{}.max_join_cost;
+  int flat_paint = 0;
+  while (std::string(join_feature_name(flat_paint)) != "flat_paint") ++flat_paint;
   for (const generator::Shading shading :
-       {generator::Shading::kScreentone, generator::Shading::kFlat}) {
+       {generator::Shading::kScreentone, generator::Shading::kFlat,
+        generator::Shading::kGradient}) {
     const bool screentone = shading == generator::Shading::kScreentone;
-    SCOPED_TRACE(screentone);
+    SCOPED_TRACE(static_cast<int>(shading));
     const AnnotatedCase c = generated(2004, shading);
-    for (const auto ensemble :
-         {JoinScorerOptions::Ensemble::kScreentone, JoinScorerOptions::Ensemble::kNone}) {
+    for (const auto ensemble : {Ensemble::kScreentone, Ensemble::kNone, Ensemble::kEach}) {
+      SCOPED_TRACE(static_cast<int>(ensemble));
       Options o;
       o.inpaint_strands = false;
       o.inpaint_background = false;
@@ -80,25 +100,35 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
       o.join_scorer.threshold = o.join_scorer.screentone_threshold = 0.99;
       o.join_scorer.ensemble = ensemble;
       o.join_scorer.ensemble_threshold = 0.05;
+      o.join_scorer.paint_ensemble_threshold = 0.06;
       const Result r = complete_strands(test::input_from_case(c), o);
-      const bool on = screentone && ensemble != JoinScorerOptions::Ensemble::kNone;
-      int rescued = 0;
+      const bool on =
+          ensemble == Ensemble::kEach || (screentone && ensemble == Ensemble::kScreentone);
+      const std::span<const JoinScorerNet> nets =
+          screentone ? ensemble_join_scorers() : paint_ensemble_join_scorers();
+      const double t = screentone ? 0.05 : 0.06;
+      int rescued = 0, not_asked = 0;
       for (const JoinCandidate& j : r.join_candidates) {
         // The default net's own rescues (p >= 0.99) are not the ensemble's.
         if (j.hand_cost < s.band_low || j.hand_cost > s.band_high || j.probability < 0 ||
             j.probability >= 0.99)
           continue;
-        const double q = join_probability(ensemble_join_scorers(), j.features);
-        if (on && q >= 0.05) {
+        const double q = join_probability(nets, j.features);
+        const bool asked = screentone || j.features[flat_paint] > 0.5f;
+        if (on && asked && q >= t) {
           EXPECT_DOUBLE_EQ(j.cost,
-                           std::min(j.hand_cost, limit + (0.05 - q) * (s.band_high - s.band_low)));
+                           std::min(j.hand_cost, limit + (t - q) * (s.band_high - s.band_low)));
           rescued += j.hand_cost > limit;
         } else {
           EXPECT_EQ(j.cost, j.hand_cost);
+          not_asked += on && !asked && q >= t && j.hand_cost > limit;
         }
       }
+      // The gradient's pieces are compared by their fits: the paint nets
+      // would rescue some of them, and are not asked.
+      const bool gradient = shading == generator::Shading::kGradient;
       if (on)
-        EXPECT_GT(rescued, 0);
+        EXPECT_GT(gradient ? not_asked : rescued, 0);
       else
         EXPECT_EQ(rescued, 0);
     }

@@ -44,6 +44,10 @@ const JoinScorerNet& wide_join_scorer();
 // join_scorer_ensemble_weights.cpp), averaged where
 // JoinScorerOptions::ensemble says; empty when none was trained.
 std::span<const JoinScorerNet> ensemble_join_scorers();
+// Session 26: the same for the drawings without screentone (flat, two-tone,
+// gradient paint), trained on those drawings' candidates (generated file
+// join_scorer_paint_ensemble_weights.cpp); empty when none was trained.
+std::span<const JoinScorerNet> paint_ensemble_join_scorers();
 // The mean of the nets' probabilities (one net's alone when there is one):
 // a wrong candidate that one training seed happens to trust is refused
 // when the others do not. Throws hair25d::Error for no nets or a feature
@@ -93,9 +97,13 @@ struct JoinScorerOptions {
   // "Session 25"). On the lead's held sets it added right pairs only
   // (mixed 1000-1099 +4 / +4, screentone 1000-1049 +2 / +6 with the
   // annotation's / layering's relations, no wrong one): on for screentone.
-  enum class Ensemble { kNone, kScreentone, kAll };
+  // Session 26: `kEach` also lets the paint ensemble
+  // (paint_ensemble_join_scorers) rescue on the drawings that are no
+  // screentone, at q >= paint_ensemble_threshold.
+  enum class Ensemble { kNone, kScreentone, kAll, kEach };
   Ensemble ensemble = Ensemble::kScreentone;
   double ensemble_threshold = 0.95;
+  double paint_ensemble_threshold = 0.95;
   double refuse_below = 0.0;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
