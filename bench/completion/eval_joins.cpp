@@ -185,6 +185,8 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::ensemble_threshold");
   app.add_option("--scorer-paint-ensemble-threshold", options.join_scorer.paint_ensemble_threshold,
                  "JoinScorerOptions::paint_ensemble_threshold");
+  app.add_option("--scorer-cel-ensemble-threshold", options.join_scorer.cel_ensemble_threshold,
+                 "JoinScorerOptions::cel_ensemble_threshold");
   app.add_option("--scorer-max-angle", options.join_scorer.max_angle_deg,
                  "JoinScorerOptions::max_angle_deg");
   app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,

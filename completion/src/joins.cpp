@@ -293,7 +293,7 @@ void add_scorer_terms(RegionTones& tones, int ra, int rb, const std::map<int, in
 void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                       const std::set<int>& front, const std::map<int, int>& edge_count,
                       const std::vector<std::optional<JoinTerms>>& terms_of, bool screentone,
-                      std::vector<Join>* candidates) {
+                      bool cel, std::vector<Join>* candidates) {
   const Options& o = *ctx.options;
   const JoinScorerOptions& s = o.join_scorer;
   const double threshold = screentone ? s.screentone_threshold : s.threshold;
@@ -334,7 +334,9 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   // Session 25: the ensemble may rescue what the default net refuses.
   using Ensemble = JoinScorerOptions::Ensemble;
   // Session 26: with kEach, the paint ensemble on the drawings without
-  // screentone (trained on theirs).
+  // screentone (trained on theirs), with a higher bar on a cel drawing
+  // (`cel`: a shadow ratio), where a right rescue joined to a piece
+  // already joined wrongly cost dev two-tone 2084 precision at 0.95.
   const bool screentone_nets =
       s.ensemble == Ensemble::kAll ||
       ((s.ensemble == Ensemble::kScreentone || s.ensemble == Ensemble::kEach) && screentone);
@@ -342,7 +344,9 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   const std::span<const JoinScorerNet> ensemble = screentone_nets ? ensemble_join_scorers()
                                                   : paint_nets    ? paint_ensemble_join_scorers()
                                                                : std::span<const JoinScorerNet>{};
-  const double ensemble_threshold = paint_nets ? s.paint_ensemble_threshold : s.ensemble_threshold;
+  const double ensemble_threshold = !paint_nets ? s.ensemble_threshold
+                                    : cel       ? s.cel_ensemble_threshold
+                                                : s.paint_ensemble_threshold;
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
@@ -356,8 +360,9 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       p = join_probability(net, features[k]);
       // The ensemble's mean, asked only for what the default net refuses;
       // the paint nets only for pieces compared as flat paint (session 26:
-      // on dev gradient 2000 their rescues added 2 right pairs and 1 wrong
-      // one with the annotation's relations, none with the layering's).
+      // on dev gradient 2000 their rescues at 0.9 or 0.95 added 2 right
+      // pairs and 1 wrong one with the annotation's relations, none with
+      // the layering's).
       const bool ask =
           p < threshold && !ensemble.empty() && (!paint_nets || terms_of[which[k]]->flat_paint);
       const double q = ask ? join_probability(ensemble, features[k]) : 0.0;
@@ -622,7 +627,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       terms_of.push_back(terms);
     }
   if (scoring)
-    score_candidates(ctx, edges, front, edge_count, terms_of, tones.screentone(), &candidates);
+    score_candidates(ctx, edges, front, edge_count, terms_of, tones.screentone(),
+                     shadow.squaredNorm() > 0, &candidates);
   // Greedy one-to-one: cheapest first, every edge joined at most once.
   std::erase_if(candidates, [&](const Join& x) { return x.cost > o.max_join_cost; });
   std::sort(candidates.begin(), candidates.end(),

@@ -280,6 +280,9 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
     o.join_scorer.record = true;
     o.join_scorer.threshold = threshold;
     o.join_scorer.screentone_threshold = screentone_threshold;
+    // The default net's thresholds alone: the ensembles' rescues are
+    // join_scorer_ensemble_test.cpp's.
+    o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
     return complete_strands(test::input_from_case(c), o);
   };
   const JoinScorerOptions s;

@@ -72,13 +72,13 @@ AnnotatedCase generated(std::uint64_t seed, generator::Shading shading) {
 }
 
 // With the default net's threshold out of reach (0.99) and the ensembles'
-// low (0.05 screentone, 0.06 paint), a band candidate over the limit is
-// rescued exactly when the mean of the drawing's ensemble reaches its
-// threshold, ranked by it, and only on the drawings
-// JoinScorerOptions::ensemble names: kScreentone the screentone ones (a
-// flat drawing keeps every hand cost), kEach those with the screentone
-// nets and the others with the paint nets, which judge only pieces compared
-// as flat paint.
+// low (screentone 0.05, paint 0.06, cel 0.07), a band candidate over the
+// limit is rescued exactly when the mean of the drawing's ensemble reaches
+// its threshold, ranked by it, and only on the drawings
+// JoinScorerOptions::ensemble names: kScreentone the screentone ones (the
+// others keep every hand cost), kEach those with the screentone nets and the
+// others with the paint nets (at the cel threshold on a two-tone drawing),
+// which judge only pieces compared as flat paint.
 TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
   using Ensemble = JoinScorerOptions::Ensemble;
   const JoinScorerOptions s;
@@ -86,7 +86,7 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
   int flat_paint = 0;
   while (std::string(join_feature_name(flat_paint)) != "flat_paint") ++flat_paint;
   for (const generator::Shading shading :
-       {generator::Shading::kScreentone, generator::Shading::kFlat,
+       {generator::Shading::kScreentone, generator::Shading::kFlat, generator::Shading::kTwoTone,
         generator::Shading::kGradient}) {
     const bool screentone = shading == generator::Shading::kScreentone;
     SCOPED_TRACE(static_cast<int>(shading));
@@ -101,12 +101,14 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
       o.join_scorer.ensemble = ensemble;
       o.join_scorer.ensemble_threshold = 0.05;
       o.join_scorer.paint_ensemble_threshold = 0.06;
+      o.join_scorer.cel_ensemble_threshold = 0.07;
       const Result r = complete_strands(test::input_from_case(c), o);
       const bool on =
           ensemble == Ensemble::kEach || (screentone && ensemble == Ensemble::kScreentone);
       const std::span<const JoinScorerNet> nets =
           screentone ? ensemble_join_scorers() : paint_ensemble_join_scorers();
-      const double t = screentone ? 0.05 : 0.06;
+      // A two-tone drawing's pieces share a cel shadow: the cel threshold.
+      const double t = screentone ? 0.05 : shading == generator::Shading::kTwoTone ? 0.07 : 0.06;
       int rescued = 0, not_asked = 0;
       for (const JoinCandidate& j : r.join_candidates) {
         // The default net's own rescues (p >= 0.99) are not the ensemble's.

@@ -245,6 +245,8 @@ TEST(JoinScorer, EnabledScorerDecidesTheBandOnly) {
         o.join_scorer.band_high = 1.8;
         o.join_scorer.threshold = threshold;
         o.join_scorer.refuse_below = refuse_below;
+        // The default net alone (the ensembles: join_scorer_ensemble_test.cpp).
+        o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
         const Result r = complete_strands(test::input_of(d, Vec2(150, 300)), o);
         const JoinCandidate* c = candidate(r, 1, 2);
         ASSERT_NE(c, nullptr);
@@ -443,6 +445,18 @@ TEST(JoinScorer, BadInputThrows) {
   o.join_scorer.screentone_threshold = 0.0;
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_NE(why.find("screentone_threshold"), std::string::npos);
+  EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
+  for (double* t :
+       {&o.join_scorer.paint_ensemble_threshold, &o.join_scorer.cel_ensemble_threshold}) {
+    o = {};
+    *t = 1.0;
+    EXPECT_FALSE(o.is_valid(&why));
+    EXPECT_NE(why.find("ensemble_threshold = 1"), std::string::npos) << why;
+  }
+  o = {};
+  o.join_scorer.cel_ensemble_threshold = 0.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("cel_ensemble_threshold"), std::string::npos);
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.refuse_below = 0.95;  // above the threshold

@@ -98,12 +98,23 @@ struct JoinScorerOptions {
   // (mixed 1000-1099 +4 / +4, screentone 1000-1049 +2 / +6 with the
   // annotation's / layering's relations, no wrong one): on for screentone.
   // Session 26: `kEach` also lets the paint ensemble
-  // (paint_ensemble_join_scorers) rescue on the drawings that are no
-  // screentone, at q >= paint_ensemble_threshold.
+  // (paint_ensemble_join_scorers; 4 seeds trained on flat, two-tone and
+  // gradient candidates of both relations) rescue on the drawings that are
+  // no screentone, for pieces compared as flat paint (JoinTerms::flat_paint:
+  // on gradients it gained nothing), at q >= paint_ensemble_threshold, or
+  // cel_ensemble_threshold on a cel drawing (a base and a shadow band, told
+  // by the shadow ratio its flat-painted pieces share: join_paint.h
+  // shadow_ratio). Dev sets 2000 and 3000 (docs/completion-record.md
+  // "Session 26"): +53 right pairs and -4 wrong ones over mixed, flat,
+  // gradient and two-tone in both relations; at one threshold 0.95 for all,
+  // two-tone 2084 lost precision (a right rescue joined to a piece already
+  // joined wrongly), hence the cel drawings' higher bar. Fresh mixed 7000,
+  // 8000 and flat 7000: right pairs only. On by default.
   enum class Ensemble { kNone, kScreentone, kAll, kEach };
-  Ensemble ensemble = Ensemble::kScreentone;
+  Ensemble ensemble = Ensemble::kEach;
   double ensemble_threshold = 0.95;
-  double paint_ensemble_threshold = 0.95;
+  double paint_ensemble_threshold = 0.9;
+  double cel_ensemble_threshold = 0.965;
   double refuse_below = 0.0;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
