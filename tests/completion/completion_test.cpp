@@ -195,32 +195,39 @@ TEST(Completion, WeakEqualsBetweenTwoPaintsAreRefused) {
   EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kEqual, 0.0}, other), joined);
 }
 
+// The cut band's pieces on the generator's screentone paper (235, 205,
+// 175): piece 1 toned (dots of 0.3 periods on a 6-px lattice), piece 2
+// toned alike or left white, from x = 150 to `end` (130 px long, or a
+// sliver).
+Drawing dotted_cut_band(bool white, double end = 280) {
+  Drawing d = blank(300, 170);
+  const Rgba paper{235, 205, 175, 255};
+  paint(
+      d, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, paper, 1);
+  paint(
+      d, [&](double x, double y) { return x >= 150 && x < end && y > 60 && y < 100; }, paper, 2);
+  const auto dots = [&](int x, int y) {
+    const double k = test::dot_cover(x, y, 6.0, 0.3, 0.4);
+    const auto mix = [&](int p, int ink) {
+      return static_cast<std::uint8_t>(std::lround(p + k * (ink - p)));
+    };
+    return Rgba{mix(235, 60), mix(205, 40), mix(175, 30), 255};
+  };
+  repaint(d, 1, dots);
+  if (!white) repaint(d, 2, dots);
+  return d;
+}
+
 // On screentone the paint is the dots' (bank_crossings.h `two_paints`): a
 // toned piece beside a paper-white one is two strands even where the dots
-// of one of them cannot be measured (session 25). The cut band's pieces on
-// the generator's paper (235, 205, 175): piece 1 toned (dots of 0.3
-// periods on a 6-px lattice), piece 2 toned alike or left white, 130 px
-// long or a 10-px sliver. A weak equal between a toned and a white piece is
-// refused; between two pieces of one tone, or firm, or the user's, it
-// unites them, as it does a white sliver too small to hold three dot cells
-// (a sliver of a toned strand may show no dot).
+// of one of them cannot be measured (session 25). A weak equal between a
+// toned and a white piece is refused; between two pieces of one tone, or
+// firm, or the user's, it unites them, as it does a white 10-px sliver too
+// small to hold three dot cells (a sliver of a toned strand may show no
+// dot).
 TEST(Completion, WeakEqualsBetweenAToneAndPaperWhiteAreRefused) {
   const auto strand_of = [](double log_odds, bool white, bool user = false, double end = 280) {
-    Drawing d = blank(300, 170);
-    const Rgba paper{235, 205, 175, 255};
-    paint(
-        d, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, paper, 1);
-    paint(
-        d, [&](double x, double y) { return x >= 150 && x < end && y > 60 && y < 100; }, paper, 2);
-    const auto dots = [&](int x, int y) {
-      const double k = test::dot_cover(x, y, 6.0, 0.3, 0.4);
-      const auto mix = [&](int p, int ink) {
-        return static_cast<std::uint8_t>(std::lround(p + k * (ink - p)));
-      };
-      return Rgba{mix(235, 60), mix(205, 40), mix(175, 30), 255};
-    };
-    repaint(d, 1, dots);
-    if (!white) repaint(d, 2, dots);
+    Drawing d = dotted_cut_band(white, end);
     RegionRelation r{1, 2, Relation::kEqual, 0.0, user};
     if (!user) r.equal_evidence = EqualEvidence{log_odds, false, 0.1};
     d.relations = {r};
@@ -259,21 +266,7 @@ TEST(Completion, EqualsTheDrawingOrderOverrodeBetweenOnePaintAreSeams) {
   EXPECT_EQ(strand_of_cut_band(overridden(1.5), Rgba{185, 160, 100, 255}, true), apart);
 
   const auto dotted = [](const RegionRelation& r, bool white) {
-    Drawing d = blank(300, 170);
-    const Rgba paper{235, 205, 175, 255};
-    paint(
-        d, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, paper, 1);
-    paint(
-        d, [](double x, double y) { return x >= 150 && x < 280 && y > 60 && y < 100; }, paper, 2);
-    const auto dots = [&](int x, int y) {
-      const double k = test::dot_cover(x, y, 6.0, 0.3, 0.4);
-      const auto mix = [&](int p, int ink) {
-        return static_cast<std::uint8_t>(std::lround(p + k * (ink - p)));
-      };
-      return Rgba{mix(235, 60), mix(205, 40), mix(175, 30), 255};
-    };
-    repaint(d, 1, dots);
-    if (!white) repaint(d, 2, dots);
+    Drawing d = dotted_cut_band(white);
     d.relations = {r};
     return test::regions_with(run(d, Vec2(150, 300)), 1);
   };
