@@ -25,6 +25,7 @@
 #include "../../completion/src/bank_crossings.h"
 #include "../../completion/src/context.h"
 #include "../../completion/src/join_paint.h"
+#include "../../completion/src/measured_relations.h"
 #include "../../completion/src/seam_joins.h"
 #include "../../tests/completion/annotated_eval.h"
 #include "case_relations.h"
@@ -137,17 +138,8 @@ int main(int argc, char** argv) {
     if (seams_only) {
       // Each measured touching order, its seam tests (completion.cpp
       // read_relations) and what uniting its pieces (the user's equal) does.
-      std::map<std::pair<int, int>, Relation> direct;
-      for (const RegionRelation& r : pred)
-        if (r.user_fixed || r.score != 0.0 ||
-            touching.count({std::min(r.a, r.b), std::max(r.a, r.b)}))
-          direct[{r.a, r.b}] = r.relation;
-      const auto above = [&](int x, int y) {
-        auto it = direct.find({x, y});
-        if (it != direct.end()) return it->second == Relation::kAbove;
-        it = direct.find({y, x});
-        return it != direct.end() && it->second == Relation::kBelow;
-      };
+      const completion::detail::DirectOrders direct(pred, touching);
+      const auto above = [&](int x, int y) { return direct.above(x, y); };
       int right_p = 0, wrong_p = 0;
       for (auto p : P) (strand[p.first] == strand[p.second] ? right_p : wrong_p)++;
       for (int i = 0; i < static_cast<int>(pred.size()); ++i) {
@@ -200,7 +192,7 @@ int main(int argc, char** argv) {
       const RegionRelation& r = pred[i];
       const std::pair<int, int> key{std::min(r.a, r.b), std::max(r.a, r.b)};
       const bool touch = touching.count(key);
-      if (!r.user_fixed && r.score == 0.0 && !touch) continue;  // completion's `unmeasured`
+      if (completion::detail::unmeasured(r, touching)) continue;
       predicted_pairs.insert(key);
       const bool weak = std::abs(r.score) < 2.0;
       const std::string w = weak ? ":weak" : ":firm";

@@ -14,6 +14,7 @@
 #include "hair25d/core/error.h"
 #include "hair25d/core/firm_equal.h"
 #include "join_paint.h"
+#include "measured_relations.h"
 #include "raster.h"
 #include "seam_joins.h"
 #include "strand_assembly.h"
@@ -44,24 +45,6 @@ std::set<std::pair<int, int>> touching_pairs(const LabelMap& labels) {
       if (y + 1 < labels.height()) add(labels.at(x, y), labels.at(x, y + 1));
     }
   return out;
-}
-
-// A relation nothing was measured for: not the user's, score 0, between
-// regions that do not touch once the outlines are assigned. The layering
-// relates such regions (meeting only at a thick junction or across a
-// sliver: layering's add_island_neighbours) by its drawing order alone,
-// "equal" where their depths happen to tie — no evidence of one strand, nor
-// of one lying above the other. Session 16 (joins22), the layering's
-// relations on dev set flat 2000-2099: 236 such "equal" pairs, 161 of two
-// strands (merged into one); 978 such orders, 90 between pieces of one
-// strand (never joined then). Ignored, precision / recall with the
-// layering's relations: flat 2000-2099 0.744 / 0.585 -> 0.938 / 0.661, mixed
-// 0.681 / 0.488 -> 0.897 / 0.539 (docs/completion-record.md, "Session 16: joins
-// with the layering's relations"); with the annotation's relations
-// (user-fixed) nothing changes.
-bool unmeasured(const RegionRelation& r, const std::set<std::pair<int, int>>& touching) {
-  return !r.user_fixed && r.score == 0.0 &&
-         !touching.count({std::min(r.a, r.b), std::max(r.a, r.b)});
 }
 
 // A *remote* order: not the user's, between regions that do not touch once
@@ -214,18 +197,11 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
   // layering orders weakly, whose side outlines run on across the line
   // between them or whose order overrode the layering's equal
   // (overridden_equal), are halves of one strand as an `equal` pair is.
-  std::map<std::pair<int, int>, Relation> direct;
-  for (const RegionRelation& r : relations)
-    if (!unmeasured(r, touching)) direct[{r.a, r.b}] = r.relation;
-  const auto directly_above = [&](int x, int y) {
-    auto it = direct.find({x, y});
-    if (it != direct.end()) return it->second == Relation::kAbove;
-    it = direct.find({y, x});
-    return it != direct.end() && it->second == Relation::kBelow;
-  };
+  const detail::DirectOrders direct(relations, touching);
+  const auto directly_above = [&](int x, int y) { return direct.above(x, y); };
   std::set<std::pair<int, int>> seams;
   for (const RegionRelation& r : relations) {
-    if (unmeasured(r, touching) || r.relation == Relation::kEqual || firm(r)) continue;
+    if (detail::unmeasured(r, touching) || r.relation == Relation::kEqual || firm(r)) continue;
     // One paint (bank_crossings.h). The seam geometry never on screentone:
     // one tone there is shared by several strands (dev mixed 2000-2099, seed
     // 2099: a seam of two strands of one tone, 5 wrong pairs); an equal the
@@ -237,7 +213,7 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
       seams.insert({r.a, r.b});
   }
   for (const RegionRelation& r : relations) {
-    if (unmeasured(r, touching)) continue;
+    if (detail::unmeasured(r, touching)) continue;
     if (weak_equal(r) && detail::two_paints(tones, fields, r.a, r.b)) {
       ++result.refused_equals;
       continue;
@@ -254,7 +230,7 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
   }
 
   for (const RegionRelation& r : relations)
-    if (r.relation != Relation::kEqual && !unmeasured(r, touching) && remote(r, touching))
+    if (r.relation != Relation::kEqual && !detail::unmeasured(r, touching) && remote(r, touching))
       ctx.remote_orders.insert({std::min(r.a, r.b), std::max(r.a, r.b)});
   // Only firm relations between touching regions keep two regions out of one
   // strand (try_join).
