@@ -191,8 +191,6 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::max_angle_deg");
   app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,
                  "JoinScorerOptions::wide_threshold");
-  app.add_flag("--scorer-rescue-into-weak-equals", options.join_scorer.rescue_into_weak_equals,
-               "JoinScorerOptions::rescue_into_weak_equals (session 26's kEach)");
   app.add_option("--scorer-refuse-below", options.join_scorer.refuse_below,
                  "JoinScorerOptions::refuse_below");
   bool bound = false;

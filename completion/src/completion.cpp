@@ -184,8 +184,7 @@ const char* to_string(EdgeCase c) {
 namespace {
 
 // Reads the relations: equal pairs and seams are united in `strands` (weak
-// equals between pieces painted apart refused; the pieces of the weak ones
-// united go to `weak_merged`), orders give each region its
+// equals between pieces painted apart refused), orders give each region its
 // occluders, remote orders and the chains above go to `ctx`. Returns region
 // -> the regions above it through chains of firm relations between touching
 // regions, which alone keep two regions out of one strand (try_join).
@@ -193,8 +192,7 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
                                             const std::set<std::pair<int, int>>& touching,
                                             detail::RegionTones& tones,
                                             detail::RegionFields& fields, detail::Context& ctx,
-                                            UnionFind& strands, Result& result,
-                                            std::set<int>* weak_merged) {
+                                            UnionFind& strands, Result& result) {
   // Seams (seam_joins.h): two touching pieces of one paint that the
   // layering orders weakly, whose side outlines run on across the line
   // between them or whose order overrode the layering's equal
@@ -225,7 +223,6 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
       // groups made one, so the summary adds up: regions - strands).
       if (strands.find(r.a) != strands.find(r.b)) ++result.equal_merges;
       strands.unite(r.a, r.b);
-      if (weak_equal(r)) weak_merged->insert({r.a, r.b});
     } else if (r.relation == Relation::kBelow)
       ctx.regions[r.a].occluders.insert(r.b);
     else
@@ -277,9 +274,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // (region paint only: no relation is read).
   detail::RegionTones tones(ctx);
   detail::RegionFields fields(ctx);
-  std::set<int> weak_merged;
   const std::map<int, std::set<int>> firm_above =
-      read_relations(input.relations, touching, tones, fields, ctx, strands, result, &weak_merged);
+      read_relations(input.relations, touching, tones, fields, ctx, strands, result);
   const auto firmly_above = [&](int upper, int region) {
     const auto it = firm_above.find(region);
     return it != firm_above.end() && it->second.count(upper) > 0;
@@ -374,19 +370,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // joins of back hair may run behind it, and face joins (below) join pieces
   // seen on opposite sides of it.
   const detail::Face face = options.face_joins ? drawn_face : detail::Face{};
-  // An ensemble's rescue (JoinScorerOptions::rescue_into_weak_equals) stays
-  // out of the strands a weak equal made: the rescue may be right and the
-  // equal false (the lead's held flat 1022: +2 right, +6 wrong pairs).
-  const auto may_rescue = [&](int a, int b) {
-    if (options.join_scorer.rescue_into_weak_equals) return true;
-    const int ga = strands.find(a), gb = strands.find(b);
-    return std::ranges::none_of(weak_merged, [&](int x) {
-      const int g = strands.find(x);
-      return g == ga || g == gb;
-    });
-  };
   const std::vector<detail::Join> joins =
-      detail::match_edges(ctx, candidates, face.mask, tones, fields, try_join, may_rescue);
+      detail::match_edges(ctx, candidates, face.mask, tones, fields, try_join);
   std::set<int> joined_atoms;
   for (const detail::Join& j : joins) {
     const detail::Edge& a = candidates[j.edge_a];

@@ -119,13 +119,9 @@ struct Join {
   // Off the gradient by windows of uneven slopes: the scorer alone may join
   // it, at kUnevenThreshold (joins.cpp).
   bool uneven_gradient = false;
-  // Accepted by an ensemble's rescue (JoinScorerOptions::ensemble), not the
-  // default net nor the hand cost: `may_rescue` decides it (match_edges).
-  bool rescued = false;
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
-// records) or refuses joining the strands of regions a and b, asked for an
-// ensemble's rescue only when `may_rescue(a, b)` lets it through. `face` (CV_8U,
+// records) or refuses joining the strands of regions a and b. `face` (CV_8U,
 // image size, 1 = face; may be empty) hides back hair as an occluder does:
 // a patch between two pieces that lie above no region may run behind it.
 // `tones` and `fields` are the drawing's (bank_crossings.h, join_paint.h),
@@ -135,8 +131,7 @@ class RegionTones;
 class RegionFields;
 std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
                               const cv::Mat& face, RegionTones& tones, RegionFields& fields,
-                              const std::function<bool(int, int)>& try_join,
-                              const std::function<bool(int, int)>& may_rescue);
+                              const std::function<bool(int, int)>& try_join);
 
 // Cases 2 and 3 (grow.cpp): the completed area of an unmatched edge, or an
 // empty polygon when nothing could be grown.

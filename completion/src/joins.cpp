@@ -371,11 +371,10 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
           j.cost = o.max_join_cost + (kUnevenThreshold - p) * (s.band_high - s.band_low);
       } else if (p >= threshold)
         j.cost = std::min(j.cost, o.max_join_cost + (threshold - p) * (s.band_high - s.band_low));
-      else if (q >= ensemble_threshold) {
+      else if (q >= ensemble_threshold)
         j.cost = std::min(j.cost,
                           o.max_join_cost + (ensemble_threshold - q) * (s.band_high - s.band_low));
-        j.rescued = true;
-      } else if (p < s.refuse_below)
+      else if (p < s.refuse_below)
         j.cost = std::numeric_limits<double>::infinity();
     }
     if (ctx.join_log == nullptr) continue;
@@ -395,8 +394,7 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
 
 std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
                               const cv::Mat& face, RegionTones& tones, RegionFields& fields,
-                              const std::function<bool(int, int)>& try_join,
-                              const std::function<bool(int, int)>& may_rescue) {
+                              const std::function<bool(int, int)>& try_join) {
   const Options& o = *ctx.options;
   // Back hair: regions above no region. Only the face hides back hair; a
   // strand lying on the face is drawn over it, so the face between two of
@@ -647,7 +645,6 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
     // scorer still reads them as rivals (refused before scoring, dev
     // screentone 5028 lost a right back-piece path join to a rescued one).
     if (!free || two_tones_by_dots(tones, edges[j.edge_a].region, edges[j.edge_b].region) ||
-        (j.rescued && !may_rescue(edges[j.edge_a].region, edges[j.edge_b].region)) ||
         !try_join(edges[j.edge_a].region, edges[j.edge_b].region))
       continue;
     for (int e : {j.edge_a, j.edge_b}) used.insert(edges[e].atoms.begin(), edges[e].atoms.end());

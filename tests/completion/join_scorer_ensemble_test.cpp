@@ -5,9 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "annotated_eval.h"
@@ -137,71 +135,6 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
         EXPECT_EQ(rescued, 0);
     }
   }
-}
-
-// Session 27: a rescue may not reach a strand that a weak `equal` of the
-// layering's (EqualEvidence under the firm bar, not the user's) made: on the
-// lead's held flat set a right rescue joined a piece such an equal had
-// merged into another strand, and brought that strand's pairs with it. On
-// generated flat 2004 (the paint nets' threshold low) a chosen rescue a-b
-// stands with the annotation's relations; with a weak equal between a and
-// another piece c of a's strand it is refused, and with the same equal firm
-// (the user's) it stands again.
-TEST(JoinScorerEnsemble, NoRescueIntoAStrandAWeakEqualMade) {
-  const AnnotatedCase c = generated(2004, generator::Shading::kFlat);
-  Options o;
-  o.inpaint_strands = false;
-  o.inpaint_background = false;
-  o.join_scorer.record = true;
-  o.join_scorer.threshold = 0.99;
-  o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kEach;
-  o.join_scorer.paint_ensemble_threshold = 0.06;
-  const double limit = o.max_join_cost;
-  // A rescue chosen: over the limit, the default net refusing it (p < 0.99).
-  const auto rescue = [&](const JoinCandidate& j) {
-    return j.chosen && j.hand_cost > limit && j.probability >= 0 && j.probability < 0.99;
-  };
-  const auto chosen = [&](const Result& r, int a, int b) {
-    return std::ranges::any_of(r.join_candidates, [&](const JoinCandidate& j) {
-      return rescue(j) && std::minmax(j.region_a, j.region_b) == std::minmax(a, b);
-    });
-  };
-  const Input plain = test::input_from_case(c);
-  const Result first = complete_strands(plain, o);
-  std::map<int, int> strand_of;
-  for (const AnnotatedRegion& reg : c.region_list) strand_of[reg.id] = reg.strand;
-  int tried = 0;
-  for (const JoinCandidate& j : first.join_candidates) {
-    if (!rescue(j)) continue;
-    for (const auto& [a, b] : {std::pair{j.region_a, j.region_b}, {j.region_b, j.region_a}}) {
-      for (const AnnotatedRegion& other : c.region_list) {
-        const int piece = other.id;
-        if (piece == a || piece == b || strand_of[piece] != strand_of[a]) continue;
-        Input in = plain;
-        std::erase_if(in.relations, [&](const RegionRelation& r) {
-          return (r.a == a && r.b == piece) || (r.a == piece && r.b == a);
-        });
-        RegionRelation equal;
-        equal.a = a;
-        equal.b = piece;
-        equal.relation = Relation::kEqual;
-        equal.score = 0.5;
-        equal.equal_evidence = EqualEvidence{-1.0, false, 0.0};
-        in.relations.push_back(equal);
-        Options off = o;
-        off.join_scorer.rescue_into_weak_equals = true;
-        if (!chosen(complete_strands(in, off), a, b)) continue;  // the equal changed more
-        ++tried;
-        EXPECT_FALSE(chosen(complete_strands(in, o), a, b)) << a << "-" << b << " via " << piece;
-        in.relations.back().user_fixed = true;
-        EXPECT_TRUE(chosen(complete_strands(in, o), a, b)) << a << "-" << b << " via " << piece;
-        break;
-      }
-      if (tried > 0) break;
-    }
-    if (tried > 0) break;
-  }
-  EXPECT_GT(tried, 0);
 }
 
 }  // namespace

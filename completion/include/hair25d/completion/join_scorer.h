@@ -109,28 +109,17 @@ struct JoinScorerOptions {
   // gradient and two-tone in both relations; at one threshold 0.95 for all,
   // two-tone 2084 lost precision (a right rescue joined to a piece already
   // joined wrongly), hence the cel drawings' higher bar. Fresh mixed 7000,
-  // 8000 and flat 7000: right pairs only. Turned off in session 26: on the lead's
+  // 8000 and flat 7000: right pairs only. Off by default: on the lead's
   // held flat set with the layering's relations it added 7 right and 8
   // wrong pairs (precision 0.954 -> 0.949): a wrong rescue (seed 1000) and a
   // right one that joined a piece already merged into another strand by a
-  // false `equal` (seed 1022, 6 wrong pairs). Session 27: on by default
-  // again, with no rescue into a strand a weak equal made
-  // (rescue_into_weak_equals).
+  // false `equal` (seed 1022, 6 wrong pairs).
   enum class Ensemble { kNone, kScreentone, kAll, kEach };
-  Ensemble ensemble = Ensemble::kEach;
+  Ensemble ensemble = Ensemble::kScreentone;
   double ensemble_threshold = 0.95;
   double paint_ensemble_threshold = 0.9;
   double cel_ensemble_threshold = 0.965;
   double refuse_below = 0.0;
-  // Session 27: an ensemble's rescue may not join two strands when either
-  // holds pieces that a weak `equal` of the layering's made one (EqualEvidence
-  // under the firm bar, completion.cpp `weak_equal`; never the user's): a
-  // right rescue that reaches a piece such a false equal merged into another
-  // strand brings that strand's pairs with it (the lead's held flat set, 6
-  // wrong pairs). On the dev sets with the layering's relations it refused
-  // nothing the rescues gained (docs/completion-record.md "Session 27").
-  // true lets such rescues through (session 26's kEach).
-  bool rescue_into_weak_equals = false;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
   // max_angle_deg are strand candidates for the scorer alone: costed as any
