@@ -15,7 +15,16 @@
 // measured equal (ov, ev: its EqualEvidence), and the right / wrong pairs
 // that uniting its two pieces alone adds (weak orders a seam test could
 // take only).
-//   diag_relations [--seams] --shading screentone|mixed|... --seed S --count N
+// With --weak (session 27, joins56): every measured weak order (|score| <
+// 2) with the layering's own cues over the pair's common boundaries (the
+// boundaries' log-odds before and after Eq. (2)'s couplings, the junction
+// ends read and their sectors, the pieces' areas), and the right / wrong
+// pairs of the run when it alone is dropped or reversed. --correction says
+// how a class is corrected in the default count: the annotation's relation
+// as the user's (firm), its direction with the layering's score (weak), or
+// the layering's direction made firm (firm_same).
+//   diag_relations [--seams|--weak] [--correction firm|weak|firm_same]
+//                  --shading screentone|mixed|... --seed S --count N
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <map>
@@ -30,6 +39,7 @@
 #include "../../tests/completion/annotated_eval.h"
 #include "case_relations.h"
 #include "hair25d/generator/generator.h"
+#include "hair25d/layering/layering.h"
 
 using namespace hair25d;
 using PairSet = std::set<std::pair<int, int>>;
@@ -63,6 +73,15 @@ int main(int argc, char** argv) {
   app.add_option("--count", count);
   app.add_option("--shading", shading);
   bool seams_only = false;
+  bool weak_only = false;
+  std::string correction = "firm";
+  app.add_option("--correction", correction,
+                 "how a class is corrected: firm (the annotation's, as the user's), weak (its "
+                 "direction, the layering's score), firm_same (the layering's direction, firm)")
+      ->check(CLI::IsMember({"firm", "weak", "firm_same"}));
+  app.add_flag("--weak", weak_only,
+               "print each measured weak order with the layering's cues and what dropping or "
+               "reversing it does");
   app.add_flag("--seams", seams_only,
                "print each touching order with its seam tests and what uniting it does");
   CLI11_PARSE(app, argc, argv);
@@ -135,6 +154,90 @@ int main(int argc, char** argv) {
     completion::detail::RegionTones tones(ctx);
     completion::detail::RegionFields fields(ctx);
 
+    if (weak_only) {
+      // Each measured weak order (|score| < 2) with the layering's cues over
+      // the pair's common boundaries, and the right / wrong pairs of the run
+      // when it is dropped (no relation) or reversed.
+      const layering::Result lr = layering::layer_regions(c.image, c.regions);
+      const std::vector<RegionRelation>& rels = lr.relations;
+      int right_p = 0, wrong_p = 0;
+      for (auto p : run(rels)) (strand[p.first] == strand[p.second] ? right_p : wrong_p)++;
+      for (int i = 0; i < static_cast<int>(rels.size()); ++i) {
+        const RegionRelation& r = rels[i];
+        if (r.relation == Relation::kEqual || completion::detail::unmeasured(r, touching)) continue;
+        if (std::abs(r.score) >= 2.0) continue;
+        const bool touch = touching.count({std::min(r.a, r.b), std::max(r.a, r.b)}) > 0;
+        const bool one = strand[r.a] == strand[r.b];
+        const auto it = truth.find({r.a, r.b});
+        const char* t = it == truth.end()                ? "none"
+                        : it->second == Relation::kEqual ? "equal"
+                        : it->second == r.relation       ? "order"
+                                                         : "reversed";
+        // The layering's cues, oriented toward "a above b".
+        double total = 0, occl = 0, unary = 0, state = 0, learned = 0, patch = 0, same = 0,
+               contrast = 0, colour = 0, sectors = 0, circles = 0;
+        int nb = 0, ends = 0, rays3 = 0, rays4 = 0, disagree = 0;
+        double area_a = 0, area_b = 0, shared_a = 0, shared_b = 0;
+        for (std::size_t k = 0; k < lr.graph.boundaries.size(); ++k) {
+          const layering::Boundary& b = lr.graph.boundaries[k];
+          if (!((b.left == r.a && b.right == r.b) || (b.left == r.b && b.right == r.a))) continue;
+          const layering::BoundaryReport& rep = lr.boundaries[k];
+          const double sgn = b.left == r.a ? 1.0 : -1.0;
+          ++nb;
+          total += rep.length;
+          area_a = sgn > 0 ? rep.cues.area_left : rep.cues.area_right;
+          area_b = sgn > 0 ? rep.cues.area_right : rep.cues.area_left;
+          shared_a = sgn > 0 ? rep.cues.shared_left : rep.cues.shared_right;
+          shared_b = sgn > 0 ? rep.cues.shared_right : rep.cues.shared_left;
+          if (!rep.occluding) continue;
+          occl += rep.length;
+          unary += sgn * rep.patch_log_odds * rep.length;
+          learned += sgn * rep.learned * rep.length;
+          patch += sgn * rep.patch * rep.length;
+          state += sgn * rep.state * rep.length;
+          same += rep.equal * rep.length;
+          contrast += rep.line_contrast * rep.length;
+          colour += rep.colour_difference * rep.length;
+          if (rep.state != 0 && (rep.patch_log_odds > 0) != (rep.state > 0)) ++disagree;
+          for (const layering::EndAngles* e : {&rep.cues.start, &rep.cues.end}) {
+            if (!e->used) continue;
+            ++ends;
+            (e->rays >= 4 ? rays4 : rays3)++;
+            sectors += sgn * (e->left - e->right);
+            circles += sgn * (e->circle_left - e->circle_right);
+          }
+        }
+        const double w = occl > 0 ? 1.0 / occl : 0.0;
+        auto count = [&](const std::vector<RegionRelation>& rel) {
+          int right = 0, wrong = 0;
+          for (auto p : run(rel)) (strand[p.first] == strand[p.second] ? right : wrong)++;
+          return std::pair<int, int>{right - right_p, wrong - wrong_p};
+        };
+        std::vector<RegionRelation> dropped = rels;
+        dropped.erase(dropped.begin() + i);
+        const auto d = count(dropped);
+        std::vector<RegionRelation> flipped = rels;
+        flipped[i].relation = flip(r.relation);
+        flipped[i].score = -r.score;
+        const auto f = count(flipped);
+        std::printf(
+            "seed %d weak %d-%d %s %s truth %s score %.3f ov %d ev %s %.2f st %d nb %d len %.0f "
+            "occl %.0f unary %.2f learned %.2f patch %.2f state %.2f same %.2f contrast %.0f "
+            "colour %.0f disagree %d ends %d r3 %d r4 %d sectors %.2f circles %.2f area %.0f %.0f "
+            "shared %.2f %.2f; drop %+d %+d flip %+d %+d\n",
+            seed + k, r.a, r.b, touch ? "touch" : "remote", one ? "one" : "two", t, r.score,
+            r.overridden,
+            !r.equal_evidence        ? "no"
+            : r.equal_evidence->open ? "open"
+                                     : "occl",
+            r.equal_evidence ? r.equal_evidence->log_odds : 0.0, tones.screentone(), nb, total,
+            occl, unary * w, learned * w, patch * w, state * w, same * w, contrast * w, colour * w,
+            disagree, ends, rays3, rays4, sectors, circles, area_a, area_b, shared_a, shared_b,
+            d.first, d.second, f.first, f.second);
+      }
+      std::fflush(stdout);
+      continue;
+    }
     if (seams_only) {
       // Each measured touching order, its seam tests (completion.cpp
       // read_relations) and what uniting its pieces (the user's equal) does.
@@ -241,7 +344,20 @@ int main(int argc, char** argv) {
           continue;
         }
         auto it = truth.find({pred[i].a, pred[i].b});
-        if (it != truth.end()) out.push_back({pred[i].a, pred[i].b, it->second, 1.0, true, false});
+        if (it == truth.end()) continue;
+        RegionRelation r = pred[i];
+        const double sign = it->second == Relation::kAbove ? 1.0 : -1.0;
+        if (correction == "weak" && it->second != Relation::kEqual && !r.user_fixed) {
+          // The annotation's direction with the layering's strength.
+          r.relation = it->second, r.score = sign * std::abs(r.score), r.overridden = false;
+          out.push_back(r);
+        } else if (correction == "firm_same" && r.relation != Relation::kEqual) {
+          // The layering's direction made firm.
+          r.score = (r.relation == Relation::kAbove ? 1.0 : -1.0) * 2.5;
+          out.push_back(r);
+        } else {
+          out.push_back({pred[i].a, pred[i].b, it->second, 1.0, true, false});
+        }
       }
       return out;
     };
