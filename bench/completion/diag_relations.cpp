@@ -323,7 +323,7 @@ int main(int argc, char** argv) {
         else if (it->second == Relation::kEqual)
           cls = "order_of_equal" + w;
         else
-          cls = "reversed" + w;
+          cls = "reversed" + w + (weak && std::abs(r.score) < 0.5 ? ":bare" : "");
       } else if (r.relation == Relation::kEqual)
         cls = one ? "unrel_equal_one" : "unrel_equal_two";
       else
