@@ -26,6 +26,8 @@
 //   diag_relations [--seams|--weak] [--correction firm|weak|firm_same]
 //                  --shading screentone|mixed|... --seed S --count N
 #include <CLI/CLI.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -36,6 +38,7 @@
 #include "../../completion/src/join_paint.h"
 #include "../../completion/src/measured_relations.h"
 #include "../../completion/src/seam_joins.h"
+#include "../../completion/src/strand_continuation.h"
 #include "../../tests/completion/annotated_eval.h"
 #include "case_relations.h"
 #include "hair25d/generator/generator.h"
@@ -57,6 +60,30 @@ PairSet joined_pairs(const completion::Result& r) {
 
 Relation flip(Relation r) {
   return r == Relation::kAbove ? Relation::kBelow : r == Relation::kBelow ? Relation::kAbove : r;
+}
+
+// The drawing round a and b, a tinted red and b blue, enlarged twice.
+void write_crop(const std::string& path, const Image& image, const LabelMap& labels, int a, int b) {
+  cv::Rect box;
+  for (int y = 0; y < labels.height(); ++y)
+    for (int x = 0; x < labels.width(); ++x)
+      if (labels.at(x, y) == a || labels.at(x, y) == b) box |= cv::Rect(x, y, 1, 1);
+  box = cv::Rect(box.x - 20, box.y - 20, box.width + 40, box.height + 40) &
+        cv::Rect(0, 0, labels.width(), labels.height());
+  cv::Mat out(box.height, box.width, CV_8UC3);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) {
+      const int l = labels.at(x + box.x, y + box.y);
+      const auto& px = image.at(x + box.x, y + box.y);
+      cv::Vec3d c(px.b, px.g, px.r);  // BGR
+      if (l == a) c = 0.5 * c + cv::Vec3d(0, 0, 127);
+      if (l == b) c = 0.5 * c + cv::Vec3d(127, 0, 0);
+      out.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(c[0]),
+                                          cv::saturate_cast<uchar>(c[1]),
+                                          cv::saturate_cast<uchar>(c[2]));
+    }
+  cv::resize(out, out, cv::Size(), 2.0, 2.0, cv::INTER_NEAREST);
+  cv::imwrite(path, out);
 }
 
 struct Tally {
@@ -84,6 +111,10 @@ int main(int argc, char** argv) {
                "reversing it does");
   app.add_flag("--seams", seams_only,
                "print each touching order with its seam tests and what uniting it does");
+  std::string crops;
+  app.add_option("--crops", crops,
+                 "with --seams: write each weak touching order of one paint to this folder, "
+                 "its two pieces tinted (red a, blue b)");
   CLI11_PARSE(app, argc, argv);
   completion::Options options;
   options.inpaint_strands = false;
@@ -279,6 +310,18 @@ int main(int argc, char** argv) {
                                      : "occl",
             r.equal_evidence ? r.equal_evidence->log_odds : 0.0, right_c - right_p,
             wrong_c - wrong_p);
+        if (!crops.empty() && paint && std::abs(r.score) < 2.0)
+          write_crop(crops + "/" + std::to_string(seed + k) + "_" + std::to_string(r.a) + "_" +
+                         std::to_string(r.b) + (one ? "_one.png" : "_two.png"),
+                     c.image, ctx.labels, r.a, r.b);
+        if (std::abs(r.score) < 2.0) {
+          const auto sc = completion::detail::strand_continuation(ctx, r.a, r.b, above);
+          std::printf(
+              " cont %d len %.1f bend %.1f w %.1f %.1f n %d %d lo %d %.1f %.0f hi %d %.1f %.0f;",
+              completion::detail::continues_one_strand(sc), sc.line_length, sc.bend, sc.width_a,
+              sc.width_b, sc.slices_a, sc.slices_b, sc.low.measured, sc.low.offset, sc.low.angle,
+              sc.high.measured, sc.high.offset, sc.high.angle);
+        }
         for (const auto& e : completion::detail::seam_ends(ctx, r.a, r.b))
           std::printf(" [x%d%s%s s%.0f t%.0f]", e.third,
                       e.third != 0 && above(e.third, r.a) ? "^a" : "",

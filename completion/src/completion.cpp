@@ -17,6 +17,7 @@
 #include "measured_relations.h"
 #include "raster.h"
 #include "seam_joins.h"
+#include "strand_continuation.h"
 #include "strand_assembly.h"
 
 namespace hair25d::completion {
@@ -209,7 +210,9 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
     const bool overridden = overridden_equal(r, tones.screentone());
     if (!overridden && tones.screentone()) continue;
     if (detail::one_paint(tones, fields, r.a, r.b) &&
-        (overridden || detail::seam_geometry(ctx, r.a, r.b, directly_above)))
+        (overridden || detail::seam_geometry(ctx, r.a, r.b, directly_above) ||
+         detail::continues_one_strand(
+             detail::strand_continuation(ctx, r.a, r.b, directly_above))))
       seams.insert({r.a, r.b});
   }
   for (const RegionRelation& r : relations) {

@@ -80,22 +80,7 @@ Vec2 boundary_direction(const std::vector<Edgel>& edgels, const std::vector<int>
 
 }  // namespace
 
-std::vector<SeamEnd> seam_ends(const Context& ctx, int a, int b) {
-  const auto ia = ctx.regions.find(a), ib = ctx.regions.find(b);
-  if (ia == ctx.regions.end() || ib == ctx.regions.end()) return {};
-  const int margin = kRimClose + 3;
-  const cv::Rect near_a(ia->second.box.x - margin, ia->second.box.y - margin,
-                        ia->second.box.width + 2 * margin, ia->second.box.height + 2 * margin);
-  const cv::Rect near_b(ib->second.box.x - margin, ib->second.box.y - margin,
-                        ib->second.box.width + 2 * margin, ib->second.box.height + 2 * margin);
-  cv::Rect contact = near_a & near_b;
-  if (contact.empty()) return {};
-  const int reach = static_cast<int>(std::ceil(kSeamReach)) + margin;
-  cv::Rect box(contact.x - reach, contact.y - reach, contact.width + 2 * reach,
-               contact.height + 2 * reach);
-  box &= cv::Rect(0, 0, ctx.labels.width(), ctx.labels.height());
-  if (box.empty()) return {};
-  // The labels in the box, the unlabelled rims closed.
+cv::Mat closed_labels(const Context& ctx, const cv::Rect& box) {
   cv::Mat lab(box.height, box.width, CV_32S);
   std::vector<cv::Point> frontier;
   for (int y = 0; y < box.height; ++y)
@@ -116,6 +101,29 @@ std::vector<SeamEnd> seam_ends(const Context& ctx, int a, int b) {
     for (const auto& [q, l] : grown)
       if (lab.at<int>(q) == 0) lab.at<int>(q) = l, frontier.push_back(q);
   }
+  return lab;
+}
+
+cv::Rect contact_box(const Context& ctx, int a, int b, int reach) {
+  const auto ia = ctx.regions.find(a), ib = ctx.regions.find(b);
+  if (ia == ctx.regions.end() || ib == ctx.regions.end()) return {};
+  const int margin = kRimClose + 3;
+  const cv::Rect near_a(ia->second.box.x - margin, ia->second.box.y - margin,
+                        ia->second.box.width + 2 * margin, ia->second.box.height + 2 * margin);
+  const cv::Rect near_b(ib->second.box.x - margin, ib->second.box.y - margin,
+                        ib->second.box.width + 2 * margin, ib->second.box.height + 2 * margin);
+  const cv::Rect contact = near_a & near_b;
+  if (contact.empty()) return {};
+  const int r = reach + margin;
+  cv::Rect box(contact.x - r, contact.y - r, contact.width + 2 * r, contact.height + 2 * r);
+  return box & cv::Rect(0, 0, ctx.labels.width(), ctx.labels.height());
+}
+
+std::vector<SeamEnd> seam_ends(const Context& ctx, int a, int b) {
+  const cv::Rect box = contact_box(ctx, a, b, static_cast<int>(std::ceil(kSeamReach)));
+  if (box.empty()) return {};
+  // The labels in the box, the unlabelled rims closed.
+  const cv::Mat lab = closed_labels(ctx, box);
   // Boundary points between labels (pixel-corner coordinates: pixel (x, y)
   // covers [x, x + 1) x [y, y + 1)).
   std::vector<Edgel> edgels;

@@ -23,6 +23,14 @@ struct SeamEnd {
   double through = 0.0;  // the larger of a–b with a–X and with b–X: 180 for a T over a or b
 };
 
+// The labels of `box` (image pixels) with the drawn lines' light rims, left
+// unlabelled by the outline assignment, closed by growing the labels 2 px.
+cv::Mat closed_labels(const Context& ctx, const cv::Rect& box);
+
+// The box round where a and b may touch, grown by `reach` px, clipped to the
+// image (empty where their boxes are apart).
+cv::Rect contact_box(const Context& ctx, int a, int b, int reach);
+
 // The meeting points of a, b and a third region along their common line
 // (outline-assigned labels, the drawn line's unlabelled rim closed), with
 // the angles measured where each boundary runs at least a few pixels.
