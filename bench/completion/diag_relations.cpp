@@ -26,10 +26,10 @@
 //   diag_relations [--seams|--weak] [--correction firm|weak|firm_same]
 //                  --shading screentone|mixed|... --seed S --count N
 #include <CLI/CLI.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <cstdio>
 #include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <set>
 #include <string>
 
@@ -78,9 +78,9 @@ void write_crop(const std::string& path, const Image& image, const LabelMap& lab
       cv::Vec3d c(px.b, px.g, px.r);  // BGR
       if (l == a) c = 0.5 * c + cv::Vec3d(0, 0, 127);
       if (l == b) c = 0.5 * c + cv::Vec3d(127, 0, 0);
-      out.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(c[0]),
-                                          cv::saturate_cast<uchar>(c[1]),
-                                          cv::saturate_cast<uchar>(c[2]));
+      out.at<cv::Vec3b>(y, x) =
+          cv::Vec3b(cv::saturate_cast<uchar>(c[0]), cv::saturate_cast<uchar>(c[1]),
+                    cv::saturate_cast<uchar>(c[2]));
     }
   cv::resize(out, out, cv::Size(), 2.0, 2.0, cv::INTER_NEAREST);
   cv::imwrite(path, out);

@@ -1,10 +1,14 @@
 // Whole-strand evidence of a seam (private): do two touching pieces continue
 // one another as one strand across the line between them? Measured on
-// slices parallel to that line on both sides of it: a strand cut across
-// shows, on both sides, one width and side outlines that run on (matching
-// position and tangent) across the line, and the line spans that width; a
-// strand lying over another touches it along its side, so its own slices run
-// along it (much wider than the lower one's).
+// slices parallel to that line on both sides of it, up to 24 px from it: a
+// strand cut across shows side outlines that run on across the line
+// (matching position and tangent of the slices' ends fitted on each side);
+// a strand lying over another touches it along its own side, so its slices
+// run along it, past the lower one's sides or out of reach. Where a region
+// lies above a piece its outline hides the piece's side; only the slices'
+// ends on the paper or on regions not above count, so the sides are read
+// farther from the line than the seam geometry's 12 px round the meeting
+// points (seam_joins.h). Session 27 (joins57, docs/completion-record.md).
 #pragma once
 
 #include <functional>
@@ -25,8 +29,10 @@ struct StrandContinuation {
   bool measured = false;     // the a–b line and slices on both sides were found
   double line_length = 0.0;  // the a–b line's extent along its main direction (px)
   double bend = 0.0;         // its spread across that direction (px, standard deviation)
-  double width_a = 0.0, width_b = 0.0;  // median slice widths (0: no slice with both ends seen)
-  int slices_a = 0, slices_b = 0;       // slices with both ends seen
+  // Median slice widths (0: no slice with both ends seen) and the number of
+  // such slices, for diag_relations: not used by continues_one_strand.
+  double width_a = 0.0, width_b = 0.0;
+  int slices_a = 0, slices_b = 0;
   SideFit low, high;
 };
 
@@ -37,8 +43,13 @@ struct StrandContinuation {
 StrandContinuation strand_continuation(const Context& ctx, int a, int b,
                                        const std::function<bool(int, int)>& above);
 
-// Whether the measures say one strand cut across: widths that agree, a line
-// spanning them, side outlines running on across it and none breaking.
+// Whether the measures say one strand cut across: some side outline fitted
+// on both pieces, and every such side running on across the line (the
+// fits within 2.5 px of one another at it, their directions within 20°).
+// The widths are not used: both pieces' widths (both slice ends seen) were
+// measured on none of the weak touching orders of one paint this rule takes
+// on dev flat and mixed 2000-2099 (their far sides lie under other
+// strands). Chosen on those (docs/completion-record.md, "Session 27").
 bool continues_one_strand(const StrandContinuation& c);
 
 }  // namespace hair25d::completion::detail
