@@ -160,6 +160,8 @@ int main(int argc, char** argv) {
                  "completion::Options::max_join_angle_deg");
   app.add_option("--tangent-arm", options.tangent_arm, "completion::Options::tangent_arm");
   app.add_flag("!--no-face-joins", options.face_joins, "no joins across the face");
+  app.add_flag("--continuation-seams", options.continuation_seams,
+               "read weak orders between pieces whose sides run on as seams (session 27)");
   app.add_flag("!--no-path-joins", options.path_joins,
                "no joins of back-hair pieces through the regions above both");
   app.add_option("--min-join-coverage", options.min_join_coverage,

@@ -199,10 +199,8 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
   // between them (round the meeting points, seam_geometry, or on slices
   // along the line farther from it, continues_one_strand) or whose order
   // overrode the layering's equal (overridden_equal), are halves of one
-  // strand as an `equal` pair is. The slices (session 27, joins57), with
-  // the layering's relations: dev mixed 2000-2099 precision / recall 0.924 /
-  // 0.672 -> 0.925 / 0.679, mixed 3000-3099 0.928 / 0.699 -> 0.931 / 0.713
-  // (docs/completion-record.md, "Session 27").
+  // strand as an `equal` pair is. The slices only with
+  // Options::continuation_seams (session 27, joins57).
   const detail::DirectOrders direct(relations, touching);
   const auto directly_above = [&](int x, int y) { return direct.above(x, y); };
   std::set<std::pair<int, int>> seams;
@@ -216,7 +214,9 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
     if (!overridden && tones.screentone()) continue;
     if (detail::one_paint(tones, fields, r.a, r.b) &&
         (overridden || detail::seam_geometry(ctx, r.a, r.b, directly_above) ||
-         detail::continues_one_strand(detail::strand_continuation(ctx, r.a, r.b, directly_above))))
+         (ctx.options->continuation_seams &&
+          detail::continues_one_strand(
+              detail::strand_continuation(ctx, r.a, r.b, directly_above)))))
       seams.insert({r.a, r.b});
   }
   for (const RegionRelation& r : relations) {

@@ -1,8 +1,8 @@
-// Seams read from the whole strand (completion.cpp read_relations,
-// strand_continuation.h, session 27): two weakly ordered touching pieces of
-// one paint whose side outlines run on across the line between them are one
-// strand even where the seam geometry (the angles 3-12 px round the
-// meeting points, seam_joins.h) refuses them.
+// Seams read from the whole strand (Options::continuation_seams,
+// completion.cpp read_relations, strand_continuation.h, session 27): two
+// weakly ordered touching pieces of one paint whose side outlines run on
+// across the line between them are one strand even where the seam geometry
+// (the angles 3-12 px round the meeting points, seam_joins.h) refuses them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -52,10 +52,13 @@ Drawing band_under_strand(double top, double bottom) {
   return d;
 }
 
-std::vector<int> strand_of_1(Drawing d, const std::vector<RegionRelation>& relations) {
+std::vector<int> strand_of_1(Drawing d, const std::vector<RegionRelation>& relations,
+                             bool continuation_seams = true) {
   d.relations = relations;
   const Input in = input_of(d, Vec2(150, 300));
-  return regions_with(complete_strands(in, Options{}), 1);
+  Options o;
+  o.continuation_seams = continuation_seams;
+  return regions_with(complete_strands(in, o), 1);
 }
 
 TEST(StrandContinuation, WeaklyOrderedHalvesWhoseSidesRunOnAreJoined) {
@@ -69,6 +72,8 @@ TEST(StrandContinuation, WeaklyOrderedHalvesWhoseSidesRunOnAreJoined) {
   };
   EXPECT_EQ(strand_of_1(d, with({1, 2, Relation::kAbove, 0.8})), joined);
   EXPECT_EQ(strand_of_1(d, with({1, 2, Relation::kBelow, -1.5})), joined);
+  // Without the option only the seam geometry reads seams: apart.
+  EXPECT_EQ(strand_of_1(d, with({1, 2, Relation::kAbove, 0.8}), false), apart);
   // A firm order keeps them apart.
   EXPECT_EQ(strand_of_1(d, with({1, 2, Relation::kAbove, 3.0})), apart);
   // So does another paint (the seam is read between pieces of one paint).
