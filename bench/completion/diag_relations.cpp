@@ -14,7 +14,11 @@
 // points, x^a: the third region directly above a), whether it overrode a
 // measured equal (ov, ev: its EqualEvidence), and the right / wrong pairs
 // that uniting its two pieces alone adds (weak orders a seam test could
-// take only).
+// take only). Weak ones also print the slices' cue (session 27, joins57,
+// strand_continuation.h: cont, the a–b line's length and bend, the median
+// widths and slices with both ends seen, each side's fit offset and angle),
+// and with --crops DIR those of one paint are written as crops of the
+// drawing, a red and b blue.
 // With --weak (session 27, joins56): every measured weak order (|score| <
 // 2) with the layering's own cues over the pair's common boundaries (the
 // boundaries' log-odds before and after Eq. (2)'s couplings, the junction
@@ -23,7 +27,7 @@
 // how a class is corrected in the default count: the annotation's relation
 // as the user's (firm), its direction with the layering's score (weak), or
 // the layering's direction made firm (firm_same).
-//   diag_relations [--seams|--weak] [--correction firm|weak|firm_same]
+//   diag_relations [--seams [--crops DIR]|--weak] [--correction firm|weak|firm_same]
 //                  --shading screentone|mixed|... --seed S --count N
 #include <CLI/CLI.hpp>
 #include <cstdio>
