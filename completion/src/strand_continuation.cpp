@@ -141,7 +141,7 @@ StrandContinuation strand_continuation(const Context& ctx, int a, int b,
         int before, after;
       };
       std::vector<Run> runs;
-      int prev = -1;  // a run from the slice's start is a side at the reach
+      int prev = -1;  // a run from the slice's start has no side there
       for (double u = -reach; u <= reach; u += 0.5) {
         const int l = label_at(base + t * u);
         if (l == piece && prev != piece) runs.push_back({u, u, prev, -1});
