@@ -66,6 +66,17 @@ Relation flip(Relation r) {
   return r == Relation::kAbove ? Relation::kBelow : r == Relation::kBelow ? Relation::kAbove : r;
 }
 
+// What the annotation says of the layering's relation r: no relation,
+// equal, the same order, or the order reversed.
+const char* truth_class(const std::map<std::pair<int, int>, Relation>& truth,
+                        const RegionRelation& r) {
+  const auto it = truth.find({r.a, r.b});
+  return it == truth.end()                ? "none"
+         : it->second == Relation::kEqual ? "equal"
+         : it->second == r.relation       ? "order"
+                                          : "reversed";
+}
+
 // The drawing round a and b, a tinted red and b blue, enlarged twice.
 void write_crop(const std::string& path, const Image& image, const LabelMap& labels, int a, int b) {
   cv::Rect box;
@@ -203,11 +214,7 @@ int main(int argc, char** argv) {
         if (std::abs(r.score) >= 2.0) continue;
         const bool touch = touching.count({std::min(r.a, r.b), std::max(r.a, r.b)}) > 0;
         const bool one = strand[r.a] == strand[r.b];
-        const auto it = truth.find({r.a, r.b});
-        const char* t = it == truth.end()                ? "none"
-                        : it->second == Relation::kEqual ? "equal"
-                        : it->second == r.relation       ? "order"
-                                                         : "reversed";
+        const char* t = truth_class(truth, r);
         // The layering's cues, oriented toward "a above b".
         double total = 0, occl = 0, unary = 0, state = 0, learned = 0, patch = 0, same = 0,
                contrast = 0, colour = 0, sectors = 0, circles = 0;
@@ -285,11 +292,7 @@ int main(int argc, char** argv) {
         if (r.relation == Relation::kEqual) continue;
         if (!touching.count({std::min(r.a, r.b), std::max(r.a, r.b)})) continue;
         const bool one = strand[r.a] == strand[r.b];
-        const auto it = truth.find({r.a, r.b});
-        const char* t = it == truth.end()                ? "none"
-                        : it->second == Relation::kEqual ? "equal"
-                        : it->second == r.relation       ? "order"
-                                                         : "reversed";
+        const char* t = truth_class(truth, r);
         const bool paint = completion::detail::one_paint(tones, fields, r.a, r.b);
         const bool geom = completion::detail::seam_geometry(ctx, r.a, r.b, above);
         // Only the weak ones that a seam test could take are united (each is
