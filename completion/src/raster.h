@@ -53,16 +53,31 @@ inline double angle(const Vec2& a, const Vec2& b) {
 // A contour point's pixel centre.
 inline Vec2 centre(const cv::Point& p) { return {p.x + 0.5, p.y + 0.5}; }
 
+// The line fitted to `points` by total least squares: their mean, the
+// principal axis (sign as the solver gives it) and the points' root mean
+// square distance off the line. At least two points.
+struct TotalFit {
+  Vec2 mean;
+  Vec2 axis;
+  double across = 0.0;
+};
+inline TotalFit total_least_squares(const Polyline& points) {
+  TotalFit f;
+  f.mean = Vec2::Zero();
+  for (const Vec2& p : points) f.mean += p;
+  f.mean /= static_cast<double>(points.size());
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const Vec2& p : points) cov += (p - f.mean) * (p - f.mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+  f.axis = eig.eigenvectors().col(1);
+  f.across = std::sqrt(std::max(0.0, eig.eigenvalues()(0) / static_cast<double>(points.size())));
+  return f;
+}
+
 // The direction of the line fitted to `points` by total least squares (their
 // principal axis), pointing the way of `towards`. At least two points.
 inline Vec2 principal_axis(const Polyline& points, const Vec2& towards) {
-  Vec2 mean = Vec2::Zero();
-  for (const Vec2& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const Vec2& p : points) cov += (p - mean) * (p - mean).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-  Vec2 axis = eig.eigenvectors().col(1);
+  const Vec2 axis = total_least_squares(points).axis;
   return axis.dot(towards) < 0 ? Vec2(-axis) : axis;
 }
 

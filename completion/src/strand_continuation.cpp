@@ -1,10 +1,10 @@
 #include "strand_continuation.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "raster.h"
 #include "seam_joins.h"
 
 namespace hair25d::completion::detail {
@@ -97,14 +97,8 @@ StrandContinuation strand_continuation(const Context& ctx, int a, int b,
       }
     }
   if (line.size() < 3) return out;
-  Vec2 c(0, 0);
-  for (const Vec2& p : line) c += p;
-  c /= static_cast<double>(line.size());
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const Vec2& p : line) cov += (p - c) * (p - c).transpose();
-  cov /= static_cast<double>(line.size());
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-  const Vec2 t = eig.eigenvectors().col(1);
+  const TotalFit fit = total_least_squares(line);
+  const Vec2 c = fit.mean, t = fit.axis;
   Vec2 n(-t.y(), t.x());
   // a_side sums, over the a–b pairs, the step from the b pixel to the a pixel.
   if (a_side.dot(n) < 0) n = -n;
@@ -114,7 +108,7 @@ StrandContinuation strand_continuation(const Context& ctx, int a, int b,
     lo = std::min(lo, u), hi = std::max(hi, u);
   }
   out.line_length = hi - lo + 1.0;
-  out.bend = std::sqrt(std::max(0.0, eig.eigenvalues()(0)));
+  out.bend = fit.across;
   const int depth =
       std::clamp(static_cast<int>(std::lround(out.line_length)), kMinDepth, kMaxDepth);
   const double reach = kSliceReach;
