@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <exception>
 #include <map>
-#include <set>
 #include <string>
 
 #include "../../tests/completion/annotated_eval.h"
@@ -28,7 +27,6 @@ struct Total {
   completion::test::PairScore pairs;
   double iou_sum = 0.0;
   int strands = 0;
-  int refused = 0, refused_right = 0;  // joins refused by the strand order guard
   completion::test::UpperBound bound;
 };
 
@@ -107,27 +105,6 @@ void score(const AnnotatedCase& c, Relations relations, const completion::Option
     total->bound.other_linked += b.other_linked;
   }
   const completion::test::PairScore s = completion::test::score_pairs(c, r);
-  if (!r.order_refusals.empty()) {
-    // Each region pair once: the matching may offer it by several edges.
-    std::map<int, int> strand;
-    for (const AnnotatedRegion& reg : c.region_list) strand[reg.id] = reg.strand;
-    std::map<std::pair<int, int>, std::string> pairs;
-    for (const auto& o : r.order_refusals)
-      pairs.insert({{std::min(o.region_a, o.region_b), std::max(o.region_a, o.region_b)}, o.join});
-    int right = 0;
-    std::string list;
-    for (const auto& [p, join] : pairs) {
-      const auto [a, b] = p;
-      const bool one = strand.count(a) && strand.count(b) && strand[a] == strand[b];
-      right += one;
-      list += " " + std::to_string(a) + "-" + std::to_string(b) + " " + join +
-              (one ? " (right)" : " (wrong)");
-    }
-    std::printf("%s: strand order refused %zu joins, %d of one strand:%s\n", name.c_str(),
-                pairs.size(), right, list.c_str());
-    total->refused += static_cast<int>(pairs.size());
-    total->refused_right += right;
-  }
   if (!overlay.empty()) {
     std::string file = name;
     for (char& ch : file)
@@ -185,14 +162,6 @@ int main(int argc, char** argv) {
   app.add_flag("!--no-face-joins", options.face_joins, "no joins across the face");
   app.add_flag("--continuation-seams", options.continuation_seams,
                "read weak orders between pieces whose sides run on as seams (session 27)");
-  const std::map<std::string, completion::StrandOrderGuard> guards{
-      {"off", completion::StrandOrderGuard::kOff},
-      {"firm", completion::StrandOrderGuard::kFirm},
-      {"all", completion::StrandOrderGuard::kAll}};
-  app.add_option("--strand-order", options.strand_order,
-                 "completion::Options::strand_order: off, firm or all orders keep groups apart "
-                 "through other groups")
-      ->transform(CLI::CheckedTransformer(guards));
   app.add_flag("!--no-path-joins", options.path_joins,
                "no joins of back-hair pieces through the regions above both");
   app.add_option("--min-join-coverage", options.min_join_coverage,
@@ -287,9 +256,6 @@ int main(int argc, char** argv) {
       "mean strand IoU %.3f\n",
       total.pairs.precision(), total.pairs.recall(), total.pairs.predicted, total.pairs.truth,
       total.pairs.correct, total.strands > 0 ? total.iou_sum / total.strands : 0.0);
-  if (total.refused > 0)
-    std::printf("all: strand order refused %d joins, %d of one strand\n", total.refused,
-                total.refused_right);
   if (bound) print_bound("all", total.bound);
   if (csv) std::fclose(csv);
   return 0;

@@ -19,10 +19,20 @@
 #include "seam_joins.h"
 #include "strand_assembly.h"
 #include "strand_continuation.h"
-#include "strand_order.h"
 
 namespace hair25d::completion {
 namespace {
+
+struct UnionFind {
+  std::map<int, int> parent;
+  int find(int x) {
+    auto it = parent.find(x);
+    if (it == parent.end()) return parent[x] = x;
+    if (it->second == x) return x;
+    return it->second = find(it->second);
+  }
+  void unite(int a, int b) { parent[find(a)] = find(b); }
+};
 
 // Pairs of regions (smaller id first) with 4-neighbouring pixels in `labels`.
 std::set<std::pair<int, int>> touching_pairs(const LabelMap& labels) {
@@ -124,6 +134,24 @@ bool overridden_equal(const RegionRelation& r, bool screentone) {
   return r.equal_evidence->log_odds >= kMinOverriddenEqualLogOdds;
 }
 
+// region -> the regions above it through any chain of `occluders` (region ->
+// the regions directly above it).
+std::map<int, std::set<int>> chains_above(const std::map<int, std::set<int>>& occluders) {
+  std::map<int, std::set<int>> out;
+  for (const auto& [id, direct] : occluders) {
+    std::vector<int> stack(direct.begin(), direct.end());
+    std::set<int>& seen = out[id];
+    while (!stack.empty()) {
+      const int r = stack.back();
+      stack.pop_back();
+      if (!seen.insert(r).second) continue;
+      const auto it = occluders.find(r);
+      if (it != occluders.end()) stack.insert(stack.end(), it->second.begin(), it->second.end());
+    }
+  }
+  return out;
+}
+
 void check_input(const Input& input, const Options& options) {
   std::string why;
   if (!options.is_valid(&why)) throw Error(why);
@@ -158,13 +186,14 @@ namespace {
 
 // Reads the relations: equal pairs and seams are united in `strands` (weak
 // equals between pieces painted apart refused), orders give each region its
-// occluders, remote orders and the chains above go to `ctx`; orders between
-// touching regions go to `strands`, as firm (which alone keep two regions
-// out of one strand) or weak.
-void read_relations(const std::vector<RegionRelation>& relations,
-                    const std::set<std::pair<int, int>>& touching, detail::RegionTones& tones,
-                    detail::RegionFields& fields, detail::Context& ctx,
-                    detail::StrandGroups& strands, Result& result) {
+// occluders, remote orders and the chains above go to `ctx`. Returns region
+// -> the regions above it through chains of firm relations between touching
+// regions, which alone keep two regions out of one strand (try_join).
+std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& relations,
+                                            const std::set<std::pair<int, int>>& touching,
+                                            detail::RegionTones& tones,
+                                            detail::RegionFields& fields, detail::Context& ctx,
+                                            UnionFind& strands, Result& result) {
   // Seams (seam_joins.h): two touching pieces of one paint that the
   // layering orders weakly, whose side outlines run on across the line
   // between them (round the meeting points, seam_geometry, or on slices
@@ -211,19 +240,16 @@ void read_relations(const std::vector<RegionRelation>& relations,
     if (r.relation != Relation::kEqual && !detail::unmeasured(r, touching) && remote(r, touching))
       ctx.remote_orders.insert({std::min(r.a, r.b), std::max(r.a, r.b)});
   // Only firm relations between touching regions keep two regions out of one
-  // strand (try_join); the weak ones count with StrandOrderGuard::kAll.
-  for (const RegionRelation& r : relations) {
-    if (r.relation == Relation::kEqual || remote(r, touching)) continue;
-    const int lower = r.relation == Relation::kBelow ? r.a : r.b;
-    const int upper = r.relation == Relation::kBelow ? r.b : r.a;
-    if (firm(r))
-      strands.add_firm_order(lower, upper);
-    else if (!detail::unmeasured(r, touching) && !seams.count({r.a, r.b}))
-      strands.add_weak_order(lower, upper);
-  }
+  // strand (try_join).
+  std::map<int, std::set<int>> firm_occluders;
+  for (const RegionRelation& r : relations)
+    if (r.relation != Relation::kEqual && !remote(r, touching) && firm(r))
+      firm_occluders[r.relation == Relation::kBelow ? r.a : r.b].insert(
+          r.relation == Relation::kBelow ? r.b : r.a);
   std::map<int, std::set<int>> occluders;
   for (const auto& [id, info] : ctx.regions) occluders[id] = info.occluders;
-  ctx.above = detail::chains_above(occluders);
+  ctx.above = chains_above(occluders);
+  return chains_above(firm_occluders);
 }
 
 }  // namespace
@@ -242,8 +268,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   report(progress, "completion", 0.05, "regions");
   detail::describe_regions(ctx);
 
-  detail::StrandGroups strands;
-  strands.set_guard(options.strand_order);
+  UnionFind strands;
   for (const auto& [id, info] : ctx.regions) strands.find(id);
   for (const RegionRelation& r : input.relations) {
     if (!ctx.regions.count(r.a) || !ctx.regions.count(r.b)) {
@@ -256,7 +281,12 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // (region paint only: no relation is read).
   detail::RegionTones tones(ctx);
   detail::RegionFields fields(ctx);
-  read_relations(input.relations, touching, tones, fields, ctx, strands, result);
+  const std::map<int, std::set<int>> firm_above =
+      read_relations(input.relations, touching, tones, fields, ctx, strands, result);
+  const auto firmly_above = [&](int upper, int region) {
+    const auto it = firm_above.find(region);
+    return it != firm_above.end() && it->second.count(upper) > 0;
+  };
 
   // Head centre: given, else the centroid of the hair (it frames the face).
   if (input.head_center) {
@@ -328,14 +358,20 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     reports.push_back(r);
     return static_cast<int>(reports.size()) - 1;
   };
-  // A strand cannot lie above itself (strand_order.h).
-  // `pass` names the join pass in the refusals reported.
-  const char* pass = "strand";
+  // A strand cannot lie above itself: two regions one of which is above the
+  // other through a chain of firm relations are never joined.
   const auto try_join = [&](int a, int b) {
-    const std::size_t refused = strands.guard_refusals().size();
-    const bool joined = strands.try_join(a, b);
-    if (strands.guard_refusals().size() > refused) result.order_refusals.push_back({a, b, pass});
-    return joined;
+    const int ga = strands.find(a), gb = strands.find(b);
+    if (ga == gb) return false;
+    for (const auto& [x, ix] : ctx.regions) {
+      if (strands.find(x) != ga) continue;
+      for (const auto& [y, iy] : ctx.regions) {
+        if (strands.find(y) != gb) continue;
+        if (firmly_above(y, x) || firmly_above(x, y)) return false;
+      }
+    }
+    strands.unite(a, b);
+    return true;
   };
   // The face hides the back hair as a strand does (it is no region): case-1
   // joins of back hair may run behind it, and face joins (below) join pieces
@@ -378,7 +414,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       pieces.areas.push_back({j.region_a, band, false, static_cast<int>(reports.size()) - 2, over});
     ++result.joins;
   };
-  pass = "mass";
   for (const detail::MassJoin& j : detail::mass_join_candidates(ctx, tones, fields))
     join_by_bands(j, true);
   std::set<int> front;
@@ -397,7 +432,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   detail::untail_back_paint(ctx, ctx.front(), fields.cels(), &tailed);
   for (int t : tailed.tails)
     if (ctx.regions.at(t).occluders.size() <= 2) front.insert(t);
-  pass = "face";
   for (const detail::FaceJoin& j : detail::face_join_candidates(ctx, face, front)) {
     // On a cel drawing pieces of other flat paints are two locks, as for the
     // mass and path joins (RegionCels::judge, step over 3 RGB): the face
@@ -431,7 +465,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   }
   // Back-hair pieces linked under the regions above both (mass_paths.cpp).
   const auto one_strand = [&](int a, int b) { return strands.find(a) == strands.find(b); };
-  pass = "path";
   for (const detail::MassJoin& j :
        detail::path_join_candidates(ctx, face.mask, tones, fields, one_strand))
     join_by_bands(j, false);
@@ -441,7 +474,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // across a third back piece of another paint (generated screentone 104's
   // tail 5 to back 27): held-out screentone 207 gained its 6 pairs.
   cv::Mat body;
-  pass = "body";
   for (const detail::MassJoin& j :
        detail::body_join_candidates(ctx, face, front, tones, fields, &body))
     join_by_bands(j, false, &body);

@@ -6,7 +6,6 @@
 
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "hair25d/completion/active_contour.h"
@@ -19,12 +18,6 @@
 #include "hair25d/core/progress.h"
 
 namespace hair25d::completion {
-
-// Which orders keep two groups of regions out of one strand when one group
-// lies above the other through a chain of them that passes through other
-// groups (a strand has one depth): none, the firm ones (those that keep two
-// regions apart directly) or every measured order between touching regions.
-enum class StrandOrderGuard { kOff, kFirm, kAll };
 
 struct Options {
   // Outline pixels (label 0, dark) are given to the nearest region within this
@@ -60,15 +53,6 @@ struct Options {
   // two strands on 7000-7099, 0.963 -> 0.961; docs/completion-record.md,
   // "Session 27").
   bool continuation_seams = false;
-  // No join merges two groups of regions one of which lies above the other
-  // through other groups (a member of a third group above a piece of one,
-  // a piece of the other above a member of it): the strand would lie above
-  // itself. Orders directly between the two groups always keep them apart.
-  // Off by default: such a cycle needs a wrong join, but the join refused
-  // is the last one closing it, as often right as wrong; with kFirm fresh
-  // flat 9000-9099 lost 13 right pairs (0.959 / 0.816 -> 0.962 / 0.808 with
-  // the annotation's relations; docs/completion-record.md, "Session 28").
-  StrandOrderGuard strand_order = StrandOrderGuard::kOff;
 
   // Cases 2 and 3 (§5.2–5.4).
   ContourOptions contour;
@@ -138,14 +122,6 @@ struct Result {
   // The layering's weak "equal"s between pieces painted apart, not merged
   // (EqualEvidence in core/hair_model.h; the user's are always merged).
   int refused_equals = 0;
-  // Joins of two regions refused only by Options::strand_order, and the
-  // pass that offered them: "strand" (edge pairs), "mass", "face", "path" or
-  // "body".
-  struct OrderRefusal {
-    int region_a = 0, region_b = 0;
-    std::string join;
-  };
-  std::vector<OrderRefusal> order_refusals;
   InpaintResult strand_inpaint, background_inpaint;
   std::vector<JoinCandidate> join_candidates;  // with Options::join_scorer.record
   std::string summary;
