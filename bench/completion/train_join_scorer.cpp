@@ -41,8 +41,17 @@ struct Row {
   JoinFeatures f{};
 };
 
+// Session 28: with `crop_size` > 0, each candidate's crop (JoinCandidate::
+// crop) is appended to `crops` and its row, with the committed net's
+// probability after `chosen`, to `crop_rows`, in the same order.
+struct CropFiles {
+  int size = 0;
+  std::FILE* rows = nullptr;
+  std::FILE* crops = nullptr;
+};
+
 void collect_case(const AnnotatedCase& c, const std::string& set, bool predicted, double band_high,
-                  double max_angle, std::FILE* out, int* rows) {
+                  double max_angle, std::FILE* out, int* rows, const CropFiles& crop_files = {}) {
   completion::Options o;
   o.inpaint_strands = false;
   o.inpaint_background = false;
@@ -50,6 +59,7 @@ void collect_case(const AnnotatedCase& c, const std::string& set, bool predicted
   o.join_scorer.record = true;
   o.join_scorer.band_high = band_high;
   o.join_scorer.max_angle_deg = max_angle;
+  o.join_scorer.crop_size = crop_files.size;
   completion::Input in = completion::test::input_from_case(c);
   if (predicted) {
     std::string error;
@@ -68,6 +78,18 @@ void collect_case(const AnnotatedCase& c, const std::string& set, bool predicted
     for (float v : j.features) std::fprintf(out, ",%.9g", static_cast<double>(v));
     std::fprintf(out, "\n");
     ++*rows;
+    if (crop_files.size == 0) continue;
+    if (j.crop.size() !=
+        static_cast<std::size_t>(completion::kJoinCropChannels) * crop_files.size * crop_files.size)
+      throw std::runtime_error(c.name + ": a candidate without its crop");
+    std::fprintf(crop_files.rows, "%s,%s,%d,%d,%d,%.6f,%d,%.6f", set.c_str(), c.name.c_str(),
+                 j.region_a, j.region_b, truth[j.region_a] == truth[j.region_b] ? 1 : 0,
+                 j.hand_cost, j.chosen ? 1 : 0,
+                 completion::join_probability(completion::default_join_scorer(), j.features));
+    for (float v : j.features) std::fprintf(crop_files.rows, ",%.9g", static_cast<double>(v));
+    std::fprintf(crop_files.rows, "\n");
+    if (std::fwrite(j.crop.data(), 1, j.crop.size(), crop_files.crops) != j.crop.size())
+      throw std::runtime_error("cannot write the crops");
   }
 }
 
@@ -180,8 +202,22 @@ int main(int argc, char** argv) {
                    "Relations completion is given: annotated (the case's pairs) or predicted "
                    "(the layering's, as eval_joins --relations predicted)")
       ->check(CLI::IsMember({"annotated", "predicted"}));
-  collect->add_option("--shading", shadings, "flat, two-tone, gradient, screentone or all")
-      ->check(CLI::IsMember({"flat", "two-tone", "gradient", "screentone", "all"}));
+  collect
+      ->add_option(
+          "--shading", shadings,
+          "flat, two-tone, gradient, screentone, all (each a seed) or mixed (seed % 4: "
+          "flat, two-tone, gradient, screentone; eval_joins --shading mixed from a seed % 4 = 0)")
+      ->check(CLI::IsMember({"flat", "two-tone", "gradient", "screentone", "all", "mixed"}));
+  // Session 28: crops of the drawing around each candidate for an image
+  // cue (bench/completion/train_join_cnn.py).
+  std::string crops_dir;
+  int crop_size = 48, seed_step = 1;
+  collect->add_option("--crops", crops_dir,
+                      "Folder to append rows.csv (the CSV's rows with the committed net's "
+                      "probability after `chosen`) and crops.u8 (JoinCandidate::crop) to");
+  collect->add_option("--crop-size", crop_size, "Crop side, pixels")->check(CLI::Range(8, 512));
+  collect->add_option("--seed-step", seed_step, "Seeds seed, seed + step, ... (count of them)")
+      ->check(CLI::Range(1, 1000));
 
   auto* train = app.add_subcommand("train", "Train on CSVs, report, write the weights");
   std::vector<std::string> train_csv, eval_csv;
@@ -244,10 +280,18 @@ int main(int argc, char** argv) {
       std::FILE* f = std::fopen(csv.c_str(), "a");
       if (!f) throw std::runtime_error("cannot write " + csv);
       int rows = 0;
+      CropFiles crop_files;
+      if (!crops_dir.empty()) {
+        crop_files.size = crop_size;
+        crop_files.rows = std::fopen((crops_dir + "/rows.csv").c_str(), "a");
+        crop_files.crops = std::fopen((crops_dir + "/crops.u8").c_str(), "ab");
+        if (!crop_files.rows || !crop_files.crops)
+          throw std::runtime_error("cannot write rows.csv and crops.u8 in " + crops_dir);
+      }
       if (!annotated.empty()) {
         for (const auto& folder : find_annotated_cases(annotated))
           collect_case(read_annotated_case(folder), set, relations == "predicted", record_high,
-                       record_angle, f, &rows);
+                       record_angle, f, &rows, crop_files);
       } else {
         const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
                                             generator::Shading::kGradient,
@@ -255,19 +299,25 @@ int main(int argc, char** argv) {
         const char* names[] = {"flat", "two-tone", "gradient", "screentone"};
         for (int k = 0; k < count; ++k)
           for (int s = 0; s < 4; ++s) {
-            if (shadings != "all" && shadings != names[s]) continue;
+            const int case_seed = seed + k * seed_step;
+            if (shadings == "mixed" ? case_seed % 4 != s
+                                    : shadings != "all" && shadings != names[s])
+              continue;
             generator::Options g;
             g.width = width;
             g.height = height;
             g.strand_count = strands;
-            g.seed = static_cast<std::uint64_t>(seed + k);
+            g.seed = static_cast<std::uint64_t>(case_seed);
             g.shading = kinds[s];
             AnnotatedCase c = generator::generate_case(g);
-            c.name = std::string(names[s]) + "-" + std::to_string(seed + k);
-            collect_case(c, set, relations == "predicted", record_high, record_angle, f, &rows);
+            c.name = std::string(names[s]) + "-" + std::to_string(case_seed);
+            collect_case(c, set, relations == "predicted", record_high, record_angle, f, &rows,
+                         crop_files);
           }
       }
       std::fclose(f);
+      if (crop_files.rows) std::fclose(crop_files.rows);
+      if (crop_files.crops) std::fclose(crop_files.crops);
       std::printf("%d candidates appended to %s\n", rows, csv.c_str());
       return 0;
     }

@@ -11,6 +11,7 @@
 #include "bank_crossings.h"
 #include "context.h"
 #include "hair25d/completion/bezier.h"
+#include "join_crop.h"
 #include "join_features.h"
 #include "join_paint.h"
 #include "raster.h"
@@ -385,6 +386,8 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
     c.cost = j.cost;
     c.probability = p;
     c.features = features[k];
+    if (s.crop_size > 0)
+      c.crop = join_crop(ctx, edges[j.edge_a], edges[j.edge_b], j.patch, s.crop_size);
     j.record = static_cast<int>(ctx.join_log->size());
     ctx.join_log->push_back(c);
   }

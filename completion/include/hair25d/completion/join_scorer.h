@@ -138,6 +138,9 @@ struct JoinScorerOptions {
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
+  // Session 28: with `record`, also a crop of the drawing around each
+  // candidate, crop_size² pixels a channel (JoinCandidate::crop); 0: none.
+  int crop_size = 0;
   bool is_valid(std::string* error) const;
 };
 
@@ -149,7 +152,15 @@ struct JoinCandidate {
   double probability = -1.0;  // the scorer's, or −1 when it was not asked
   bool chosen = false;        // made by the greedy matching
   JoinFeatures features{};
+  // With JoinScorerOptions::crop_size > 0: kJoinCropChannels planes of
+  // crop_size² bytes, row-major, aligned to the join (join_crop.h).
+  std::vector<std::uint8_t> crop;
 };
+
+// Channels of JoinCandidate::crop: the drawing's red, green and blue (over
+// white paper), then masks of piece a, piece b, the regions above either
+// piece, other hair regions, and the hidden patch (255 inside).
+inline constexpr int kJoinCropChannels = 8;
 
 struct JoinTrainingOptions {
   int epochs = 60;
