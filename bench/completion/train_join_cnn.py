@@ -59,12 +59,16 @@ class Net(nn.Module):
 
 
 class Mlp(nn.Module):
-    def __init__(self):
+    # hidden=12, tanh: the committed net's shape; hidden=32, relu: the fused
+    # net's head without the image (a control for its capacity).
+    def __init__(self, hidden=12, act=nn.Tanh):
         super().__init__()
-        self.net = nn.Sequential(nn.Linear(FEATURES, 12), nn.Tanh(), nn.Linear(12, 1))
+        self.net = nn.Sequential(nn.Linear(FEATURES, hidden), act(), nn.Linear(hidden, 1))
 
     def forward(self, x, f):
-        return self.net(f).squeeze(1)
+        # The crop adds nothing but stays an input, so that the exported
+        # net has the fused one's inputs.
+        return (self.net(f) + 0.0 * x[:, :1, :1, :1].flatten(1)).squeeze(1)
 
 
 def augment(x, rng):
@@ -173,7 +177,7 @@ def report(title, d, scores, threshold=0.8):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("--train", required=True, help="folder of rows.csv and crops.u8")
+    ap.add_argument("--train", required=True, nargs="+", help="folders of rows.csv and crops.u8")
     ap.add_argument("--eval", required=True)
     ap.add_argument("--size", type=int, default=48)
     ap.add_argument("--epochs", type=int, default=12)
@@ -181,14 +185,15 @@ def main():
     ap.add_argument("--window-low", type=float, default=1.0)
     ap.add_argument("--window-high", type=float, default=4.0)
     ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--models", default="mlp,cnn,fused")
+    ap.add_argument("--models", default="mlp,head,cnn,fused")
     ap.add_argument("--onnx", default="", help="write the fused (else cnn) net here")
     ap.add_argument("--save", default="", help="write eval scores (npz) here")
     args = ap.parse_args()
     torch.set_num_threads(1)
     torch.manual_seed(args.seed)
 
-    data = load(args.train, args.size)
+    parts = [load(f, args.size) for f in args.train]
+    data = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
     data = subset(data, (data["cost"] >= args.window_low) & (data["cost"] <= args.window_high))
     # A tenth of the training drawings picks the epoch; the evaluation rows never do.
     cases = np.unique(data["case"])
@@ -205,10 +210,11 @@ def main():
     nets = {}
     for name in args.models.split(","):
         torch.manual_seed(args.seed)
-        model = Mlp() if name == "mlp" else Net(FEATURES if name == "fused" else 0)
+        model = (Mlp() if name == "mlp" else Mlp(32, nn.ReLU) if name == "head"
+                 else Net(FEATURES if name == "fused" else 0))
         t0 = time.time()
-        model = train(model, tr, va, mean, std, args.epochs if name != "mlp" else 4 * args.epochs,
-                      args.rate, args.seed, name)
+        epochs = 4 * args.epochs if name in ("mlp", "head") else args.epochs
+        model = train(model, tr, va, mean, std, epochs, args.rate, args.seed, name)
         print(f"{name}: trained in {time.time() - t0:.0f} s", flush=True)
         t0 = time.time()
         scores_ev[name] = predict(model, ev, mean, std)
@@ -224,16 +230,37 @@ def main():
     for title, m in [("band [2.4, 4.0]", band), ("all rows", np.ones_like(band))] + [
             (f"band, {k}", band & (kinds == k)) for k in ["flat", "two", "gradient", "screentone"]]:
         report(title, subset(ev, m), {k: v[m] for k, v in scores_ev.items()})
+    # How sure: the band AUC's difference between two scorers over
+    # bootstrap resamples of the evaluation drawings.
+    pairs = [(a, b) for a, b in [("fused", "mlp"), ("fused", "head"), ("cnn", "committed")]
+             if a in scores_ev and b in scores_ev]
+    if pairs:
+        rng = np.random.default_rng(0)
+        cases = np.unique(ev["case"][band])
+        by_case = {c: np.flatnonzero(band & (ev["case"] == c)) for c in cases}
+        for a, b in pairs:
+            diffs = []
+            for _ in range(200):
+                idx = np.concatenate([by_case[c] for c in rng.choice(cases, len(cases))])
+                diffs.append(auc(scores_ev[a][idx], ev["label"][idx]) -
+                             auc(scores_ev[b][idx], ev["label"][idx]))
+            lo, hi = np.percentile(diffs, [2.5, 97.5])
+            print(f"band AUC {a} - {b}: {np.mean(diffs):+.4f} (95 % of 200 resamples of the "
+                  f"drawings in [{lo:+.4f}, {hi:+.4f}])")
     if args.save:
         np.savez(args.save, label=ev["label"], cost=ev["cost"], case=ev["case"], **{k.replace("(", "_").replace(",", "_").replace(")", ""): v for k, v in scores_ev.items()})
     if args.onnx:
-        name = "fused" if "fused" in nets else "cnn"
+        name = next(n for n in ["fused", "cnn", "head", "mlp"] if n in nets)
         model = nets[name].eval()
         x = torch.zeros(1, CHANNELS, args.size, args.size)
         f = torch.zeros(1, FEATURES)
         torch.onnx.export(model, (x, f), args.onnx, input_names=["crop", "features"],
                           output_names=["logit"], opset_version=11)
-        np.savez(args.onnx + ".norm.npz", mean=mean, std=std)
+        # The features' standardisation, read by completion beside the net
+        # (JoinScorerOptions::image_net): the means, then the deviations.
+        with open(args.onnx + ".norm.txt", "w") as out:
+            out.write(" ".join(f"{v:.9g}" for v in mean) + "\n")
+            out.write(" ".join(f"{v:.9g}" for v in std) + "\n")
         print("wrote", args.onnx)
 
 
