@@ -193,8 +193,6 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::max_angle_deg");
   app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,
                  "JoinScorerOptions::wide_threshold");
-  app.add_option("--scorer-image-net", options.join_scorer.image_net,
-                 "JoinScorerOptions::image_net: an ONNX net of train_join_cnn.py (session 28)");
   app.add_option("--scorer-refuse-below", options.join_scorer.refuse_below,
                  "JoinScorerOptions::refuse_below");
   bool bound = false;

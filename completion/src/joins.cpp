@@ -13,7 +13,6 @@
 #include "hair25d/completion/bezier.h"
 #include "join_crop.h"
 #include "join_features.h"
-#include "join_image_net.h"
 #include "join_paint.h"
 #include "raster.h"
 
@@ -333,9 +332,6 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       if (!(*candidates)[which[k]].wide) features[k] = own[k];
   }
   const JoinScorerNet& net = default_join_scorer();
-  // Session 28: the image net, when given, in the committed net's place.
-  std::optional<JoinImageNet> image_net;
-  if (!s.image_net.empty() && s.enabled) image_net.emplace(s.image_net);
   // Session 25: the ensemble may rescue what the default net refuses.
   using Ensemble = JoinScorerOptions::Ensemble;
   // Session 26: with kEach, the paint ensemble on the drawings without
@@ -362,10 +358,7 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                    ? o.max_join_cost + (s.wide_threshold - p) * (s.band_high - s.band_low)
                    : std::numeric_limits<double>::infinity();
     } else if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
-      p = image_net ? image_net->probability(join_crop(ctx, edges[j.edge_a], edges[j.edge_b],
-                                                       j.patch, kJoinImageCropSize),
-                                             features[k])
-                    : join_probability(net, features[k]);
+      p = join_probability(net, features[k]);
       // The ensemble's mean, asked only for what the default net refuses;
       // the paint nets only for pieces compared as flat paint (session 26:
       // on dev gradient 2000 their rescues at 0.9 or 0.95 added 2 right

@@ -141,10 +141,6 @@ struct JoinScorerOptions {
   // Session 28: with `record`, also a crop of the drawing around each
   // candidate, crop_size² pixels a channel (JoinCandidate::crop); 0: none.
   int crop_size = 0;
-  // Session 28: an ONNX net (bench/completion/train_join_cnn.py --onnx)
-  // reading the candidate's crop and the scorer's inputs decides the band
-  // instead of default_join_scorer; empty: off. Read once a run.
-  std::string image_net;
   bool is_valid(std::string* error) const;
 };
 
