@@ -28,6 +28,9 @@ struct Total {
   double iou_sum = 0.0;
   int strands = 0;
   completion::test::UpperBound bound;
+  // Joins refused by Options::strand_paint: right (the two regions are of
+  // two strands) and wrong (of one).
+  int refused_right = 0, refused_wrong = 0;
 };
 
 const char* relation_name(Relation r) {
@@ -105,6 +108,17 @@ void score(const AnnotatedCase& c, Relations relations, const completion::Option
     total->bound.other_linked += b.other_linked;
   }
   const completion::test::PairScore s = completion::test::score_pairs(c, r);
+  if (!r.paint_refusals.empty()) {
+    std::map<int, int> strand;
+    for (const AnnotatedRegion& reg : c.region_list) strand[reg.id] = reg.strand;
+    for (const completion::Result::PaintRefusal& f : r.paint_refusals) {
+      const bool right = strand[f.a] != strand[f.b];
+      (right ? total->refused_right : total->refused_wrong) += 1;
+      std::printf("%s: strand paint refused %d-%d (%s; pieces %d-%d, %s)\n", name.c_str(), f.a, f.b,
+                  right ? "right" : "wrong", f.piece_a, f.piece_b,
+                  strand[f.piece_a] != strand[f.piece_b] ? "two strands" : "one strand");
+    }
+  }
   if (!overlay.empty()) {
     std::string file = name;
     for (char& ch : file)
@@ -162,6 +176,8 @@ int main(int argc, char** argv) {
   app.add_flag("!--no-face-joins", options.face_joins, "no joins across the face");
   app.add_flag("--continuation-seams", options.continuation_seams,
                "read weak orders between pieces whose sides run on as seams (session 27)");
+  app.add_flag("--strand-paint,!--no-strand-paint", options.strand_paint,
+               "refuse joins whose strand would hold two pieces painted apart (session 28)");
   app.add_flag("!--no-path-joins", options.path_joins,
                "no joins of back-hair pieces through the regions above both");
   app.add_option("--min-join-coverage", options.min_join_coverage,
@@ -256,6 +272,9 @@ int main(int argc, char** argv) {
       "mean strand IoU %.3f\n",
       total.pairs.precision(), total.pairs.recall(), total.pairs.predicted, total.pairs.truth,
       total.pairs.correct, total.strands > 0 ? total.iou_sum / total.strands : 0.0);
+  if (options.strand_paint)
+    std::printf("strand paint refusals: %d right, %d wrong\n", total.refused_right,
+                total.refused_wrong);
   if (bound) print_bound("all", total.bound);
   if (csv) std::fclose(csv);
   return 0;

@@ -19,6 +19,7 @@
 #include "seam_joins.h"
 #include "strand_assembly.h"
 #include "strand_continuation.h"
+#include "strand_paint.h"
 
 namespace hair25d::completion {
 namespace {
@@ -360,14 +361,26 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   };
   // A strand cannot lie above itself: two regions one of which is above the
   // other through a chain of firm relations are never joined.
+  // Nor are two groups holding two pieces painted apart
+  // (Options::strand_paint, strand_paint.h).
+  std::set<std::pair<int, int>> refused_paint;
   const auto try_join = [&](int a, int b) {
     const int ga = strands.find(a), gb = strands.find(b);
     if (ga == gb) return false;
+    std::vector<int> group_a, group_b;
     for (const auto& [x, ix] : ctx.regions) {
-      if (strands.find(x) != ga) continue;
-      for (const auto& [y, iy] : ctx.regions) {
-        if (strands.find(y) != gb) continue;
+      const int g = strands.find(x);
+      if (g == ga) group_a.push_back(x);
+      if (g == gb) group_b.push_back(x);
+    }
+    for (int x : group_a)
+      for (int y : group_b)
         if (firmly_above(y, x) || firmly_above(x, y)) return false;
+    if (options.strand_paint) {
+      if (const auto clash = detail::painted_apart(tones, fields, group_a, group_b)) {
+        if (refused_paint.insert({std::min(a, b), std::max(a, b)}).second)
+          result.paint_refusals.push_back({a, b, clash->a, clash->b});
+        return false;
       }
     }
     strands.unite(a, b);

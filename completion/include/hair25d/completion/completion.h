@@ -53,6 +53,11 @@ struct Options {
   // two strands on 7000-7099, 0.963 -> 0.961; docs/completion-record.md,
   // "Session 27").
   bool continuation_seams = false;
+  // Two groups of pieces are made one strand only when no piece of one is
+  // painted apart from a piece of the other (strand_paint.h: two tones by
+  // the dots, two flat paints, two gradients), not only the two pieces a
+  // join links.
+  bool strand_paint = false;
 
   // Cases 2 and 3 (§5.2–5.4).
   ContourOptions contour;
@@ -122,6 +127,13 @@ struct Result {
   // The layering's weak "equal"s between pieces painted apart, not merged
   // (EqualEvidence in core/hair_model.h; the user's are always merged).
   int refused_equals = 0;
+  // Joins refused because the strand they would make holds two pieces
+  // painted apart (Options::strand_paint): the regions the join would link
+  // and the two pieces measured apart, once per region pair.
+  struct PaintRefusal {
+    int a = 0, b = 0, piece_a = 0, piece_b = 0;
+  };
+  std::vector<PaintRefusal> paint_refusals;
   InpaintResult strand_inpaint, background_inpaint;
   std::vector<JoinCandidate> join_candidates;  // with Options::join_scorer.record
   std::string summary;
