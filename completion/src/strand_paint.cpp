@@ -70,10 +70,12 @@ bool pair_apart(RegionTones& tones, RegionFields& fields, int a, int b) {
 
 std::optional<PaintClash> painted_apart(RegionTones& tones, RegionFields& fields,
                                         const std::vector<int>& group_a,
-                                        const std::vector<int>& group_b) {
+                                        const std::vector<int>& group_b,
+                                        std::optional<PaintClash> but) {
   for (int a : group_a)
     for (int b : group_b)
-      if (pair_apart(tones, fields, a, b)) return PaintClash{a, b};
+      if (!(but && but->a == a && but->b == b) && pair_apart(tones, fields, a, b))
+        return PaintClash{a, b};
   return std::nullopt;
 }
 

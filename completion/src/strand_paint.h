@@ -32,8 +32,11 @@ struct PaintClash {
 //   than kMinStrandFieldStep (two gradients; strand_paint.cpp).
 // Nothing measured (a piece too small, no flat paint, no gradient) says
 // nothing. None when no pair is measured apart.
+// With `but`, that pair (of group_a's and group_b's) is not compared: a
+// relation's own two pieces are judged by the relation's rules.
 std::optional<PaintClash> painted_apart(RegionTones& tones, RegionFields& fields,
                                         const std::vector<int>& group_a,
-                                        const std::vector<int>& group_b);
+                                        const std::vector<int>& group_b,
+                                        std::optional<PaintClash> but = std::nullopt);
 
 }  // namespace hair25d::completion::detail

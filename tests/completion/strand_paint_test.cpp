@@ -56,6 +56,7 @@ TEST(StrandPaint, PieceOfTheGroupPaintedApartKeepsTheJoinOut) {
   EXPECT_EQ(strand_of_2(d, false), (std::vector<int>{1, 2, 5}));
   Result r;
   EXPECT_EQ(strand_of_2(d, true, &r), (std::vector<int>{2}));
+  EXPECT_EQ(regions_with(r, 1), (std::vector<int>{1, 5}));  // the user's equal stands
   ASSERT_EQ(r.paint_refusals.size(), 1u);
   const Result::PaintRefusal& f = r.paint_refusals.front();
   EXPECT_EQ(std::min(f.a, f.b), 1);
@@ -72,6 +73,38 @@ TEST(StrandPaint, OnePaintAndItsShadeAreJoined) {
     EXPECT_EQ(strand_of_2(chain(first), true, &r), (std::vector<int>{1, 2, 5}));
     EXPECT_TRUE(r.paint_refusals.empty());
   }
+}
+
+TEST(StrandPaint, LayeringEqualOntoAGroupPaintedApartMakesNoStrand) {
+  // Piece 6 above piece 5 (y 8..30) in 5's paint, the layering's equal
+  // between them (not the user's, no evidence: never a weak one, so the
+  // pair itself is trusted). 6 is 6 RGB off piece 1, already one group
+  // with 5 by the user's equal: the equal unites nothing.
+  const Rgba off{194, 150, 110, 255};
+  Drawing d = chain(off);
+  paint(
+      d, [](double x, double y) { return x > 100 && x < 140 && y > 8 && y <= 30; }, off, 6);
+  d.relations.push_back(below(4, 6));
+  d.relations.push_back({6, 5, Relation::kEqual, 0.0, false, false});
+  EXPECT_EQ(strand_of_2(d, false), (std::vector<int>{1, 2, 5, 6}));
+  Result r;
+  EXPECT_EQ(strand_of_2(d, true, &r), (std::vector<int>{2}));
+  EXPECT_EQ(regions_with(r, 6), (std::vector<int>{6}));
+  EXPECT_EQ(regions_with(r, 1), (std::vector<int>{1, 5}));
+  ASSERT_FALSE(r.paint_refusals.empty());
+  EXPECT_EQ(std::minmax(r.paint_refusals.front().a, r.paint_refusals.front().b), std::minmax(5, 6));
+}
+
+TEST(StrandPaint, LayeringEqualOfPiecesPaintedApartMakesNoStrand) {
+  // Off screentone the layering's equal's own pieces are compared too: 5
+  // and 1, 6 RGB apart, are not united; 1 and 2 are still joined.
+  Drawing d = chain(Rgba{194, 150, 110, 255});
+  d.relations.back() = {5, 1, Relation::kEqual, 0.0, false, false};
+  EXPECT_EQ(strand_of_2(d, false), (std::vector<int>{1, 2, 5}));
+  Result r;
+  EXPECT_EQ(strand_of_2(d, true, &r), (std::vector<int>{1, 2}));
+  ASSERT_EQ(r.paint_refusals.size(), 1u);
+  EXPECT_EQ(std::minmax(r.paint_refusals.front().a, r.paint_refusals.front().b), std::minmax(1, 5));
 }
 
 }  // namespace

@@ -53,10 +53,15 @@ struct Options {
   // two strands on 7000-7099, 0.963 -> 0.961; docs/completion-record.md,
   // "Session 27").
   bool continuation_seams = false;
-  // Two groups of pieces are made one strand only when no piece of one is
-  // painted apart from a piece of the other (strand_paint.h: two tones by
-  // the dots, two flat paints, two gradients), not only the two pieces a
-  // join links.
+  // Two groups of pieces are made one strand (a join, or the layering's
+  // equal or seam; never the user's relations refused) only when no piece
+  // of one is painted apart from a piece of the other (strand_paint.h: two
+  // tones by the dots, two flat paints, two gradients), not only the two
+  // pieces a join links. Off by default: it raised precision on every dev
+  // and fresh set measured (fresh mixed 9000-9099 with the layering's
+  // relations 0.920 -> 0.933) but not the right pairs (fresh -7 in all),
+  // and with the recall options on, fresh flat 9100-9199 still lost
+  // precision (docs/completion-record.md, "Session 28").
   bool strand_paint = false;
 
   // Cases 2 and 3 (§5.2–5.4).
