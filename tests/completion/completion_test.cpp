@@ -147,7 +147,7 @@ TEST(Completion, RemoteOrdersDoNotKeepPiecesApart) {
 // by `order` (1 above 2); or, `tee`, piece 2 a vertical band (x 150..190, y
 // 10..150) that piece 1's sides end on.
 std::vector<int> strand_of_cut_band(const RegionRelation& order, Rgba second = kHair,
-                                    bool tee = false) {
+                                    bool tee = false, Options o = {}) {
   Drawing d = blank(300, 170);
   paint(
       d, [](double x, double y) { return x > 20 && x < 150 && y > 60 && y < 100; }, kHair, 1);
@@ -158,7 +158,7 @@ std::vector<int> strand_of_cut_band(const RegionRelation& order, Rgba second = k
     paint(
         d, [](double x, double y) { return x >= 150 && x < 280 && y > 60 && y < 100; }, second, 2);
   d.relations = {order};
-  return test::regions_with(run(d, Vec2(150, 300)), 1);
+  return test::regions_with(run(d, Vec2(150, 300), o), 1);
 }
 
 TEST(Completion, WeaklyOrderedPiecesOfOneStrandCutByALineAreJoined) {
@@ -176,7 +176,9 @@ TEST(Completion, WeaklyOrderedPiecesOfOneStrandCutByALineAreJoined) {
 // (same-depth log-odds under 2, or an open pair's under 0) between the cut
 // band's pieces painted apart (20 RGB) makes no strand of them. One paint,
 // a firm equal, an open pair leaning to one depth, the user's equal, or an
-// equal without evidence (as before session 23) unite them.
+// equal without evidence (as before session 23) unite them, unless the
+// strand's paint is judged as a whole (Options::strand_paint, the default
+// since session 28): then only the user's equal unites two paints.
 TEST(Completion, WeakEqualsBetweenTwoPaintsAreRefused) {
   const Rgba other{185, 160, 100, 255};
   const auto equal = [](double log_odds, bool open = false, bool user = false) {
@@ -185,14 +187,20 @@ TEST(Completion, WeakEqualsBetweenTwoPaintsAreRefused) {
     return r;
   };
   const std::vector<int> joined{1, 2}, apart{1};
-  EXPECT_EQ(strand_of_cut_band(equal(0.5), other), apart);
-  EXPECT_EQ(strand_of_cut_band(equal(1.9), other), apart);
-  EXPECT_EQ(strand_of_cut_band(equal(-1.0, true), other), apart);
-  EXPECT_EQ(strand_of_cut_band(equal(0.5)), joined);
-  EXPECT_EQ(strand_of_cut_band(equal(2.5), other), joined);
-  EXPECT_EQ(strand_of_cut_band(equal(1.0, true), other), joined);
-  EXPECT_EQ(strand_of_cut_band(equal(0.5, false, true), other), joined);
-  EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kEqual, 0.0}, other), joined);
+  Options pairs_only;
+  pairs_only.strand_paint = false;
+  for (const Options& o : {pairs_only, Options{}}) {
+    SCOPED_TRACE(o.strand_paint ? "strand paint" : "pairs only");
+    const std::vector<int>& firm = o.strand_paint ? apart : joined;
+    EXPECT_EQ(strand_of_cut_band(equal(0.5), other, false, o), apart);
+    EXPECT_EQ(strand_of_cut_band(equal(1.9), other, false, o), apart);
+    EXPECT_EQ(strand_of_cut_band(equal(-1.0, true), other, false, o), apart);
+    EXPECT_EQ(strand_of_cut_band(equal(0.5), kHair, false, o), joined);
+    EXPECT_EQ(strand_of_cut_band(equal(2.5), other, false, o), firm);
+    EXPECT_EQ(strand_of_cut_band(equal(1.0, true), other, false, o), firm);
+    EXPECT_EQ(strand_of_cut_band(equal(0.5, false, true), other, false, o), joined);
+    EXPECT_EQ(strand_of_cut_band({1, 2, Relation::kEqual, 0.0}, other, false, o), firm);
+  }
 }
 
 // The cut band's pieces on the generator's screentone paper (235, 205,

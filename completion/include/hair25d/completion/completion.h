@@ -57,12 +57,13 @@ struct Options {
   // equal or seam; never the user's relations refused) only when no piece
   // of one is painted apart from a piece of the other (strand_paint.h: two
   // tones by the dots, two flat paints, two gradients), not only the two
-  // pieces a join links. Off by default: it raised precision on every dev
-  // and fresh set measured (fresh mixed 9000-9099 with the layering's
-  // relations 0.920 -> 0.933) but not the right pairs (fresh -7 in all),
-  // and with the recall options on, fresh flat 9100-9199 still lost
-  // precision (docs/completion-record.md, "Session 28").
-  bool strand_paint = false;
+  // pieces a join links. On by default (the lead, session 28): it raised
+  // precision on every dev and fresh set measured (fresh mixed 9000-9099
+  // with the layering's relations 0.920 -> 0.933) for 7 right pairs fewer
+  // against 58 wrong ones fewer over the eight fresh runs; with the recall
+  // options on, fresh flat 9100-9199 still lost precision, so they stay off
+  // (docs/completion-record.md, "Session 28").
+  bool strand_paint = true;
 
   // Cases 2 and 3 (§5.2–5.4).
   ContourOptions contour;
