@@ -59,7 +59,7 @@ struct Options {
   // tones by the dots, two flat paints, two gradients), not only the two
   // pieces a join links. On by default (the lead, session 28): it raised
   // precision on every dev and fresh set measured (fresh mixed 9000-9099
-  // with the layering's relations 0.920 -> 0.933) for 7 right pairs fewer
+  // with the layering's relations 0.920 -> 0.933) for 8 right pairs fewer
   // against 58 wrong ones fewer over the eight fresh runs; with the recall
   // options on, fresh flat 9100-9199 still lost precision, so they stay off
   // (docs/completion-record.md, "Session 28").
