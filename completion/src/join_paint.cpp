@@ -490,24 +490,31 @@ const RegionCels::Cel& RegionCels::cel(int region) {
   return cels_[region] = c;
 }
 
+// The darker kMinShade-kMaxShade of the lighter on every channel, the
+// channels' ratios within kShadeSpread of each other (the generator's band
+// is 0.72 of the base); the lighter at least kMinShadeLight on every
+// channel.
+constexpr double kMinShade = 0.5, kMaxShade = 0.9, kShadeSpread = 0.06;
+constexpr double kMinShadeLight = 16.0;
+
+bool shade_of(const Eigen::Vector3d& light, const Eigen::Vector3d& dark) {
+  if (light.minCoeff() < kMinShadeLight) return false;
+  const Eigen::Vector3d r = dark.cwiseQuotient(light);
+  return r.minCoeff() >= kMinShade && r.maxCoeff() <= kMaxShade &&
+         r.maxCoeff() - r.minCoeff() <= kShadeSpread;
+}
+
 namespace {
 
-// A piece painted in a base and its cel shadow: its two commonest flat
-// colours, the darker kMinShade-kMaxShade of the lighter on every channel,
-// the channels' ratios within kShadeSpread of each other (the generator's
-// band is 0.72 of the base).
-constexpr double kMinShade = 0.5, kMaxShade = 0.9, kShadeSpread = 0.06;
 constexpr double kLevelSlack = 0.1;
 
+// A piece painted in a base and its cel shadow: its two commonest flat
+// colours, one the other's shade (shade_of).
 bool shaded(const RegionCels::Cel& c) {
   if (c.flats.size() < 2) return false;
   Eigen::Vector3d light = c.flats[0], dark = c.flats[1];
   if (light.sum() < dark.sum()) std::swap(light, dark);
-  if (light.minCoeff() < 16) return false;
-  const Eigen::Vector3d r = dark.cwiseQuotient(light);
-  if (r.minCoeff() < kMinShade || r.maxCoeff() > kMaxShade ||
-      r.maxCoeff() - r.minCoeff() > kShadeSpread)
-    return false;
+  if (!shade_of(light, dark)) return false;
   // Below a level: the band's rows begin where the base's end (within
   // kLevelSlack of the piece's height; a strand's band runs along it beside
   // the base).

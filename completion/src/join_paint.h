@@ -85,6 +85,10 @@ PaintStep paint_step(const Edge& a, const Edge& b, const EdgePaint& pa, const Ed
 
 namespace hair25d::completion::detail {
 
+// Whether `dark` is a cel shadow of `light` (join_paint.cpp: a steady share
+// of it on every channel, as the generator's band is of its base).
+bool shade_of(const Eigen::Vector3d& light, const Eigen::Vector3d& dark);
+
 // Cel paint of whole pieces: up to three flat colours of a region's drawn
 // pixels (2 px inside it — 1 px or all for a sliver — so that the drawn
 // line's anti-aliased rim is no colour), each with the pixels' row range.

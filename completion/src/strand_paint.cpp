@@ -7,13 +7,6 @@
 namespace hair25d::completion::detail {
 namespace {
 
-// A cel shadow: the darker colour this share of the lighter on every
-// channel, the channels within kShadeSpread of each other (join_paint.cpp's
-// `shaded` pieces; the generator's band is 0.72 of the base). The lighter
-// one at least kMinShadeLight on every channel, as there.
-constexpr double kMinShade = 0.5, kMaxShade = 0.9, kShadeSpread = 0.06;
-constexpr double kMinShadeLight = 16.0;
-
 // Two gradients across the groups: the joint linear field missing the
 // pieces by more than this (RegionFields::step, RGB). The pair tests'
 // kMinOtherFieldStep (3) compares pieces facing each other across one
@@ -23,13 +16,6 @@ constexpr double kMinShadeLight = 16.0;
 // missed such pieces of one strand by 3.1, 3.5, 3.7 and 4.6 RGB, pieces of
 // two strands the refusals stopped by 3.9, 4.3 and 6.8-25.8 (session 28).
 constexpr double kMinStrandFieldStep = 6.0;
-
-bool shade_of(const Eigen::Vector3d& light, const Eigen::Vector3d& dark) {
-  if (light.minCoeff() < kMinShadeLight) return false;
-  const Eigen::Vector3d r = dark.cwiseQuotient(light);
-  return r.minCoeff() >= kMinShade && r.maxCoeff() <= kMaxShade &&
-         r.maxCoeff() - r.minCoeff() <= kShadeSpread;
-}
 
 // RegionCels::step with a shade counted as the same paint: each flat of
 // one piece to the nearest flat of the other, or 0 where either is the
