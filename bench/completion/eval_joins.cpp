@@ -191,6 +191,10 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::threshold");
   app.add_option("--scorer-screentone-threshold", options.join_scorer.screentone_threshold,
                  "JoinScorerOptions::screentone_threshold");
+  app.add_flag("--scorer-retrained,!--no-scorer-retrained", options.join_scorer.retrained,
+               "JoinScorerOptions::retrained: the retrained net off screentone");
+  app.add_option("--scorer-retrained-threshold", options.join_scorer.retrained_threshold,
+                 "JoinScorerOptions::retrained_threshold");
   const std::map<std::string, completion::JoinScorerOptions::Ensemble> ensembles{
       {"none", completion::JoinScorerOptions::Ensemble::kNone},
       {"screentone", completion::JoinScorerOptions::Ensemble::kScreentone},

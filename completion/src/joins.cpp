@@ -297,7 +297,10 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                       bool cel, std::vector<Join>* candidates) {
   const Options& o = *ctx.options;
   const JoinScorerOptions& s = o.join_scorer;
-  const double threshold = screentone ? s.screentone_threshold : s.threshold;
+  const bool retrained = s.retrained && !screentone;
+  const double threshold = screentone  ? s.screentone_threshold
+                           : retrained ? s.retrained_threshold
+                                       : s.threshold;
   std::vector<int> which;
   std::vector<double> costs;
   std::vector<std::pair<int, int>> ends;
@@ -331,7 +334,7 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
     for (std::size_t k = 0; k < which.size(); ++k)
       if (!(*candidates)[which[k]].wide) features[k] = own[k];
   }
-  const JoinScorerNet& net = default_join_scorer();
+  const JoinScorerNet& net = retrained ? retrained_join_scorer() : default_join_scorer();
   // Session 25: the ensemble may rescue what the default net refuses.
   using Ensemble = JoinScorerOptions::Ensemble;
   // Session 26: with kEach, the paint ensemble on the drawings without

@@ -12,6 +12,7 @@
 
 #include "annotated_eval.h"
 #include "hair25d/completion/completion.h"
+#include "hair25d/completion/join_scorer.h"
 #include "hair25d/generator/generator.h"
 
 namespace hair25d::completion {
@@ -269,18 +270,21 @@ TEST(GeneratedCases, TwoWorkersGiveTheResultOfOne) {
 
 // Screentone drawings rescue strand candidates over the cost limit at their
 // own threshold (JoinScorerOptions::screentone_threshold, session 21), the
-// other drawings at `threshold`: with one threshold low (0.05) and the
-// other high (0.99), the candidates of the band are rescued by the one of
-// their drawing only.
+// other drawings at `threshold`, or with `retrained` (session 29) by the
+// retrained net at retrained_threshold: with one threshold low (0.05) and
+// the other high (0.999), the candidates of the band are rescued by the one
+// of their drawing only, and judged by their drawing's net.
 TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
-  auto run = [](const AnnotatedCase& c, double threshold, double screentone_threshold) {
+  auto run = [](const AnnotatedCase& c, double threshold, double screentone_threshold,
+                bool retrained) {
     Options o;
     o.inpaint_strands = false;
     o.inpaint_background = false;
     o.join_scorer.record = true;
-    o.join_scorer.threshold = threshold;
+    o.join_scorer.retrained = retrained;
+    (retrained ? o.join_scorer.retrained_threshold : o.join_scorer.threshold) = threshold;
     o.join_scorer.screentone_threshold = screentone_threshold;
-    // The default net's thresholds alone: the ensembles' rescues are
+    // The nets' thresholds alone: the ensembles' rescues are
     // join_scorer_ensemble_test.cpp's.
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
     return complete_strands(test::input_from_case(c), o);
@@ -291,26 +295,35 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
        {generator::Shading::kScreentone, generator::Shading::kFlat}) {
     const bool screentone = shading == generator::Shading::kScreentone;
     const AnnotatedCase c = generated(800, 640, 20, 2004, shading);
-    for (const auto& [threshold, screentone_threshold] : {std::pair{0.05, 0.99}, {0.99, 0.05}}) {
-      const Result r = run(c, threshold, screentone_threshold);
-      const double t = screentone ? screentone_threshold : threshold;
-      int rescued = 0;
-      for (const JoinCandidate& j : r.join_candidates) {
-        if (j.hand_cost < s.band_low || j.hand_cost > s.band_high || j.probability < 0) continue;
-        if (j.probability >= t) {
-          EXPECT_DOUBLE_EQ(j.cost, std::min(j.hand_cost, limit + (t - j.probability) *
-                                                                     (s.band_high - s.band_low)));
-          rescued += j.hand_cost > limit;
-        } else {
-          EXPECT_EQ(j.cost, j.hand_cost);
+    for (const bool retrained : {false, true}) {
+      const JoinScorerNet& net =
+          retrained && !screentone ? retrained_join_scorer() : default_join_scorer();
+      for (const auto& [threshold, screentone_threshold] :
+           {std::pair{0.05, 0.999}, {0.999, 0.05}}) {
+        SCOPED_TRACE(testing::Message() << "screentone " << screentone << " retrained " << retrained
+                                        << " threshold " << threshold);
+        const Result r = run(c, threshold, screentone_threshold, retrained);
+        const double t = screentone ? screentone_threshold : threshold;
+        int rescued = 0, asked = 0;
+        for (const JoinCandidate& j : r.join_candidates) {
+          if (j.hand_cost < s.band_low || j.hand_cost > s.band_high || j.probability < 0) continue;
+          ++asked;
+          EXPECT_DOUBLE_EQ(j.probability, join_probability(net, j.features));
+          if (j.probability >= t) {
+            EXPECT_DOUBLE_EQ(j.cost, std::min(j.hand_cost, limit + (t - j.probability) *
+                                                                       (s.band_high - s.band_low)));
+            rescued += j.hand_cost > limit;
+          } else {
+            EXPECT_EQ(j.cost, j.hand_cost);
+          }
         }
+        EXPECT_GT(asked, 0);
+        // The low threshold rescues some candidate over the limit, the high none.
+        if (t < 0.5)
+          EXPECT_GT(rescued, 0);
+        else
+          EXPECT_EQ(rescued, 0);
       }
-      // The low threshold rescues some candidate over the limit, the high none.
-      SCOPED_TRACE(screentone);
-      if (t < 0.5)
-        EXPECT_GT(rescued, 0);
-      else
-        EXPECT_EQ(rescued, 0);
     }
   }
 }

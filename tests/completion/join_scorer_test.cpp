@@ -340,6 +340,13 @@ TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
   EXPECT_NE(wide.find("wide_join_scorer()"), std::string::npos);
   EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_wide_weights.cpp")),
             test::generated_part(wide));
+  // And the net retrained for the drawings without screentone (session 29).
+  const std::string retrained =
+      join_scorer_source(retrained_join_scorer(), "x", "retrained_join_scorer");
+  EXPECT_NE(retrained.find("retrained_join_scorer()"), std::string::npos);
+  EXPECT_NE(retrained_join_scorer().w1[0][0], default_join_scorer().w1[0][0]);
+  EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_retrained_weights.cpp")),
+            test::generated_part(retrained));
 }
 
 // A strand that turns a corner under a band (session 18): piece 1 comes
@@ -457,6 +464,11 @@ TEST(JoinScorer, BadInputThrows) {
   o.join_scorer.cel_ensemble_threshold = 0.0;
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_NE(why.find("cel_ensemble_threshold"), std::string::npos);
+  EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
+  o = {};
+  o.join_scorer.retrained_threshold = 0.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("retrained_threshold = 0"), std::string::npos) << why;
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.refuse_below = 0.95;  // above the threshold

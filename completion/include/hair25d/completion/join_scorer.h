@@ -48,6 +48,11 @@ std::span<const JoinScorerNet> ensemble_join_scorers();
 // gradient paint), trained on those drawings' candidates (generated file
 // join_scorer_paint_ensemble_weights.cpp); empty when none was trained.
 std::span<const JoinScorerNet> paint_ensemble_join_scorers();
+// Session 29: the net retrained on 57 910 candidates of both relations and
+// four shadings (session 28, joins61's N2; generated file
+// join_scorer_retrained_weights.cpp), used in place of the default net on
+// the drawings without screentone where JoinScorerOptions::retrained says.
+const JoinScorerNet& retrained_join_scorer();
 // The mean of the nets' probabilities (one net's alone when there is one):
 // a wrong candidate that one training seed happens to trust is refused
 // when the others do not. Throws hair25d::Error for no nets or a feature
@@ -120,6 +125,13 @@ struct JoinScorerOptions {
   double paint_ensemble_threshold = 0.9;
   double cel_ensemble_threshold = 0.965;
   double refuse_below = 0.0;
+  // Session 29: on the drawings without screentone, judge the band by
+  // retrained_join_scorer at retrained_threshold instead of the default net
+  // at `threshold` (screentone drawings keep the default net: there the
+  // retrained one's extra joins with the layering's relations were about
+  // half wrong, docs/completion-record.md "Session 28: the changes together").
+  bool retrained = false;
+  double retrained_threshold = 0.9;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
   // max_angle_deg are strand candidates for the scorer alone: costed as any
