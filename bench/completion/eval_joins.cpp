@@ -215,6 +215,13 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::wide_threshold");
   app.add_option("--scorer-refuse-below", options.join_scorer.refuse_below,
                  "JoinScorerOptions::refuse_below");
+  app.add_option("--scorer-veto-low", options.join_scorer.veto_low, "JoinScorerOptions::veto_low");
+  app.add_option("--scorer-veto-below", options.join_scorer.veto_below,
+                 "JoinScorerOptions::veto_below");
+  app.add_option("--scorer-rescue-high", options.join_scorer.rescue_high,
+                 "JoinScorerOptions::rescue_high");
+  app.add_option("--scorer-rescue-threshold", options.join_scorer.rescue_threshold,
+                 "JoinScorerOptions::rescue_threshold");
   bool bound = false;
   app.add_flag("--upper-bound", bound,
                "Also count the true pairs linked through regions lying above them (what any "

@@ -51,13 +51,15 @@ struct CropFiles {
 };
 
 void collect_case(const AnnotatedCase& c, const std::string& set, bool predicted, double band_high,
-                  double max_angle, std::FILE* out, int* rows, const CropFiles& crop_files = {}) {
+                  double rescue_high, double max_angle, std::FILE* out, int* rows,
+                  const CropFiles& crop_files = {}) {
   completion::Options o;
   o.inpaint_strands = false;
   o.inpaint_background = false;
   o.join_scorer.enabled = false;
   o.join_scorer.record = true;
   o.join_scorer.band_high = band_high;
+  o.join_scorer.rescue_high = rescue_high;
   o.join_scorer.max_angle_deg = max_angle;
   o.join_scorer.crop_size = crop_files.size;
   completion::Input in = completion::test::input_from_case(c);
@@ -191,6 +193,12 @@ int main(int argc, char** argv) {
   collect->add_option("--band-high", record_high, "Record candidates up to this hand cost");
   // The wide net's recipe (session 18) records up to 120° although the
   // model leaves those candidates out by default (join_scorer.h).
+  // Session 29: over band_high too, the rivals still counted up to it (as
+  // JoinScorerOptions::rescue_high judges them).
+  double rescue_high = completion::JoinScorerOptions{}.rescue_high;
+  collect->add_option(
+      "--rescue-high", rescue_high,
+      "Also record candidates up to this hand cost (rivals counted to --band-high)");
   double record_angle = 120.0;
   collect->add_option("--max-angle", record_angle,
                       "Record candidates whose tangents turn up to this (degrees)");
@@ -291,7 +299,7 @@ int main(int argc, char** argv) {
       if (!annotated.empty()) {
         for (const auto& folder : find_annotated_cases(annotated))
           collect_case(read_annotated_case(folder), set, relations == "predicted", record_high,
-                       record_angle, f, &rows, crop_files);
+                       rescue_high, record_angle, f, &rows, crop_files);
       } else {
         const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
                                             generator::Shading::kGradient,
@@ -311,8 +319,8 @@ int main(int argc, char** argv) {
             g.shading = kinds[s];
             AnnotatedCase c = generator::generate_case(g);
             c.name = std::string(names[s]) + "-" + std::to_string(case_seed);
-            collect_case(c, set, relations == "predicted", record_high, record_angle, f, &rows,
-                         crop_files);
+            collect_case(c, set, relations == "predicted", record_high, rescue_high, record_angle,
+                         f, &rows, crop_files);
           }
       }
       std::fclose(f);
@@ -383,6 +391,9 @@ int main(int argc, char** argv) {
           report("  committed net: " + path + " " + name, rows,
                  {wide_only ? completion::wide_join_scorer() : completion::default_join_scorer()},
                  low, high, limit, threshold);
+        if (baseline && !wide_only)
+          report("  retrained net: " + path + " " + name, rows,
+                 {completion::retrained_join_scorer()}, low, high, limit, threshold);
       }
     }
     if (!out.empty()) {

@@ -126,6 +126,14 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
   if (!(refuse_below >= 0 && refuse_below <= threshold))
     return fail("refuse_below = " + num(refuse_below) + "; must be in [0, threshold (" +
                 num(threshold) + ")]");
+  if (!(veto_low >= 0 && veto_low < 100))
+    return fail("veto_low = " + num(veto_low) + "; must be in [0, 100)");
+  if (!(veto_below >= 0 && veto_below < 1))
+    return fail("veto_below = " + num(veto_below) + "; must be in [0, 1)");
+  if (!(rescue_high >= 0 && rescue_high < 100))
+    return fail("rescue_high = " + num(rescue_high) + "; must be in [0, 100)");
+  if (!(rescue_threshold > 0 && rescue_threshold < 1))
+    return fail("rescue_threshold = " + num(rescue_threshold) + "; must be in (0, 1)");
   if (!(max_angle_deg >= 0 && max_angle_deg <= 180))
     return fail("max_angle_deg = " + num(max_angle_deg) + "; must be in [0, 180]");
   if (!(wide_band_high >= 0 && wide_band_high < 100))

@@ -380,6 +380,17 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                           o.max_join_cost + (ensemble_threshold - q) * (s.band_high - s.band_low));
       else if (p < s.refuse_below)
         j.cost = std::numeric_limits<double>::infinity();
+    } else if (s.enabled && retrained && !j.uneven_gradient && j.cost > s.band_high &&
+               j.cost <= s.rescue_high) {
+      // Over the band (session 29): the retrained net alone may join it.
+      p = join_probability(net, features[k]);
+      if (p >= s.rescue_threshold)
+        j.cost = o.max_join_cost + (s.rescue_threshold - p) * (s.band_high - s.band_low);
+    } else if (s.enabled && retrained && s.veto_below > 0 && j.cost >= s.veto_low &&
+               j.cost < s.band_low) {
+      // Under the limit (session 29): the retrained net may refuse it.
+      p = join_probability(net, features[k]);
+      if (p < s.veto_below) j.cost = std::numeric_limits<double>::infinity();
     }
     if (ctx.join_log == nullptr) continue;
     JoinCandidate c;
@@ -415,7 +426,14 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   // The learned scorer (join_scorer.h) sees candidates up to its band's top.
   const JoinScorerOptions& scorer = o.join_scorer;
   const bool scoring = scorer.enabled || ctx.join_log != nullptr;
-  const double limit = scoring ? std::max(o.max_join_cost, scorer.band_high) : o.max_join_cost;
+  // Session 29: up to rescue_high where the retrained net judges over the
+  // band (and where candidates are recorded, for its training).
+  const bool rescue =
+      scorer.rescue_high > scorer.band_high &&
+      ((scorer.enabled && scorer.retrained && !tones.screentone()) || ctx.join_log != nullptr);
+  const double limit = !scoring ? o.max_join_cost
+                       : rescue ? std::max(o.max_join_cost, scorer.rescue_high)
+                                : std::max(o.max_join_cost, scorer.band_high);
   const double wide_limit = std::max(limit, scorer.wide_band_high);
   std::vector<EdgePaint> paints(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) paints[i] = edge_paint(ctx, edges[i]);

@@ -473,6 +473,23 @@ TEST(JoinScorer, BadInputThrows) {
   o = {};
   o.join_scorer.refuse_below = 0.95;  // above the threshold
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
+  o = {};
+  o.join_scorer.veto_below = 1.0;  // would refuse every candidate
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("veto_below = 1"), std::string::npos) << why;
+  EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
+  o = {};
+  o.join_scorer.veto_low = -1.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("veto_low"), std::string::npos) << why;
+  o = {};
+  o.join_scorer.rescue_threshold = 0.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("rescue_threshold = 0"), std::string::npos) << why;
+  o = {};
+  o.join_scorer.rescue_high = 100.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("rescue_high"), std::string::npos) << why;
 }
 
 }  // namespace

@@ -132,6 +132,18 @@ struct JoinScorerOptions {
   // half wrong, docs/completion-record.md "Session 28: the changes together").
   bool retrained = false;
   double retrained_threshold = 0.9;
+  // Session 29 (joins63): the band's edges where the retrained net judges.
+  // A candidate under the limit with hand cost in [veto_low, band_low) is
+  // refused when the retrained net's p < veto_below (a refused wrong join
+  // frees its pieces for right ones in the greedy matching); 0: none is.
+  // A candidate with hand cost in (band_high, rescue_high] is joined when
+  // p >= rescue_threshold (ranked as the band's rescues; its rivals still
+  // counted up to band_high, as the nets were trained); rescue_high <=
+  // band_high: none is.
+  double veto_low = 2.4;
+  double veto_below = 0.0;
+  double rescue_high = 4.0;
+  double rescue_threshold = 0.95;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
   // max_angle_deg are strand candidates for the scorer alone: costed as any
