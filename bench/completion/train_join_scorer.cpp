@@ -59,7 +59,10 @@ void collect_case(const AnnotatedCase& c, const std::string& set, bool predicted
   o.join_scorer.enabled = false;
   o.join_scorer.record = true;
   o.join_scorer.band_high = band_high;
+  // Candidates over band_high are recorded with `retrained` (the scorer
+  // is off here, so it decides nothing).
   o.join_scorer.rescue_high = rescue_high;
+  o.join_scorer.retrained = rescue_high > band_high;
   o.join_scorer.max_angle_deg = max_angle;
   o.join_scorer.crop_size = crop_files.size;
   completion::Input in = completion::test::input_from_case(c);
@@ -195,10 +198,10 @@ int main(int argc, char** argv) {
   // model leaves those candidates out by default (join_scorer.h).
   // Session 29: over band_high too, the rivals still counted up to it (as
   // JoinScorerOptions::rescue_high judges them).
-  double rescue_high = completion::JoinScorerOptions{}.rescue_high;
-  collect->add_option(
-      "--rescue-high", rescue_high,
-      "Also record candidates up to this hand cost (rivals counted to --band-high)");
+  double rescue_high = 0.0;
+  collect->add_option("--rescue-high", rescue_high,
+                      "Also record candidates up to this hand cost (rivals counted to --band-high; "
+                      "default none)");
   double record_angle = 120.0;
   collect->add_option("--max-angle", record_angle,
                       "Record candidates whose tangents turn up to this (degrees)");

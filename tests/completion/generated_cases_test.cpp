@@ -349,6 +349,9 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
       o.join_scorer.veto_below = 0.999;
       o.join_scorer.rescue_high = 5.0;
       o.join_scorer.rescue_threshold = 0.05;
+    } else {
+      o.join_scorer.veto_below = 0.0;
+      o.join_scorer.rescue_high = o.join_scorer.band_high;
     }
     return complete_strands(test::input_from_case(c), o);
   };
