@@ -245,10 +245,30 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
   if (w <= 0 || h <= 0 || static_cast<double>(w) * h > 4e6) return 0.0;
   cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
   fill_polygon(mask, patch, origin, 255);
+  // A patch crosses few labels, each over many pixels: what the relations
+  // say of a label is asked once, not per pixel (the tree look-ups were
+  // most of the time of the wide candidates' rasters, session 29), and the
+  // pixels are counted per label before the maps are.
+  struct LabelCount {
+    int label;
+    bool above, back;  // above a or b; another region above no region
+    int pixels = 0, under = 0;
+  };
+  std::vector<LabelCount> seen;
+  std::size_t last = 0;
+  auto count_of = [&](int l) -> LabelCount& {
+    if (last < seen.size() && seen[last].label == l) return seen[last];
+    for (last = 0; last < seen.size(); ++last)
+      if (seen[last].label == l) return seen[last];
+    seen.push_back({l, l != 0 && (ctx.is_above(l, ra) || ctx.is_above(l, rb)),
+                    lowest && l != 0 && !front->count(l)});
+    return seen[last];
+  };
   int under = 0, total = 0;
-  for (int y = 0; y < h; ++y)
+  for (int y = 0; y < h; ++y) {
+    const std::uint8_t* row = mask.ptr<std::uint8_t>(y);
     for (int x = 0; x < w; ++x) {
-      if (!mask.at<std::uint8_t>(y, x)) continue;
+      if (!row[x]) continue;
       const int gx = x + origin.x, gy = y + origin.y;
       if (!ctx.labels.contains(gx, gy)) {
         ++total;
@@ -257,15 +277,20 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       const int l = ctx.labels.at(gx, gy);
       if (l == ra || l == rb) continue;
       ++total;
-      if (lowest && l != 0 && !front->count(l)) ++(*lowest)[l];
+      LabelCount& c = count_of(l);
+      ++c.pixels;
       // Across a cut of ink only, the drawn ink is what lies over the gap.
-      if ((l != 0 && (ctx.is_above(l, ra) || ctx.is_above(l, rb))) ||
-          (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ||
+      if (c.above || (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ||
           (ink && ctx.original->at(gx, gy) == 0)) {
         ++under;
-        if (under_by) ++(*under_by)[l];  // the face and the ink count as 0
+        ++c.under;  // the face and the ink count as 0
       }
     }
+  }
+  for (const LabelCount& c : seen) {
+    if (c.back) (*lowest)[c.label] += c.pixels;
+    if (under_by && c.under > 0) (*under_by)[c.label] += c.under;
+  }
   *hidden = total;
   return total > 0 ? static_cast<double>(under) / total : 1.0;
 }
