@@ -401,11 +401,17 @@ TEST(JoinScorer, WideNetDecidesCandidatesOverTheAngleLimit) {
   ASSERT_GT(p, 0.0);
   ASSERT_LT(p, 0.999);
   EXPECT_EQ(test::regions_with(r, 1).size(), p >= defaults.wide_threshold ? 2u : 1u);
-  // A threshold under its probability joins it (at most the limit's cost),
-  // one over it refuses it whatever the hand cost.
+  // A threshold under its probability joins it, one over it refuses it
+  // whatever the hand cost. Joined, it costs the limit less a hair (session
+  // 29): after every other candidate under the limit, the surest first.
   const Result taken = run(kWide, p / 2);
   ASSERT_NE(candidate(taken, 1, 2), nullptr);
-  EXPECT_LE(candidate(taken, 1, 2)->cost, 2.4);
+  const double limit = Options{}.max_join_cost;
+  EXPECT_LT(candidate(taken, 1, 2)->cost, limit);
+  EXPECT_GT(candidate(taken, 1, 2)->cost, limit - 1e-5);
+  const Result surer = run(kWide, p / 4);
+  ASSERT_NE(candidate(surer, 1, 2), nullptr);
+  EXPECT_LT(candidate(surer, 1, 2)->cost, candidate(taken, 1, 2)->cost);
   EXPECT_EQ(test::regions_with(taken, 1), (std::vector<int>{1, 2}));
   const Result refused = run(kWide, 0.999);
   ASSERT_NE(candidate(refused, 1, 2), nullptr);

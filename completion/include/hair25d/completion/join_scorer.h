@@ -38,7 +38,7 @@ double join_probability(const JoinScorerNet& net, const JoinFeatures& features);
 const JoinScorerNet& default_join_scorer();
 // Session 18: the net for the candidates over the angle limit
 // (JoinScorerOptions::max_angle_deg), trained on those alone (generated file
-// join_scorer_wide_weights.cpp).
+// join_scorer_wide_weights.cpp; retrained in session 29).
 const JoinScorerNet& wide_join_scorer();
 // Session 25: nets of several training seeds (generated file
 // join_scorer_ensemble_weights.cpp), averaged where
@@ -165,6 +165,15 @@ struct JoinScorerOptions {
   // 1596 (flat) and 1 of 1722 (mixed) and cost `hair25d model` of a 1024²
   // 40-strand drawing about 0.1 s (0.86 -> 0.96 s, medians of 5), its
   // candidates each taking the coverage raster. 120 turns it on.
+  // Session 29: the wide net retrained on 26 849 wide candidates of dev
+  // seeds 4000-5399 (both relations, four shadings; held-out AUC 0.937 ->
+  // 0.970 with the annotation's relations); a wide join is made after every
+  // other candidate under the limit, and never on screentone drawings; the
+  // coverage raster no longer looks the relations up per pixel, so 120
+  // costs `hair25d model` of that drawing ~20 ms (docs/completion-record.md
+  // "Session 29: wide candidates"). Still off: on dev it gains right pairs
+  // but on mixed 2000 with the layering's relations a right wide join
+  // merged strands the layering's equals had merged wrongly.
   double max_angle_deg = 0.0;
   double wide_band_high = 5.0;
   double wide_threshold = 0.95;
