@@ -7,9 +7,11 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <set>
 #include <string>
 
 #include "../../tests/completion/annotated_eval.h"
+#include "../../tests/completion/join_census.h"
 #include "case_relations.h"
 #include "eval_joins_overlay.h"
 #include "hair25d/core/annotation.h"
@@ -31,7 +33,60 @@ struct Total {
   // Joins refused by Options::strand_paint: right (the two regions are of
   // two strands) and wrong (of one).
   int refused_right = 0, refused_wrong = 0;
+  // --census: lost links (and their pairs) by class, then by the drawing's shading.
+  std::map<std::string, std::map<std::string, std::pair<int, int>>> census;
 };
+
+// --census: one line per lost link, counted in `total`.
+void print_census(const AnnotatedCase& c, const completion::Result& r, const std::string& name,
+                  const std::string& kind, Total* total) {
+  for (const completion::test::LostLink& l : completion::test::lost_links(c, r)) {
+    const std::string cls = completion::test::census_class(l);
+    std::pair<int, int>& n = total->census[cls][kind];
+    n.first += 1, n.second += l.pairs;
+    std::printf("%s: lost link %d-%d (strand %d, %d pairs): %s", name.c_str(), l.region_a,
+                l.region_b, l.strand, l.pairs, cls.c_str());
+    if (l.best)
+      std::printf(", cost %.2f, angle %.0f, p %.2f, cover %.2f", l.best->hand_cost,
+                  l.best->angle_deg, l.best->probability, l.best->cover);
+    if (l.best && l.best->cover >= 0 && l.best->cover < 1)
+      std::printf(" (holes: background %.2f, below %.2f, sibling %.2f, other %.2f)",
+                  l.best->hole_background, l.best->hole_below, l.best->hole_sibling,
+                  l.best->hole_other);
+    if (l.best && l.best->stage == completion::JoinStage::kAtomTaken)
+      std::printf(", taken by %d-%d", l.best->rival_a, l.best->rival_b);
+    std::printf("\n");
+  }
+}
+
+void print_census_table(const Total& total) {
+  std::set<std::string> kinds;
+  for (const auto& [cls, by] : total.census)
+    for (const auto& [kind, n] : by) kinds.insert(kind);
+  std::printf("census: lost links (pairs) by class");
+  for (const std::string& k : kinds) std::printf(" | %s", k.c_str());
+  std::printf(" | all\n");
+  std::map<std::string, std::pair<int, int>> column;
+  for (const auto& [cls, by] : total.census) {
+    std::printf("census: %s", cls.c_str());
+    std::pair<int, int> all{0, 0};
+    for (const std::string& k : kinds) {
+      const auto it = by.find(k);
+      const std::pair<int, int> n = it == by.end() ? std::pair{0, 0} : it->second;
+      std::printf(" | %d (%d)", n.first, n.second);
+      all.first += n.first, all.second += n.second;
+      column[k].first += n.first, column[k].second += n.second;
+    }
+    std::printf(" | %d (%d)\n", all.first, all.second);
+  }
+  std::printf("census: all");
+  std::pair<int, int> all{0, 0};
+  for (const std::string& k : kinds) {
+    std::printf(" | %d (%d)", column[k].first, column[k].second);
+    all.first += column[k].first, all.second += column[k].second;
+  }
+  std::printf(" | %d (%d)\n", all.first, all.second);
+}
 
 const char* relation_name(Relation r) {
   return r == Relation::kAbove ? "above" : r == Relation::kBelow ? "below" : "equal";
@@ -71,7 +126,7 @@ enum class Relations { kAnnotated, kPredicted, kJoint };
 
 void score(const AnnotatedCase& c, Relations relations, const completion::Options& options,
            const std::string& name, const std::string& overlay, bool bound, std::FILE* csv,
-           Total* total) {
+           const std::string& kind, Total* total) {
   completion::Input in = completion::test::input_from_case(c);
   if (relations != Relations::kAnnotated) {
     std::string error;
@@ -108,6 +163,7 @@ void score(const AnnotatedCase& c, Relations relations, const completion::Option
     total->bound.other_linked += b.other_linked;
   }
   const completion::test::PairScore s = completion::test::score_pairs(c, r);
+  if (options.trace_joins) print_census(c, r, name, kind, total);
   if (!r.paint_refusals.empty()) {
     std::map<int, int> strand;
     for (const AnnotatedRegion& reg : c.region_list) strand[reg.id] = reg.strand;
@@ -222,6 +278,10 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::rescue_high");
   app.add_option("--scorer-rescue-threshold", options.join_scorer.rescue_threshold,
                  "JoinScorerOptions::rescue_threshold");
+  app.add_flag("--census", options.trace_joins,
+               "Name the stage where each lost link of a true strand was stopped "
+               "(Options::trace_joins, tests/completion/join_census.h): a line per link and a "
+               "table by class and shading");
   bool bound = false;
   app.add_flag("--upper-bound", bound,
                "Also count the true pairs linked through regions lying above them (what any "
@@ -253,7 +313,7 @@ int main(int argc, char** argv) {
     if (!annotated.empty()) {
       for (const auto& folder : find_annotated_cases(annotated)) {
         const AnnotatedCase c = read_annotated_case(folder);
-        score(c, predicted, options, c.name, overlay, bound, csv, &total);
+        score(c, predicted, options, c.name, overlay, bound, csv, "annotated", &total);
       }
     } else {
       const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
@@ -270,8 +330,14 @@ int main(int argc, char** argv) {
                     : shading == "gradient"   ? kinds[2]
                     : shading == "screentone" ? kinds[3]
                                               : kinds[0];
+        const char* names[] = {"flat", "two-tone", "gradient", "screentone"};
+        const int kind = shading == "mixed"        ? k % 4
+                         : shading == "two-tone"   ? 1
+                         : shading == "gradient"   ? 2
+                         : shading == "screentone" ? 3
+                                                   : 0;
         score(generator::generate_case(g), predicted, options, "seed " + std::to_string(seed + k),
-              overlay, bound, csv, &total);
+              overlay, bound, csv, names[kind], &total);
       }
     }
   } catch (const std::exception& e) {
@@ -287,6 +353,7 @@ int main(int argc, char** argv) {
     std::printf("strand paint refusals: %d right, %d wrong\n", total.refused_right,
                 total.refused_wrong);
   if (bound) print_bound("all", total.bound);
+  if (options.trace_joins) print_census_table(total);
   if (csv) std::fclose(csv);
   return 0;
 }

@@ -215,6 +215,50 @@ const char* to_string(EdgeCase c) {
   return "unknown";
 }
 
+const char* to_string(JoinStage s) {
+  switch (s) {
+    case JoinStage::kKeptApart:
+      return "kept-apart";
+    case JoinStage::kInkFacing:
+      return "ink-facing";
+    case JoinStage::kColour:
+      return "colour";
+    case JoinStage::kGuessed:
+      return "guessed";
+    case JoinStage::kWidthRatio:
+      return "width-ratio";
+    case JoinStage::kCrossingChords:
+      return "crossing-chords";
+    case JoinStage::kInkAcross:
+      return "ink-across";
+    case JoinStage::kAngle:
+      return "angle";
+    case JoinStage::kOtherPaint:
+      return "other-paint";
+    case JoinStage::kHandCost:
+      return "hand-cost";
+    case JoinStage::kCover:
+      return "cover";
+    case JoinStage::kOtherBack:
+      return "other-back";
+    case JoinStage::kWideRefused:
+      return "wide-refused";
+    case JoinStage::kUnevenRefused:
+      return "uneven-refused";
+    case JoinStage::kBandRefused:
+      return "band-refused";
+    case JoinStage::kAtomTaken:
+      return "atom-taken";
+    case JoinStage::kTwoTones:
+      return "two-tones";
+    case JoinStage::kRefused:
+      return "refused";
+    case JoinStage::kChosen:
+      return "chosen";
+  }
+  return "unknown";
+}
+
 namespace {
 
 // Reads the relations: equal pairs and seams are united in `strands` (weak
@@ -310,6 +354,7 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   ctx.original = input.regions;
   ctx.options = &options;
   if (options.join_scorer.record) ctx.join_log = &result.join_candidates;
+  if (options.trace_joins) ctx.join_trace = &result.join_trace;
   ctx.labels =
       assign_outline_pixels(image, *input.regions, options.outline_reach, options.dark_luma);
   report(progress, "completion", 0.05, "regions");
@@ -391,6 +436,11 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
       ++next_id;
       candidates.push_back(std::move(e));
     }
+  if (options.trace_joins) {
+    std::set<int> with_edges;
+    for (const detail::Edge& e : candidates) with_edges.insert(e.region);
+    result.edge_regions.assign(with_edges.begin(), with_edges.end());
+  }
   report(progress, "completion", 0.2, "matching");
 
   // Case 1, then 2 and 3 for the edges left (§5.4).

@@ -54,6 +54,8 @@ struct Context {
   const Options* options = nullptr;
   // Strand-join candidates are recorded here when Options::join_scorer.record.
   std::vector<JoinCandidate>* join_log = nullptr;
+  // Every edge pair's stage is recorded here when Options::trace_joins.
+  std::vector<JoinTrace>* join_trace = nullptr;
 
   int label(int x, int y) const { return labels.contains(x, y) ? labels.at(x, y) : 0; }
   int label(const Vec2& p) const {
@@ -112,8 +114,10 @@ struct Join {
   // A join across the banks of an occluder (a wide piece cut by a strand
   // lying over it): bands under the occluder instead of one patch.
   std::vector<Polyline> bands;
-  bool behind_face = false;  // the patch also counts over the face (both pieces back hair)
-  int record = -1;           // index into Context::join_log, or −1
+  bool behind_face = false;   // the patch also counts over the face (both pieces back hair)
+  int record = -1;            // index into Context::join_log, or −1
+  int trace = -1;             // index into Context::join_trace, or −1
+  double probability = -1.0;  // the scorer's, −1 when not asked
   // Tangents over max_join_angle_deg: the scorer alone may join it.
   bool wide = false;
   // Off the gradient by windows of uneven slopes: the scorer alone may join

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "bank_crossings.h"
 #include "context.h"
@@ -237,7 +238,7 @@ Polyline join_patch(const Edge& a, const Edge& b) {
 double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const cv::Mat& face,
                 int* hidden, const std::set<int>* front = nullptr,
                 std::map<int, int>* lowest = nullptr, bool ink = false,
-                std::map<int, int>* under_by = nullptr) {
+                std::map<int, int>* under_by = nullptr, JoinTrace* trace = nullptr) {
   double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
   for (const Vec2& p : patch) {
     x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
@@ -277,6 +278,7 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       const int gx = x + origin.x, gy = y + origin.y;
       if (!ctx.labels.contains(gx, gy)) {
         ++total;
+        if (trace) trace->hole_background += 1;
         continue;
       }
       const int l = ctx.labels.at(gx, gy);
@@ -289,6 +291,19 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
           (ink && ctx.original->at(gx, gy) == 0)) {
         ++under;
         ++c.under;  // the face and the ink count as 0
+      } else if (trace) {
+        // Options::trace_joins: what the uncovered pixels are.
+        if (l == 0)
+          trace->hole_background += 1;
+        else if (ctx.is_above(ra, l) || ctx.is_above(rb, l))
+          trace->hole_below += 1;
+        else {
+          bool sibling = false;  // under a region lying above a piece
+          for (int r : {ra, rb})
+            if (const auto it = ctx.above.find(r); it != ctx.above.end())
+              for (int up : it->second) sibling = sibling || ctx.is_above(up, l);
+          (sibling ? trace->hole_sibling : trace->hole_other) += 1;
+        }
       }
     }
   }
@@ -297,6 +312,10 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
     if (under_by && c.under > 0) (*under_by)[c.label] += c.under;
   }
   *hidden = total;
+  if (trace && total > 0)
+    for (double* h :
+         {&trace->hole_background, &trace->hole_below, &trace->hole_sibling, &trace->hole_other})
+      *h /= total;
   return total > 0 ? static_cast<double>(under) / total : 1.0;
 }
 
@@ -427,6 +446,7 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       p = join_probability(net, features[k]);
       if (p < s.veto_below) j.cost = std::numeric_limits<double>::infinity();
     }
+    j.probability = p;
     if (ctx.join_log == nullptr) continue;
     JoinCandidate c;
     c.region_a = edges[j.edge_a].region;
@@ -521,12 +541,27 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       const Edge& a = edges[i];
       const Edge& b = edges[j];
       if (a.region == b.region) continue;
-      if (ctx.keeps_apart(a.region, b.region)) continue;
+      // Options::trace_joins: the pair's stage, set by the rule that drops it.
+      const int traced = ctx.join_trace ? static_cast<int>(ctx.join_trace->size()) : -1;
+      if (traced >= 0) ctx.join_trace->push_back({a.region, b.region});
+      const auto drop = [&](JoinStage stage) {
+        if (traced >= 0) (*ctx.join_trace)[traced].stage = stage;
+      };
+      if (ctx.keeps_apart(a.region, b.region)) {
+        drop(JoinStage::kKeptApart);
+        continue;
+      }
       // An ink edge joins only a region it faces across the ink.
       const bool ink = !a.ink.empty() || !b.ink.empty();
-      if (ink && !a.ink.count(b.region) && !b.ink.count(a.region)) continue;
+      if (ink && !a.ink.count(b.region) && !b.ink.count(a.region)) {
+        drop(JoinStage::kInkFacing);
+        continue;
+      }
       const double colour = (a.colour - b.colour).norm();
-      if (colour > o.max_colour_distance) continue;
+      if (colour > o.max_colour_distance) {
+        drop(JoinStage::kColour);
+        continue;
+      }
       BankJoin bank;
       if (a.atoms.size() == 1 && b.atoms.size() == 1 && !ink)
         bank = bank_join(crossings[i], crossings[j], a, b);
@@ -569,7 +604,17 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       // Over the angle limit but within the scorer's (JoinScorerOptions::max_angle_deg).
       const bool wide_angle =
           scoring && cut_pair && across && !strand_like && worst <= wide_max_angle;
-      if (!strand_like && !wide_angle && bank.share < kMinBankShare) continue;
+      if (traced >= 0) (*ctx.join_trace)[traced].angle_deg = worst * 180.0 / M_PI;
+      if (!strand_like && !wide_angle && bank.share < kMinBankShare) {
+        drop(a.guessed || b.guessed                              ? JoinStage::kGuessed
+             : !(wide > 0 && narrow / wide >= o.min_width_ratio) ? JoinStage::kWidthRatio
+             : !cut_pair                                         ? JoinStage::kCrossingChords
+             : !across                                           ? JoinStage::kInkAcross
+                                                                 : JoinStage::kAngle);
+        continue;
+      }
+      // Why the candidate is dropped if its cost ends over the limit.
+      JoinStage why = JoinStage::kHandCost;
       Join join;
       join.edge_a = static_cast<int>(i);
       join.edge_b = static_cast<int>(j);
@@ -586,6 +631,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                                 (front.count(a.region) > 0 || front.count(b.region) > 0)) ||
                                (step.off_gradient && !uneven) ||
                                (ink && step.flat && step.step > kMaxInkFlatStep);
+      if ((strand_like || wide_angle) && other_paint) why = JoinStage::kOtherPaint;
       if ((strand_like || wide_angle) && !other_paint) {
         // The hidden part keeps a strand's width: half-way along the joins its
         // width lies near the widths at the two cuts (criterion 3 of §5.1 seen
@@ -627,6 +673,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         const double tone_cost = tone_join_cost(tones, a.region, b.region);
         cost += tone_cost;
         if (uneven) cost = o.max_join_cost + kUnevenCostBase + kUnevenCostShare * cost;
+        if (traced >= 0) (*ctx.join_trace)[traced].hand_cost = cost;
         if (cost <= (wide_angle ? wide_limit : limit)) {  // before the costly coverage raster
           join.patch = join_patch(a, b);
           int hidden = 0;
@@ -634,10 +681,16 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           std::map<int, int> lowest, under_by;
           const double cover = coverage(
               ctx, join.patch, a.region, b.region, join.behind_face ? face : no_face, &hidden,
-              &front, join.behind_face ? &lowest : nullptr, ink, scoring ? &under_by : nullptr);
+              &front, join.behind_face ? &lowest : nullptr, ink, scoring ? &under_by : nullptr,
+              traced >= 0 ? &(*ctx.join_trace)[traced] : nullptr);
           const bool over_other_back =
               hidden > 0 &&
               other_back_share(a.region, b.region, lowest) / hidden > kMaxOtherBackShare;
+          if (traced >= 0) (*ctx.join_trace)[traced].cover = cover;
+          if (cover < o.min_join_coverage)
+            why = JoinStage::kCover;
+          else if (over_other_back)
+            why = JoinStage::kOtherBack;
           cost = cover < o.min_join_coverage || over_other_back
                      ? std::numeric_limits<double>::infinity()
                      : cost + 3.0 * (1.0 - cover);
@@ -684,8 +737,13 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       } else if (wide_angle && std::isfinite(cost)) {
         join.wide = true;
       }
-      if (cost > (join.wide ? wide_limit : limit)) continue;
+      if (cost > (join.wide ? wide_limit : limit)) {
+        drop(why);
+        continue;
+      }
       join.cost = cost;
+      join.trace = traced;
+      if (traced >= 0) (*ctx.join_trace)[traced].hand_cost = cost;
       join.uneven_gradient = uneven && join.bands.empty();
       candidates.push_back(std::move(join));
       terms_of.push_back(terms);
@@ -693,17 +751,41 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   if (scoring)
     score_candidates(ctx, edges, front, edge_count, terms_of, tones.screentone(),
                      shadow.squaredNorm() > 0, &candidates);
+  if (ctx.join_trace)
+    for (const Join& x : candidates) {
+      if (x.trace < 0) continue;
+      JoinTrace& t = (*ctx.join_trace)[x.trace];
+      t.probability = x.probability;
+      if (x.cost <= o.max_join_cost) continue;
+      t.stage = x.wide                                    ? JoinStage::kWideRefused
+                : x.uneven_gradient && x.probability >= 0 ? JoinStage::kUnevenRefused
+                : x.probability >= 0                      ? JoinStage::kBandRefused
+                                                          : JoinStage::kHandCost;
+    }
   // Greedy one-to-one: cheapest first, every edge joined at most once.
   std::erase_if(candidates, [&](const Join& x) { return x.cost > o.max_join_cost; });
   std::sort(candidates.begin(), candidates.end(),
             [](const Join& x, const Join& y) { return x.cost < y.cost; });
   // Edges may overlap (an atom and a merged edge holding it): an atom joins once.
   std::set<int> used;
+  std::map<int, std::pair<int, int>> taken_by;  // atom -> the regions of its join (traced)
   std::vector<Join> chosen;
   for (Join& j : candidates) {
     bool free = true;
     for (int e : {j.edge_a, j.edge_b})
       for (int atom : edges[e].atoms) free = free && !used.count(atom);
+    JoinTrace* t = j.trace >= 0 ? &(*ctx.join_trace)[j.trace] : nullptr;
+    if (t) {
+      t->stage = JoinStage::kAtomTaken;
+      for (int e : {j.edge_a, j.edge_b})
+        for (int atom : edges[e].atoms)
+          if (const auto it = taken_by.find(atom); it != taken_by.end() && t->rival_a == 0)
+            std::tie(t->rival_a, t->rival_b) = it->second;
+      if (free)
+        t->stage = two_tones_by_dots(tones, edges[j.edge_a].region, edges[j.edge_b].region)
+                       ? JoinStage::kTwoTones
+                       : JoinStage::kRefused;
+    }
     // Pieces of two tones by their dots are two strands whatever their
     // outlines say; refused here, not among the candidates, so that the
     // scorer still reads them as rivals (refused before scoring, dev
@@ -712,6 +794,12 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         !try_join(edges[j.edge_a].region, edges[j.edge_b].region))
       continue;
     for (int e : {j.edge_a, j.edge_b}) used.insert(edges[e].atoms.begin(), edges[e].atoms.end());
+    if (t) {
+      t->stage = JoinStage::kChosen;
+      for (int e : {j.edge_a, j.edge_b})
+        for (int atom : edges[e].atoms)
+          taken_by[atom] = {edges[j.edge_a].region, edges[j.edge_b].region};
+    }
     if (j.record >= 0) (*ctx.join_log)[j.record].chosen = true;
     chosen.push_back(std::move(j));
   }

@@ -64,6 +64,9 @@ struct Options {
   // options on, fresh flat 9100-9199 still lost precision, so they stay off
   // (docs/completion-record.md, "Session 28").
   bool strand_paint = true;
+  // Record why each case-1 edge pair was or was not joined
+  // (Result::join_trace), for the census of lost joins (eval_joins --census).
+  bool trace_joins = false;
 
   // Cases 2 and 3 (§5.2–5.4).
   ContourOptions contour;
@@ -104,6 +107,48 @@ struct EdgeReport {
   int hidden_pixels = 0;                       // pixels this edge added under the occluders
 };
 
+// How far a case-1 edge pair got in the matching (joins.cpp `match_edges`),
+// in the order its rules are applied: the first rule that refused it, or
+// the greedy matching's fate. Later stages are nearer to a join.
+enum class JoinStage {
+  kKeptApart,       // one region directly occludes the other
+  kInkFacing,       // an ink edge not facing the other region
+  kColour,          // colours further apart than max_colour_distance
+  kGuessed,         // an edge's tangents only guessed (a wide piece's side)
+  kWidthRatio,      // narrower / wider under min_width_ratio
+  kCrossingChords,  // the two cut chords cross
+  kInkAcross,       // across ink: too shallow or too far for a cut
+  kAngle,           // tangents over the angle limit (and the scorer's)
+  kOtherPaint,      // painted apart (flat step, off the gradient)
+  kHandCost,        // hand cost (with the cover's) over the limit
+  kCover,           // patch under the occluders below min_join_coverage
+  kOtherBack,       // behind the face across back hair of another paint
+  kWideRefused,     // over the angle limit, the wide scorer refused it
+  kUnevenRefused,   // uneven gradient, the scorer refused it
+  kBandRefused,     // in the scorer's band, the scorer refused it
+  kAtomTaken,       // an edge already joined by a cheaper candidate
+  kTwoTones,        // two tones by the dots (screentone)
+  kRefused,         // try_join: a firm order or the strand paint
+  kChosen,          // joined
+};
+const char* to_string(JoinStage s);
+
+// One case-1 edge pair (Options::trace_joins).
+struct JoinTrace {
+  int region_a = 0, region_b = 0;
+  JoinStage stage = JoinStage::kKeptApart;
+  double hand_cost = -1.0;       // −1 when not reached
+  double angle_deg = -1.0;       // the worst tangent angle to the chords, −1 when not reached
+  double probability = -1.0;     // the scorer's, −1 when not asked
+  double cover = -1.0;           // share of the patch under occluders, −1 when not measured
+  int rival_a = 0, rival_b = 0;  // kAtomTaken: the regions of the join that took the edge
+  // Shares of the patch (outside both pieces) under no occluder, by what
+  // lies there: the background (or outside the image), a region below a
+  // piece, a region under a region lying above a piece (a sibling of the
+  // pieces), any other region.
+  double hole_background = 0.0, hole_below = 0.0, hole_sibling = 0.0, hole_other = 0.0;
+};
+
 struct CompletedStrand {
   std::vector<int> regions;  // source region ids, sorted
   // Crop of the image: 0 outside, 1 visible (the strand's own pixels), 2 completed.
@@ -142,6 +187,10 @@ struct Result {
   std::vector<PaintRefusal> paint_refusals;
   InpaintResult strand_inpaint, background_inpaint;
   std::vector<JoinCandidate> join_candidates;  // with Options::join_scorer.record
+  // With Options::trace_joins: every case-1 edge pair of two regions, and
+  // the regions that have an occluding or ink edge (sorted).
+  std::vector<JoinTrace> join_trace;
+  std::vector<int> edge_regions;
   std::string summary;
 };
 
