@@ -434,16 +434,18 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                           o.max_join_cost + (ensemble_threshold - q) * (s.band_high - s.band_low));
       else if (p < s.refuse_below)
         j.cost = std::numeric_limits<double>::infinity();
-    } else if (s.enabled && retrained && !j.uneven_gradient && j.cost > s.band_high &&
+    } else if (s.enabled && !screentone && !j.uneven_gradient && j.cost > s.band_high &&
                j.cost <= s.rescue_high) {
-      // Over the band (session 29): the retrained net alone may join it.
-      p = join_probability(net, features[k]);
+      // Over the band (session 29): the retrained net alone may join it,
+      // whichever net judges the band.
+      p = join_probability(retrained_join_scorer(), features[k]);
       if (p >= s.rescue_threshold)
         j.cost = o.max_join_cost + (s.rescue_threshold - p) * (s.band_high - s.band_low);
-    } else if (s.enabled && retrained && s.veto_below > 0 && j.cost >= s.veto_low &&
+    } else if (s.enabled && !screentone && s.veto_below > 0 && j.cost >= s.veto_low &&
                j.cost < s.band_low) {
-      // Under the limit (session 29): the retrained net may refuse it.
-      p = join_probability(net, features[k]);
+      // Under the limit (session 29): the retrained net may refuse it,
+      // whichever net judges the band.
+      p = join_probability(retrained_join_scorer(), features[k]);
       if (p < s.veto_below) j.cost = std::numeric_limits<double>::infinity();
     }
     j.probability = p;
@@ -482,8 +484,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   const JoinScorerOptions& scorer = o.join_scorer;
   const bool scoring = scorer.enabled || ctx.join_log != nullptr;
   // Session 29: up to rescue_high where the retrained net judges over the
-  // band (and, with it, where candidates are recorded, for its training).
-  const bool rescue = scorer.rescue_high > scorer.band_high && scorer.retrained &&
+  // band (and where candidates are recorded, for its training).
+  const bool rescue = scorer.rescue_high > scorer.band_high &&
                       ((scorer.enabled && !tones.screentone()) || ctx.join_log != nullptr);
   const double limit = !scoring ? o.max_join_cost
                        : rescue ? std::max(o.max_join_cost, scorer.rescue_high)

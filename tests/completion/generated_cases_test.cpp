@@ -329,20 +329,21 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
   }
 }
 
-// Session 29: where the retrained net judges (drawings without screentone),
-// it refuses candidates under the limit with hand cost in [veto_low,
-// band_low) at p < veto_below, and joins candidates over the band up to
-// rescue_high at p >= rescue_threshold. With the bars set so that most
-// candidates fall on their side (veto_below 0.999, rescue_threshold 0.05),
-// a refused candidate is never chosen and a rescued one is ranked under the
-// limit; a screentone drawing keeps both edges as they were.
+// Session 29: on drawings without screentone the retrained net refuses
+// candidates under the limit with hand cost in [veto_low, band_low) at
+// p < veto_below, and joins candidates over the band up to rescue_high at
+// p >= rescue_threshold, whichever net judges the band (`retrained` or
+// not). With the bars set so that most candidates fall on their side
+// (veto_below 0.999, rescue_threshold 0.05), a refused candidate is never
+// chosen and a rescued one is ranked under the limit; a screentone drawing
+// keeps both edges as they were.
 TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
-  auto run = [](const AnnotatedCase& c, bool edges) {
+  auto run = [](const AnnotatedCase& c, bool edges, bool retrained) {
     Options o;
     o.inpaint_strands = false;
     o.inpaint_background = false;
     o.join_scorer.record = true;
-    o.join_scorer.retrained = true;
+    o.join_scorer.retrained = retrained;
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
     if (edges) {
       o.join_scorer.veto_low = 0.0;
@@ -362,54 +363,57 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
     const bool screentone = shading == generator::Shading::kScreentone;
     SCOPED_TRACE(testing::Message() << "screentone " << screentone);
     const AnnotatedCase c = generated(800, 640, 20, 2004, shading);
-    const Result off = run(c, false), on = run(c, true);
-    // Off, no candidate under the band is asked, none over it recorded.
-    int chosen_low = 0;
-    for (const JoinCandidate& j : off.join_candidates) {
-      EXPECT_LE(j.hand_cost, s.band_high);
-      if (j.hand_cost < s.band_low) EXPECT_EQ(j.probability, -1.0);
-      chosen_low += j.chosen && j.hand_cost >= 0 && j.hand_cost < s.band_low;
-    }
-    EXPECT_GT(chosen_low, 0);
-    int vetoed = 0, over = 0, rescued = 0;
-    for (const JoinCandidate& j : on.join_candidates) {
-      if (j.hand_cost >= 0 && j.hand_cost < s.band_low) {
-        if (screentone) {
-          EXPECT_EQ(j.probability, -1.0);
-          continue;
-        }
-        EXPECT_DOUBLE_EQ(j.probability, join_probability(retrained_join_scorer(), j.features));
-        if (j.probability < 0.999) {
-          EXPECT_TRUE(std::isinf(j.cost));
-          EXPECT_FALSE(j.chosen);
-          ++vetoed;
-        } else {
-          EXPECT_EQ(j.cost, j.hand_cost);
-        }
-      } else if (j.hand_cost > s.band_high) {
-        EXPECT_LE(j.hand_cost, 5.0);
-        ++over;
-        if (screentone || j.probability < 0) {
-          EXPECT_EQ(j.probability, -1.0);
-          EXPECT_EQ(j.cost, j.hand_cost);
-          continue;
-        }
-        EXPECT_DOUBLE_EQ(j.probability, join_probability(retrained_join_scorer(), j.features));
-        if (j.probability >= t) {
-          EXPECT_DOUBLE_EQ(j.cost, limit + (t - j.probability) * (s.band_high - s.band_low));
-          ++rescued;
-        } else {
-          EXPECT_EQ(j.cost, j.hand_cost);
+    for (const bool retrained : {false, true}) {
+      SCOPED_TRACE(testing::Message() << "retrained " << retrained);
+      const Result off = run(c, false, retrained), on = run(c, true, retrained);
+      // Off, no candidate under the band is asked, none over it recorded.
+      int chosen_low = 0;
+      for (const JoinCandidate& j : off.join_candidates) {
+        EXPECT_LE(j.hand_cost, s.band_high);
+        if (j.hand_cost < s.band_low) EXPECT_EQ(j.probability, -1.0);
+        chosen_low += j.chosen && j.hand_cost >= 0 && j.hand_cost < s.band_low;
+      }
+      EXPECT_GT(chosen_low, 0);
+      int vetoed = 0, over = 0, rescued = 0;
+      for (const JoinCandidate& j : on.join_candidates) {
+        if (j.hand_cost >= 0 && j.hand_cost < s.band_low) {
+          if (screentone) {
+            EXPECT_EQ(j.probability, -1.0);
+            continue;
+          }
+          EXPECT_DOUBLE_EQ(j.probability, join_probability(retrained_join_scorer(), j.features));
+          if (j.probability < 0.999) {
+            EXPECT_TRUE(std::isinf(j.cost));
+            EXPECT_FALSE(j.chosen);
+            ++vetoed;
+          } else {
+            EXPECT_EQ(j.cost, j.hand_cost);
+          }
+        } else if (j.hand_cost > s.band_high) {
+          EXPECT_LE(j.hand_cost, 5.0);
+          ++over;
+          if (screentone || j.probability < 0) {
+            EXPECT_EQ(j.probability, -1.0);
+            EXPECT_EQ(j.cost, j.hand_cost);
+            continue;
+          }
+          EXPECT_DOUBLE_EQ(j.probability, join_probability(retrained_join_scorer(), j.features));
+          if (j.probability >= t) {
+            EXPECT_DOUBLE_EQ(j.cost, limit + (t - j.probability) * (s.band_high - s.band_low));
+            ++rescued;
+          } else {
+            EXPECT_EQ(j.cost, j.hand_cost);
+          }
         }
       }
-    }
-    if (screentone) {
-      EXPECT_EQ(vetoed, 0);
-      EXPECT_EQ(rescued, 0);
-    } else {
-      EXPECT_GT(vetoed, 0);
-      EXPECT_GT(over, 0);
-      EXPECT_GT(rescued, 0);
+      if (screentone) {
+        EXPECT_EQ(vetoed, 0);
+        EXPECT_EQ(rescued, 0);
+      } else {
+        EXPECT_GT(vetoed, 0);
+        EXPECT_GT(over, 0);
+        EXPECT_GT(rescued, 0);
+      }
     }
   }
 }

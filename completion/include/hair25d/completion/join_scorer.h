@@ -132,23 +132,25 @@ struct JoinScorerOptions {
   // half wrong, docs/completion-record.md "Session 28: the changes together").
   bool retrained = false;
   double retrained_threshold = 0.9;
-  // Session 29 (joins63): the band's edges where the retrained net judges
-  // (with `retrained`, on drawings without screentone; else inert).
+  // Session 29 (joins63): the retrained net judges the band's edges on the
+  // drawings without screentone, whichever net judges the band (`retrained`
+  // or the default one).
   // A candidate under the limit with hand cost in [veto_low, band_low) is
   // refused when the retrained net's p < veto_below (a refused wrong join
   // frees its pieces for right ones in the greedy matching); 0: none is.
   // A candidate with hand cost in (band_high, rescue_high] is joined when
   // p >= rescue_threshold (ranked as the band's rescues; its rivals still
   // counted up to band_high, as the nets were trained); rescue_high <=
-  // band_high: none is. With `record` and `retrained`, candidates up to
-  // rescue_high are recorded on every drawing. Held out (docs/completion-record.md
+  // band_high: none is. With `record`, candidates up to rescue_high are
+  // recorded on every drawing. Held out (docs/completion-record.md
   // "Session 29: the scorer's band"), the retrained net's AUC is 0.93 on
   // candidates of hand cost 1.4-2.4 and 0.97-0.98 on 4.0-5.0. With
   // `retrained`, veto 1.4 / 0.2 and rescue 5.0 / 0.97 raised precision on
-  // all ten generated dev sets (wrong pairs 541 -> 461, right 12411 ->
-  // 12446) and on the eight fresh ones (9400, 9500; wrong 460 -> 380,
-  // right 10613 -> 10636); the six kept their pairs with the annotation's
-  // relations and lost 1 right and 3 wrong ones with the layering's.
+  // all ten generated dev sets and the eight fresh ones (9400, 9500) but
+  // `retrained` itself lost precision on the lead's held flat set with the
+  // layering's relations. With the default net judging the band (the
+  // lead, "Session 29: the band's edges with the committed net") they raised
+  // precision on every dev, fresh and held set; on by default.
   double veto_low = 1.4;
   double veto_below = 0.2;
   double rescue_high = 5.0;
