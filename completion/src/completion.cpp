@@ -247,6 +247,8 @@ const char* to_string(JoinStage s) {
       return "uneven-refused";
     case JoinStage::kBandRefused:
       return "band-refused";
+    case JoinStage::kVetoed:
+      return "vetoed";
     case JoinStage::kAtomTaken:
       return "atom-taken";
     case JoinStage::kTwoTones:

@@ -320,10 +320,11 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
         }
         EXPECT_GT(asked, 0);
         // The low threshold rescues some candidate over the limit, the high none.
-        if (t < 0.5)
+        if (t < 0.5) {
           EXPECT_GT(rescued, 0);
-        else
+        } else {
           EXPECT_EQ(rescued, 0);
+        }
       }
     }
   }
@@ -343,6 +344,7 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
     o.inpaint_strands = false;
     o.inpaint_background = false;
     o.join_scorer.record = true;
+    o.trace_joins = true;
     o.join_scorer.retrained = retrained;
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
     if (edges) {
@@ -370,7 +372,9 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
       int chosen_low = 0;
       for (const JoinCandidate& j : off.join_candidates) {
         EXPECT_LE(j.hand_cost, s.band_high);
-        if (j.hand_cost < s.band_low) EXPECT_EQ(j.probability, -1.0);
+        if (j.hand_cost < s.band_low) {
+          EXPECT_EQ(j.probability, -1.0);
+        }
         chosen_low += j.chosen && j.hand_cost >= 0 && j.hand_cost < s.band_low;
       }
       EXPECT_GT(chosen_low, 0);
@@ -406,6 +410,17 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
           }
         }
       }
+      // The trace (eval_joins --census) names a vetoed pair's stage.
+      int traced_vetoes = 0;
+      for (const JoinTrace& x : on.join_trace) {
+        if (x.stage != JoinStage::kVetoed) continue;
+        ++traced_vetoes;
+        EXPECT_LT(x.hand_cost, s.band_low);
+        EXPECT_GE(x.probability, 0.0);
+        EXPECT_LT(x.probability, 0.999);
+      }
+      for (const JoinTrace& x : off.join_trace) EXPECT_NE(x.stage, JoinStage::kVetoed);
+      EXPECT_EQ(traced_vetoes > 0, !screentone);
       if (screentone) {
         EXPECT_EQ(vetoed, 0);
         EXPECT_EQ(rescued, 0);

@@ -63,13 +63,15 @@ TEST(JoinCensus, TracingChangesNothingAndLostLinksCoverEveryMissedPair) {
         EXPECT_EQ(strand_of.at(t.region_a), strand_of.at(t.region_b))
             << "seed " << seed << ": " << t.region_a << "-" << t.region_b;
       }
-      if (t.stage == JoinStage::kKeptApart)
+      if (t.stage == JoinStage::kKeptApart) {
         EXPECT_TRUE(ordered.count(std::minmax(t.region_a, t.region_b)))
             << "seed " << seed << ": " << t.region_a << "-" << t.region_b;
+      }
       // Only pairs that reached the cover test carry its holes, within it.
-      if (t.cover >= 0)
+      if (t.cover >= 0) {
         EXPECT_NEAR(t.cover + t.hole_background + t.hole_below + t.hole_sibling + t.hole_other, 1.0,
                     1e-9);
+      }
     }
     EXPECT_GT(chosen, 0);
 
@@ -79,7 +81,9 @@ TEST(JoinCensus, TracingChangesNothingAndLostLinksCoverEveryMissedPair) {
       lost_pairs += l.pairs;
       ++links;
       EXPECT_GT(l.pairs, 0);
-      if (l.best) EXPECT_NE(l.best->stage, JoinStage::kChosen);
+      if (l.best) {
+        EXPECT_NE(l.best->stage, JoinStage::kChosen);
+      }
       EXPECT_FALSE(test::census_class(l).empty());
     }
     EXPECT_EQ(lost_pairs, score.truth - score.correct) << "seed " << seed;

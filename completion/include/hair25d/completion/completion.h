@@ -126,6 +126,7 @@ enum class JoinStage {
   kWideRefused,     // over the angle limit, the wide scorer refused it
   kUnevenRefused,   // uneven gradient, the scorer refused it
   kBandRefused,     // in the scorer's band, the scorer refused it
+  kVetoed,          // under the cost limit, the retrained net refused it (veto_below)
   kAtomTaken,       // an edge already joined by a cheaper candidate
   kTwoTones,        // two tones by the dots (screentone)
   kRefused,         // try_join: a firm order or the strand paint

@@ -1,0 +1,162 @@
+#include "join_scoring.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+
+#include "bank_crossings.h"
+#include "hair25d/completion/join_scorer.h"
+#include "join_crop.h"
+
+namespace hair25d::completion::detail {
+namespace {
+
+// Wide candidates the wide net accepts cost max_join_cost less this times
+// how far p lies over JoinScorerOptions::wide_threshold: last of all
+// candidates under the limit, the surest first.
+constexpr double kWideRankSpan = 1e-6;
+
+}  // namespace
+
+void add_scorer_terms(RegionTones& tones, int ra, int rb, const std::map<int, int>& under_by,
+                      JoinTerms* t) {
+  if (tones.screentone()) {
+    const RegionTones::Match m = tones.match(ra, rb);
+    t->tone_match = m == RegionTones::Match::kSame ? 1 : m == RegionTones::Match::kOther ? -1 : 0;
+    const double step = tones.mass_step(ra, rb);
+    t->mass_step = std::isfinite(step) ? step : -1.0;
+    t->dark_step = std::abs(tones.tone(ra) - tones.tone(rb));
+  }
+  int total = 0, top = 0;
+  for (const auto& [l, n] : under_by) total += n, top = std::max(top, n);
+  t->top_occluder = total > 0 ? static_cast<double>(top) / total : 1.0;
+  t->patch_occluders = 0;
+  for (const auto& [l, n] : under_by) t->patch_occluders += 10 * n >= total;
+}
+
+void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
+                      const std::set<int>& front, const std::map<int, int>& edge_count,
+                      const std::vector<std::optional<JoinTerms>>& terms_of, bool screentone,
+                      bool cel, std::vector<Join>* candidates) {
+  const Options& o = *ctx.options;
+  const JoinScorerOptions& s = o.join_scorer;
+  const bool retrained = s.retrained && !screentone;
+  const double threshold = screentone  ? s.screentone_threshold
+                           : retrained ? s.retrained_threshold
+                                       : s.threshold;
+  std::vector<int> which;
+  std::vector<double> costs;
+  std::vector<std::pair<int, int>> ends;
+  std::vector<JoinFeatures> features;
+  for (std::size_t i = 0; i < candidates->size(); ++i) {
+    if (!terms_of[i]) continue;
+    const Join& j = (*candidates)[i];
+    which.push_back(static_cast<int>(i));
+    costs.push_back(j.cost);
+    ends.emplace_back(j.edge_a, j.edge_b);
+    features.push_back(
+        join_features(ctx, edges[j.edge_a], edges[j.edge_b], *terms_of[i], front, edge_count));
+  }
+  // The rivals of a candidate within the angle limit are the others within
+  // it (as the default net was trained); a wide candidate's are all up to
+  // wide_band_high (as the wide net was).
+  std::vector<double> inner = costs;
+  bool any_wide = false;
+  for (std::size_t k = 0; k < which.size(); ++k)
+    if ((*candidates)[which[k]].wide)
+      inner[k] = std::numeric_limits<double>::infinity(), any_wide = true;
+  if (any_wide) {
+    std::vector<JoinFeatures> all = features;
+    add_rival_features(costs, ends, std::max(s.band_high, s.wide_band_high), &all);
+    for (std::size_t k = 0; k < which.size(); ++k)
+      if ((*candidates)[which[k]].wide) features[k] = all[k];
+  }
+  {
+    std::vector<JoinFeatures> own = features;
+    add_rival_features(inner, ends, s.band_high, &own);
+    for (std::size_t k = 0; k < which.size(); ++k)
+      if (!(*candidates)[which[k]].wide) features[k] = own[k];
+  }
+  const JoinScorerNet& net = retrained ? retrained_join_scorer() : default_join_scorer();
+  // Session 25: the ensemble may rescue what the default net refuses.
+  using Ensemble = JoinScorerOptions::Ensemble;
+  // Session 26: with kEach, the paint ensemble on the drawings without
+  // screentone (trained on theirs), with a higher bar on a cel drawing
+  // (`cel`: a shadow ratio), where a right rescue joined to a piece
+  // already joined wrongly cost dev two-tone 2084 precision at 0.95.
+  const bool screentone_nets =
+      s.ensemble == Ensemble::kAll ||
+      ((s.ensemble == Ensemble::kScreentone || s.ensemble == Ensemble::kEach) && screentone);
+  const bool paint_nets = s.ensemble == Ensemble::kEach && !screentone;
+  const std::span<const JoinScorerNet> ensemble = screentone_nets ? ensemble_join_scorers()
+                                                  : paint_nets    ? paint_ensemble_join_scorers()
+                                                               : std::span<const JoinScorerNet>{};
+  const double ensemble_threshold = !paint_nets ? s.ensemble_threshold
+                                    : cel       ? s.cel_ensemble_threshold
+                                                : s.paint_ensemble_threshold;
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    Join& j = (*candidates)[which[k]];
+    double p = -1.0;
+    if (j.wide) {
+      // Over the angle limit: the scorer alone joins it.
+      // Session 29: joined after every other candidate under the limit
+      // (ranked by p among themselves), so that it only takes edges no
+      // other join wants: ranked with the band's rescues, a right wide join
+      // took the edge of another right join (dev two-tone 2077).
+      // Never on screentone drawings (match_edges).
+      if (s.enabled) p = join_probability(wide_join_scorer(), features[k]);
+      j.cost = s.enabled && !screentone && p >= s.wide_threshold
+                   ? o.max_join_cost - kWideRankSpan * (p - s.wide_threshold)
+                   : std::numeric_limits<double>::infinity();
+    } else if (s.enabled && j.cost >= s.band_low && j.cost <= s.band_high) {
+      p = join_probability(net, features[k]);
+      // The ensemble's mean, asked only for what the default net refuses;
+      // the paint nets only for pieces compared as flat paint (session 26:
+      // on dev gradient 2000 their rescues at 0.9 or 0.95 added 2 right
+      // pairs and 1 wrong one with the annotation's relations, none with
+      // the layering's).
+      const bool ask =
+          p < threshold && !ensemble.empty() && (!paint_nets || terms_of[which[k]]->flat_paint);
+      const double q = ask ? join_probability(ensemble, features[k]) : 0.0;
+      if (j.uneven_gradient) {
+        if (p >= kUnevenThreshold)
+          j.cost = o.max_join_cost + (kUnevenThreshold - p) * (s.band_high - s.band_low);
+      } else if (p >= threshold)
+        j.cost = std::min(j.cost, o.max_join_cost + (threshold - p) * (s.band_high - s.band_low));
+      else if (q >= ensemble_threshold)
+        j.cost = std::min(j.cost,
+                          o.max_join_cost + (ensemble_threshold - q) * (s.band_high - s.band_low));
+      else if (p < s.refuse_below)
+        j.cost = std::numeric_limits<double>::infinity();
+    } else if (s.enabled && !screentone && !j.uneven_gradient && j.cost > s.band_high &&
+               j.cost <= s.rescue_high) {
+      // Over the band (session 29): the retrained net alone may join it,
+      // whichever net judges the band.
+      p = join_probability(retrained_join_scorer(), features[k]);
+      if (p >= s.rescue_threshold)
+        j.cost = o.max_join_cost + (s.rescue_threshold - p) * (s.band_high - s.band_low);
+    } else if (s.enabled && !screentone && s.veto_below > 0 && j.cost >= s.veto_low &&
+               j.cost < s.band_low) {
+      // Under the limit (session 29): the retrained net may refuse it,
+      // whichever net judges the band.
+      p = join_probability(retrained_join_scorer(), features[k]);
+      if (p < s.veto_below) j.cost = std::numeric_limits<double>::infinity();
+    }
+    j.probability = p;
+    if (ctx.join_log == nullptr) continue;
+    JoinCandidate c;
+    c.region_a = edges[j.edge_a].region;
+    c.region_b = edges[j.edge_b].region;
+    c.hand_cost = costs[k];
+    c.cost = j.cost;
+    c.probability = p;
+    c.features = features[k];
+    if (s.crop_size > 0)
+      c.crop = join_crop(ctx, edges[j.edge_a], edges[j.edge_b], j.patch, s.crop_size);
+    j.record = static_cast<int>(ctx.join_log->size());
+    ctx.join_log->push_back(c);
+  }
+}
+
+}  // namespace hair25d::completion::detail

@@ -1,0 +1,35 @@
+// The learned scorer's part of the strand-join matching (joins.cpp): the
+// terms it reads beyond the hand cost's, and its judgement of the
+// candidates (join_scorer.h says when and how).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "context.h"
+#include "join_features.h"
+
+namespace hair25d::completion::detail {
+
+// An uneven-gradient candidate (joins.cpp, "Uneven gradient") joins when
+// the scorer's probability reaches this.
+inline constexpr double kUnevenThreshold = 0.2;
+
+// The scorer's inputs of session 17 (join_features.h): the dots' tone match
+// and steps on a screentone drawing, and how the covered part of the patch
+// (`under_by`: pixels per occluder) falls to its occluders.
+void add_scorer_terms(RegionTones& tones, int ra, int rb, const std::map<int, int>& under_by,
+                      JoinTerms* t);
+
+// The learned scorer decides the strand joins whose hand cost lies in its
+// band, and the retrained net the band's edges (join_scorer.h): the
+// candidates' costs are set from the nets' probabilities; every strand
+// candidate is recorded when ctx.join_log is set.
+void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
+                      const std::set<int>& front, const std::map<int, int>& edge_count,
+                      const std::vector<std::optional<JoinTerms>>& terms_of, bool screentone,
+                      bool cel, std::vector<Join>* candidates);
+
+}  // namespace hair25d::completion::detail
