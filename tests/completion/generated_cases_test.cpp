@@ -12,25 +12,13 @@
 #include <vector>
 
 #include "annotated_eval.h"
+#include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/generator/generator.h"
 
 namespace hair25d::completion {
 namespace {
-
-// A generated drawing without strand masks (the joins are scored on pairs).
-AnnotatedCase generated(int width, int height, int strands, std::uint64_t seed,
-                        generator::Shading shading) {
-  generator::Options g;
-  g.width = width;
-  g.height = height;
-  g.strand_count = strands;
-  g.seed = seed;
-  g.shading = shading;
-  g.strand_masks = false;
-  return generator::generate_case(g);
-}
 
 // The generator's strand of every region of `c`.
 std::map<int, int> true_strands(const AnnotatedCase& c) {
@@ -53,8 +41,8 @@ std::vector<int> completed_strand_of(const AnnotatedCase& c, int region) {
 
 TEST(GeneratedCases, CompletedPixelsLieUnderOccludersAndRegionsAreKept) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
-    const AnnotatedCase c = generated(
-        600, 440, 14, seed, seed == 2 ? generator::Shading::kTwoTone : generator::Shading::kFlat);
+    const AnnotatedCase c = test::generated_case(
+        seed, seed == 2 ? generator::Shading::kTwoTone : generator::Shading::kFlat, 600, 440, 14);
     const Input in = test::input_from_case(c);
     Options o;
     o.inpaint_background = false;
@@ -128,7 +116,7 @@ test::PairScore score_generated(std::initializer_list<generator::Shading> shadin
   test::PairScore total;
   for (generator::Shading shading : shadings)
     for (std::uint64_t seed = first_seed; seed <= last_seed; ++seed) {
-      const AnnotatedCase c = generated(800, 640, 20, seed, shading);
+      const AnnotatedCase c = test::generated_case(seed, shading);
       Options o;
       o.face_joins = face_joins;
       o.inpaint_strands = false;
@@ -227,9 +215,9 @@ TEST(GeneratedCases, ScreentoneTailIsNoBackHair) {
 // result is that of one worker, growing every edge and then assembling.
 TEST(GeneratedCases, TwoWorkersGiveTheResultOfOne) {
   for (std::uint64_t seed : {4u, 5u}) {
-    const AnnotatedCase c =
-        generated(560, 420, 16, seed,
-                  seed == 4 ? generator::Shading::kFlat : generator::Shading::kScreentone);
+    const AnnotatedCase c = test::generated_case(
+        seed, seed == 4 ? generator::Shading::kFlat : generator::Shading::kScreentone, 560, 420,
+        16);
     const Input in = test::input_from_case(c);
     Options one;
     one.threads = 1;
@@ -295,7 +283,7 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
   for (const generator::Shading shading :
        {generator::Shading::kScreentone, generator::Shading::kFlat}) {
     const bool screentone = shading == generator::Shading::kScreentone;
-    const AnnotatedCase c = generated(800, 640, 20, 2004, shading);
+    const AnnotatedCase c = test::generated_case(2004, shading);
     for (const bool retrained : {false, true}) {
       const JoinScorerNet& net =
           retrained && !screentone ? retrained_join_scorer() : default_join_scorer();
@@ -364,7 +352,7 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
        {generator::Shading::kFlat, generator::Shading::kScreentone}) {
     const bool screentone = shading == generator::Shading::kScreentone;
     SCOPED_TRACE(testing::Message() << "screentone " << screentone);
-    const AnnotatedCase c = generated(800, 640, 20, 2004, shading);
+    const AnnotatedCase c = test::generated_case(2004, shading);
     for (const bool retrained : {false, true}) {
       SCOPED_TRACE(testing::Message() << "retrained " << retrained);
       const Result off = run(c, false, retrained), on = run(c, true, retrained);
@@ -440,7 +428,7 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
 // 16's axis, were joined (axis cosines 0.52 and 0.44); each keeps its own
 // strand.
 TEST(GeneratedCases, ScreentoneStrandsSideBySideAreNotJoinedAcrossAPiece) {
-  const AnnotatedCase c = generated(800, 640, 20, 2004, generator::Shading::kScreentone);
+  const AnnotatedCase c = test::generated_case(2004, generator::Shading::kScreentone);
   const std::map<int, int> truth = true_strands(c);
   ASSERT_NE(truth.at(7), truth.at(16));
   const std::vector<int> with = completed_strand_of(c, 7);
@@ -458,7 +446,7 @@ TEST(GeneratedCases, ScreentoneStrandsSideBySideAreNotJoinedAcrossAPiece) {
 TEST(GeneratedCases, ScreentonePiecesOfTwoTonesAreNotJoined) {
   for (const auto& [seed, a, b] : {std::tuple{2046u, 2, 14}, std::tuple{4079u, 1, 9}}) {
     SCOPED_TRACE(seed);
-    const AnnotatedCase c = generated(800, 640, 20, seed, generator::Shading::kScreentone);
+    const AnnotatedCase c = test::generated_case(seed, generator::Shading::kScreentone);
     const std::map<int, int> truth = true_strands(c);
     ASSERT_NE(truth.at(a), truth.at(b));
     const std::vector<int> with = completed_strand_of(c, a);

@@ -8,23 +8,13 @@
 #include <set>
 
 #include "annotated_eval.h"
+#include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/generator/generator.h"
 #include "join_census.h"
 
 namespace hair25d::completion {
 namespace {
-
-AnnotatedCase generated(std::uint64_t seed, generator::Shading shading) {
-  generator::Options g;
-  g.width = 560;
-  g.height = 420;
-  g.strand_count = 14;
-  g.seed = seed;
-  g.shading = shading;
-  g.strand_masks = false;
-  return generator::generate_case(g);
-}
 
 Options plain() {
   Options o;
@@ -36,8 +26,8 @@ Options plain() {
 TEST(JoinCensus, TracingChangesNothingAndLostLinksCoverEveryMissedPair) {
   int links = 0;
   for (std::uint64_t seed : {3u, 6u}) {
-    const AnnotatedCase c =
-        generated(seed, seed == 3 ? generator::Shading::kFlat : generator::Shading::kTwoTone);
+    const AnnotatedCase c = test::generated_case(
+        seed, seed == 3 ? generator::Shading::kFlat : generator::Shading::kTwoTone, 560, 420, 14);
     const Input in = test::input_from_case(c);
     const Result untraced = complete_strands(in, plain());
     Options o = plain();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "annotated_eval.h"
+#include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/core/error.h"
@@ -60,17 +61,6 @@ TEST(JoinScorerEnsemble, PaintWeightsFileIsTheEnsemblePrinted) {
             printed);
 }
 
-AnnotatedCase generated(std::uint64_t seed, generator::Shading shading) {
-  generator::Options g;
-  g.width = 800;
-  g.height = 640;
-  g.strand_count = 20;
-  g.seed = seed;
-  g.shading = shading;
-  g.strand_masks = false;
-  return generator::generate_case(g);
-}
-
 // With the default net's threshold out of reach (0.99) and the ensembles'
 // low (screentone 0.05, paint 0.06, cel 0.07), a band candidate over the
 // limit is rescued exactly when the mean of the drawing's ensemble reaches
@@ -90,7 +80,7 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
         generator::Shading::kGradient}) {
     const bool screentone = shading == generator::Shading::kScreentone;
     SCOPED_TRACE(static_cast<int>(shading));
-    const AnnotatedCase c = generated(2004, shading);
+    const AnnotatedCase c = test::generated_case(2004, shading);
     for (const auto ensemble : {Ensemble::kScreentone, Ensemble::kNone, Ensemble::kEach}) {
       SCOPED_TRACE(static_cast<int>(ensemble));
       Options o;

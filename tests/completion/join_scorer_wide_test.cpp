@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "annotated_eval.h"
+#include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/generator/generator.h"
@@ -45,18 +46,6 @@ double auc(const std::vector<double>& score, const std::vector<int>& label) {
   return pos > 0 && neg > 0 ? (rank_sum - pos * (pos + 1) / 2) / (pos * neg) : 0.5;
 }
 
-// A generated drawing of the held-out seed 5000 (ev5000).
-AnnotatedCase held_out(std::uint64_t seed, generator::Shading shading) {
-  generator::Options g;
-  g.width = 800;
-  g.height = 640;
-  g.strand_count = 20;
-  g.seed = seed;
-  g.shading = shading;
-  g.strand_masks = false;
-  return generator::generate_case(g);
-}
-
 // Seeds 5000 and 5001 in the four shadings (train_join_scorer's held-out ev5000 set):
 // every wide candidate (worst tangent angle over max_join_angle_deg) as the
 // training data records it, the scorer off so that nothing is rescued.
@@ -68,14 +57,7 @@ TEST(JoinScorerWide, NetSeparatesCandidatesOverTheAngleLimit) {
     for (const generator::Shading shading :
          {generator::Shading::kFlat, generator::Shading::kTwoTone, generator::Shading::kGradient,
           generator::Shading::kScreentone}) {
-      generator::Options g;
-      g.width = 800;
-      g.height = 640;
-      g.strand_count = 20;
-      g.seed = seed;
-      g.shading = shading;
-      g.strand_masks = false;
-      const AnnotatedCase c = generator::generate_case(g);
+      const AnnotatedCase c = test::generated_case(seed, shading);
       std::map<int, int> strand;
       for (const AnnotatedRegion& reg : c.region_list) strand[reg.id] = reg.strand;
       Options o;
@@ -134,9 +116,9 @@ TEST(JoinScorerWide, NoWideJoinsOnScreentone) {
     o.join_scorer.record = record;
     return complete_strands(test::input_from_case(c), o);
   };
-  const AnnotatedCase flat = held_out(5000, generator::Shading::kFlat);
+  const AnnotatedCase flat = test::generated_case(5000, generator::Shading::kFlat);
   EXPECT_GT(run(flat, 120.0, false).joins, run(flat, 0.0, false).joins);
-  const AnnotatedCase screentone = held_out(5000, generator::Shading::kScreentone);
+  const AnnotatedCase screentone = test::generated_case(5000, generator::Shading::kScreentone);
   const Result off = run(screentone, 0.0, false), on = run(screentone, 120.0, false);
   EXPECT_EQ(on.joins, off.joins);
   EXPECT_EQ(strands_of(on), strands_of(off));
