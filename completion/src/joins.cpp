@@ -285,25 +285,26 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
           (ink && ctx.original->at(gx, gy) == 0)) {
         ++under;
         ++c.under;  // the face and the ink count as 0
-      } else if (trace) {
-        // Options::trace_joins: what the uncovered pixels are.
-        if (l == 0)
-          trace->hole_background += 1;
-        else if (ctx.is_above(ra, l) || ctx.is_above(rb, l))
-          trace->hole_below += 1;
-        else {
-          bool sibling = false;  // under a region lying above a piece
-          for (int r : {ra, rb})
-            if (const auto it = ctx.above.find(r); it != ctx.above.end())
-              for (int up : it->second) sibling = sibling || ctx.is_above(up, l);
-          (sibling ? trace->hole_sibling : trace->hole_other) += 1;
-        }
       }
     }
   }
   for (const LabelCount& c : seen) {
     if (c.back) (*lowest)[c.label] += c.pixels;
     if (under_by && c.under > 0) (*under_by)[c.label] += c.under;
+    if (!trace || c.pixels == c.under) continue;
+    // Options::trace_joins: what the uncovered pixels are, a label at a time.
+    const int l = c.label;
+    double* hole = &trace->hole_other;
+    if (l == 0)
+      hole = &trace->hole_background;
+    else if (ctx.is_above(ra, l) || ctx.is_above(rb, l))
+      hole = &trace->hole_below;
+    else
+      for (int r : {ra, rb})  // under a region lying above a piece
+        if (const auto it = ctx.above.find(r); it != ctx.above.end())
+          for (int up : it->second)
+            if (ctx.is_above(up, l)) hole = &trace->hole_sibling;
+    *hole += c.pixels - c.under;
   }
   *hidden = total;
   if (trace && total > 0)
