@@ -232,8 +232,6 @@ int main(int argc, char** argv) {
   app.add_flag("!--no-face-joins", options.face_joins, "no joins across the face");
   app.add_flag("--continuation-seams", options.continuation_seams,
                "read weak orders between pieces whose sides run on as seams (session 27)");
-  app.add_flag("--ink-occluder-joins,!--no-ink-occluder-joins", options.ink_occluder_joins,
-               "join a piece whose ink edge faces the other piece's occluder (session 30)");
   app.add_flag("--strand-paint,!--no-strand-paint", options.strand_paint,
                "refuse joins whose strand would hold two pieces painted apart (session 28)");
   app.add_flag("!--no-path-joins", options.path_joins,

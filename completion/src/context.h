@@ -123,9 +123,6 @@ struct Join {
   // Off the gradient by windows of uneven slopes: the scorer alone may join
   // it, at kUnevenThreshold (joins.cpp).
   bool uneven_gradient = false;
-  // Under the occluder an ink edge faces (Options::ink_occluder_joins):
-  // vetoed at kUnderInkVeto (join_scoring.cpp).
-  bool under_ink = false;
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
 // records) or refuses joining the strands of regions a and b. `face` (CV_8U,

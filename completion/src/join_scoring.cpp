@@ -16,13 +16,6 @@ namespace {
 // how far p lies over JoinScorerOptions::wide_threshold: last of all
 // candidates under the limit, the surest first.
 constexpr double kWideRankSpan = 1e-6;
-// A join under the occluder an ink edge faces (Join::under_ink; no relation
-// puts the occluder over that piece) is vetoed under the limit when the
-// retrained net's p lies under this, not veto_below. Session 30, dev mixed
-// 2000-2099 with the annotation's relations against veto_below (0.2): right
-// / wrong pairs added 0.5 +10 / +1, 0.7 +9 / -1 (the wrong joins at p 0.23,
-// 0.50 and 0.66: a small piece above paired with a strand's tip below).
-constexpr double kUnderInkVeto = 0.7;
 
 }  // namespace
 
@@ -148,8 +141,7 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       // Under the limit (session 29): the retrained net may refuse it,
       // whichever net judges the band.
       p = join_probability(retrained_join_scorer(), features[k]);
-      const double veto = j.under_ink ? std::max(s.veto_below, kUnderInkVeto) : s.veto_below;
-      if (p < veto) j.cost = std::numeric_limits<double>::infinity();
+      if (p < s.veto_below) j.cost = std::numeric_limits<double>::infinity();
     }
     j.probability = p;
     if (ctx.join_log == nullptr) continue;

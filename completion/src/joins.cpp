@@ -159,12 +159,6 @@ constexpr double kUnevenCostShare = 0.5;
 // where, only the paint and the outline).
 constexpr double kMaxInkJoinGap = 16.0;
 constexpr double kMaxInkFlatStep = 0.5;
-// A join under the occluder an ink edge faces (Options::ink_occluder_joins)
-// costs this more: no relation says the occluder lies over that piece. Dev
-// mixed 2000-2099 (annotation's relations), right / wrong pairs added: 0.0
-// +12 / +5 (the wrong ones at hand cost 1.3-2.2, a small piece above
-// paired with a strand's tip below), 0.4 +10 / +1, 0.8 +8 / +2.
-constexpr double kUnderInkCost = 0.4;
 
 double colour_step_cost(const PaintStep& s) {
   return (s.flat ? kFlatStepWeight : kColourStepWeight) * s.step / 30.0;
@@ -320,12 +314,6 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
   return total > 0 ? static_cast<double>(under) / total : 1.0;
 }
 
-// Whether e is an ink edge facing one of f's occluders (f no ink edge).
-bool faces_occluder(const Edge& e, const Edge& f) {
-  if (e.ink.empty() || !f.ink.empty()) return false;
-  return std::any_of(e.ink.begin(), e.ink.end(), [&](int l) { return f.occluders.count(l) > 0; });
-}
-
 }  // namespace
 
 std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
@@ -415,16 +403,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         drop(JoinStage::kKeptApart);
         continue;
       }
-      // An ink edge joins only a region it faces across the ink, or
-      // (Options::ink_occluder_joins) a piece under the region it faces: the
-      // cut meets its occluder across piled-up outlines, too far apart for
-      // the relations to order them, and the join runs under that occluder
-      // as any strand join does (`under_ink`: no ink join's rules then).
-      const bool facing = a.ink.count(b.region) > 0 || b.ink.count(a.region) > 0;
-      const bool under_ink =
-          !facing && o.ink_occluder_joins && (faces_occluder(a, b) || faces_occluder(b, a));
-      const bool ink = (!a.ink.empty() || !b.ink.empty()) && !under_ink;
-      if (ink && !facing) {
+      // An ink edge joins only a region it faces across the ink.
+      const bool ink = !a.ink.empty() || !b.ink.empty();
+      if (ink && !a.ink.count(b.region) && !b.ink.count(a.region)) {
         drop(JoinStage::kInkFacing);
         continue;
       }
@@ -523,10 +504,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                0.5 * (1.0 - narrow / wide) + 0.5 * std::min(gap / wide, 3.0) + kBulgeWeight * bulge;
         // §5.1 matches edges "around a common occluder"; a gap under two
         // overlapping occluders is allowed but costs a little more.
-        bool common = ink || under_ink;  // the ink (or the region across it) is the one occluder
+        bool common = ink;  // the ink is the one occluder
         for (int occ : a.occluders) common = common || b.occluders.count(occ) > 0;
         if (!common) cost += kNoCommonOccluderCost;
-        if (under_ink) cost += kUnderInkCost;
         // A colour step the paint does not explain: two flat pieces of
         // different colours are two strands; a cel band or a gradient
         // explains its own step (`paint_step`).
@@ -553,8 +533,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           std::map<int, int> lowest, under_by;
           const double cover = coverage(
               ctx, join.patch, a.region, b.region, join.behind_face ? face : no_face, &hidden,
-              &front, join.behind_face ? &lowest : nullptr, ink || under_ink,
-              scoring ? &under_by : nullptr, traced >= 0 ? &(*ctx.join_trace)[traced] : nullptr);
+              &front, join.behind_face ? &lowest : nullptr, ink, scoring ? &under_by : nullptr,
+              traced >= 0 ? &(*ctx.join_trace)[traced] : nullptr);
           const bool over_other_back =
               hidden > 0 &&
               other_back_share(a.region, b.region, lowest) / hidden > kMaxOtherBackShare;
@@ -617,7 +597,6 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       join.trace = traced;
       if (traced >= 0) (*ctx.join_trace)[traced].hand_cost = cost;
       join.uneven_gradient = uneven && join.bands.empty();
-      join.under_ink = under_ink && join.bands.empty();
       candidates.push_back(std::move(join));
       terms_of.push_back(terms);
     }

@@ -261,55 +261,5 @@ TEST(StrandJoins, StrandCutByInkOnlyIsJoined) {
   EXPECT_EQ(joined_with_1(strands_beside_ink()), (std::vector<int>{1}));
 }
 
-// strand_under_band's strand with its lower piece 2 (x 100 + `lower_dx`
-// .. 140 + `lower_dx`, y 170..230) meeting the band 3 across a blot of ink
-// (y 160..170: the band's outline, drawn ink, the piece's own outline), so
-// that, as where a generated drawing's outlines pile up, no relation orders
-// 2 and 3: piece 2 has no occluding edge, only an ink edge facing 3.
-Drawing strand_under_band_beyond_ink(double lower_dx) {
-  Drawing d = blank(250, 300);
-  paint(
-      d, [](double x, double y) { return x > 20 && x < 230 && y > 20 && y < 280; }, kBack, 4);
-  paint(
-      d, [](double x, double y) { return x > 100 && x < 140 && y > 70 && y < 140; }, kStrand, 1);
-  paint(
-      d,
-      [lower_dx](double x, double y) {
-        return x > 100 + lower_dx && x < 140 + lower_dx && y >= 166 && y < 230;
-      },
-      kStrand, 2);
-  paint(
-      d, [](double x, double y) { return x > 40 && x < 210 && y > 118 && y < 162; }, kStrand, 3);
-  for (int y = 162; y < 168; ++y)
-    for (int x = 60; x < 200; ++x) {
-      d.image.at(x, y) = Rgba{20, 15, 10, 255};
-      d.regions.at(x, y) = 0;
-    }
-  d.relations = {below(4, 1), below(4, 2), below(4, 3), below(1, 3)};
-  return d;
-}
-
-std::vector<int> joined_with_1(const Drawing& d, const Options& base) {
-  Options o = base;
-  o.inpaint_background = false;
-  o.face_joins = false;
-  o.path_joins = false;
-  return test::regions_with(complete_strands(test::input_of(d, Vec2(125, 10)), o), 1);
-}
-
-TEST(StrandJoins, PieceBeyondInkIsJoinedUnderTheOccluderItFaces) {
-  // Piece 1 lies under the band; piece 2 meets the band's outline across
-  // 8 px of ink, no relation between them: its ink edge faces the band, the
-  // occluder of piece 1, and the strand runs on straight under it.
-  Options on, off;
-  off.ink_occluder_joins = false;
-  EXPECT_EQ(joined_with_1(strand_under_band_beyond_ink(0), on), (std::vector<int>{1, 2}));
-  // Without the option the ink edge faces no piece: no candidate.
-  EXPECT_EQ(joined_with_1(strand_under_band_beyond_ink(0), off), (std::vector<int>{1}));
-  // Shifted 50 px sideways the lower piece is another strand: the join is
-  // judged by the tangents and the cover like any strand join.
-  EXPECT_EQ(joined_with_1(strand_under_band_beyond_ink(50), on), (std::vector<int>{1}));
-}
-
 }  // namespace
 }  // namespace hair25d::completion

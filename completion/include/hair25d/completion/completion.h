@@ -64,11 +64,6 @@ struct Options {
   // options on, fresh flat 9100-9199 still lost precision, so they stay off
   // (docs/completion-record.md, "Session 28").
   bool strand_paint = true;
-  // A piece whose cut meets its occluder across a blot of ink (outlines
-  // piled up, so no relation orders the two: only an ink edge facing the
-  // occluder) is joined, as a strand join under that occluder, to a piece
-  // that the relations put under it (session 30, docs/completion-record.md).
-  bool ink_occluder_joins = true;
   // Record why each case-1 edge pair was or was not joined
   // (Result::join_trace), for the census of lost joins (eval_joins --census).
   bool trace_joins = false;
