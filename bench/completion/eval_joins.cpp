@@ -234,9 +234,6 @@ int main(int argc, char** argv) {
                "read weak orders between pieces whose sides run on as seams (session 27)");
   app.add_flag("--strand-paint,!--no-strand-paint", options.strand_paint,
                "refuse joins whose strand would hold two pieces painted apart (session 28)");
-  app.add_flag("--screentone-axis-tangents,!--no-screentone-axis-tangents",
-               options.screentone_axis_tangents,
-               "bent tangents take the piece's axis near the cut on screentone (session 30)");
   app.add_flag("!--no-path-joins", options.path_joins,
                "no joins of back-hair pieces through the regions above both");
   app.add_option("--min-join-coverage", options.min_join_coverage,

@@ -43,12 +43,6 @@ struct Edge {
   // occluders of it, across a cut of drawn ink only (with, for a whole cut,
   // the occluded runs beside it); empty for an occluding edge.
   std::set<int> ink;
-  // The piece's own axis near the edge, pointing into the hidden part, where
-  // its two end tangents part by over kBentEndsDeg or an end has too little
-  // visible outline for one and its pixels within kAxisRadius px of the
-  // cut's middle are elongated (occluding_edges.cpp); zero otherwise. Used
-  // for both tangents on screentone (Options::screentone_axis_tangents).
-  Vec2 axis_tangent{0, 0};
 };
 
 struct Context {

@@ -316,19 +316,10 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
 
 }  // namespace
 
-std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& given,
+std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
                               const cv::Mat& face, RegionTones& tones, RegionFields& fields,
                               const std::function<bool(int, int)>& try_join) {
   const Options& o = *ctx.options;
-  // Screentone: an edge's tangents bent round a tip or corner give way to
-  // the piece's own axis near the cut (Edge::axis_tangent).
-  std::vector<Edge> axis_edges;
-  if (o.screentone_axis_tangents && tones.screentone()) {
-    axis_edges = given;
-    for (Edge& e : axis_edges)
-      if (e.axis_tangent.squaredNorm() > 0) e.tangent_p = e.tangent_q = e.axis_tangent;
-  }
-  const std::vector<Edge>& edges = axis_edges.empty() ? given : axis_edges;
   // Back hair: regions above no region. Only the face hides back hair; a
   // strand lying on the face is drawn over it, so the face between two of
   // its pieces means they are not one strand.

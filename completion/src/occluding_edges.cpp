@@ -2,7 +2,6 @@
 #include <cmath>
 #include <map>
 #include <opencv2/imgproc.hpp>
-#include <optional>
 #include <set>
 
 #include "context.h"
@@ -59,43 +58,6 @@ std::vector<int> occluder_labels(const Context& ctx, const RegionInfo& region) {
     raw[i] = best;
   }
   return majority_labels(raw);
-}
-
-// An edge's end tangents parting by more than this are bent: one arm ran
-// round the piece's tip or a corner of a small piece (session 22, joins37).
-constexpr double kBentEndsDeg = 45.0;
-// The piece's axis near a cut is read from its drawn pixels within this
-// many px of the cut's middle...
-constexpr double kAxisRadius = 20.0;
-// ...when they reach at least this many times their width along it.
-constexpr double kAxisElongation = 2.0;
-
-// The principal axis of `region`'s drawn pixels (the original labels)
-// within kAxisRadius of `mid`, pointing from their centre towards `mid`
-// (into the hidden part), if they are elongated: the strand's direction
-// where a sliver or a short arm leaves the outline no tangent. Their width
-// is that of a band of the same spread (√12 × the rms distance off the axis).
-std::optional<Vec2> axis_near_cut(const Context& ctx, int region, const Vec2& mid) {
-  Polyline near;
-  const int r = static_cast<int>(std::ceil(kAxisRadius));
-  const int cx = static_cast<int>(mid.x()), cy = static_cast<int>(mid.y());
-  for (int y = cy - r; y <= cy + r; ++y)
-    for (int x = cx - r; x <= cx + r; ++x) {
-      const Vec2 c(x + 0.5, y + 0.5);
-      if (ctx.original->contains(x, y) && ctx.original->at(x, y) == region &&
-          (c - mid).norm() <= kAxisRadius)
-        near.push_back(c);
-    }
-  if (near.size() < 6) return std::nullopt;
-  const TotalFit f = total_least_squares(near);
-  double lo = 0, hi = 0;
-  for (const Vec2& v : near) {
-    const double t = (v - f.mean).dot(f.axis);
-    lo = std::min(lo, t), hi = std::max(hi, t);
-  }
-  const double width = std::sqrt(12.0) * f.across;
-  if (hi - lo < kAxisElongation * std::max(width, 1.0)) return std::nullopt;
-  return f.axis.dot(mid - f.mean) < 0 ? Vec2(-f.axis) : f.axis;
 }
 
 // Builds an edge over contour indices begin..end (unwrapped, end >= begin).
@@ -164,13 +126,6 @@ Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<i
     else
       e.tangent_p = e.tangent_q;
   }
-  // Tangents bent round a tip or a corner, or missing: the piece's own axis
-  // near the cut is kept beside them (used on screentone, match_edges).
-  bool ink_run = false;
-  for (int i = begin; i <= end; ++i) ink_run = ink_run || labels[wrap(i, n)] < 0;
-  const bool bent = e.tangent_p.dot(e.tangent_q) < std::cos(kBentEndsDeg * M_PI / 180.0);
-  if (!ink_run && (!has_p || !has_q || bent))
-    e.axis_tangent = axis_near_cut(ctx, region.id, 0.5 * (e.p + e.q)).value_or(Vec2(0, 0));
   // The region's colour next to the edge (drawn pixels only, not outlines).
   Eigen::Vector3d sum(0, 0, 0);
   double squares = 0.0;

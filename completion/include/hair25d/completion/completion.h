@@ -64,17 +64,6 @@ struct Options {
   // options on, fresh flat 9100-9199 still lost precision, so they stay off
   // (docs/completion-record.md, "Session 28").
   bool strand_paint = true;
-  // On screentone drawings an occluding edge whose end tangents part by
-  // over 45° (an arm round the piece's tip or a small piece's corner) or
-  // lack visible outline takes the piece's own axis near the cut for both
-  // (the principal axis of its pixels within 20 px, when they are
-  // elongated; occluding_edges.cpp). Session 30 (joins65), dev screentone
-  // 2000-2099 precision / recall 0.922 / 0.710 -> 0.931 / 0.730 with the
-  // annotation's relations, 0.898 / 0.650 -> 0.908 / 0.664 with the
-  // layering's; on the other shadings the same rule lost 20-28 right pairs
-  // a set (docs/completion-record.md, "Session 30: the piece's axis for
-  // bent tangents on screentone").
-  bool screentone_axis_tangents = true;
   // Record why each case-1 edge pair was or was not joined
   // (Result::join_trace), for the census of lost joins (eval_joins --census).
   bool trace_joins = false;
