@@ -278,6 +278,14 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::rescue_high");
   app.add_option("--scorer-rescue-threshold", options.join_scorer.rescue_threshold,
                  "JoinScorerOptions::rescue_threshold");
+  app.add_option("--scorer-screentone-veto-below", options.join_scorer.screentone_veto_below,
+                 "JoinScorerOptions::screentone_veto_below");
+  app.add_option("--scorer-screentone-rescue-threshold",
+                 options.join_scorer.screentone_rescue_threshold,
+                 "JoinScorerOptions::screentone_rescue_threshold");
+  app.add_flag("--scorer-screentone-band,!--no-scorer-screentone-band",
+               options.join_scorer.screentone_band,
+               "JoinScorerOptions::screentone_band: the screentone net judges the band there");
   app.add_flag("--census", options.trace_joins,
                "Name the stage where each lost link of a true strand was stopped "
                "(Options::trace_joins, tests/completion/join_census.h): a line per link and a "

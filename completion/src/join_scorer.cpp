@@ -134,6 +134,11 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("rescue_high = " + num(rescue_high) + "; must be in [0, 100)");
   if (!(rescue_threshold > 0 && rescue_threshold < 1))
     return fail("rescue_threshold = " + num(rescue_threshold) + "; must be in (0, 1)");
+  if (!(screentone_veto_below >= 0 && screentone_veto_below < 1))
+    return fail("screentone_veto_below = " + num(screentone_veto_below) + "; must be in [0, 1)");
+  if (!(screentone_rescue_threshold > 0 && screentone_rescue_threshold <= 1))
+    return fail("screentone_rescue_threshold = " + num(screentone_rescue_threshold) +
+                "; must be in (0, 1]");
   if (!(max_angle_deg >= 0 && max_angle_deg <= 180))
     return fail("max_angle_deg = " + num(max_angle_deg) + "; must be in [0, 180]");
   if (!(wide_band_high >= 0 && wide_band_high < 100))

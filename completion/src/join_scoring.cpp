@@ -78,7 +78,14 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
     for (std::size_t k = 0; k < which.size(); ++k)
       if (!(*candidates)[which[k]].wide) features[k] = own[k];
   }
-  const JoinScorerNet& net = retrained ? retrained_join_scorer() : default_join_scorer();
+  const JoinScorerNet& net = retrained                         ? retrained_join_scorer()
+                             : screentone && s.screentone_band ? screentone_join_scorer()
+                                                               : default_join_scorer();
+  // The band's edges: the retrained net off screentone (session 29), the
+  // screentone net on it (session 30), each with its own bars.
+  const JoinScorerNet& edge_net = screentone ? screentone_join_scorer() : retrained_join_scorer();
+  const double veto_below = screentone ? s.screentone_veto_below : s.veto_below;
+  const double rescue_threshold = screentone ? s.screentone_rescue_threshold : s.rescue_threshold;
   // Session 25: the ensemble may rescue what the default net refuses.
   using Ensemble = JoinScorerOptions::Ensemble;
   // Session 26: with kEach, the paint ensemble on the drawings without
@@ -129,19 +136,18 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                           o.max_join_cost + (ensemble_threshold - q) * (s.band_high - s.band_low));
       else if (p < s.refuse_below)
         j.cost = std::numeric_limits<double>::infinity();
-    } else if (s.enabled && !screentone && !j.uneven_gradient && j.cost > s.band_high &&
+    } else if (s.enabled && rescue_threshold < 1 && !j.uneven_gradient && j.cost > s.band_high &&
                j.cost <= s.rescue_high) {
-      // Over the band (session 29): the retrained net alone may join it,
+      // Over the band (session 29): the edges' net alone may join it,
       // whichever net judges the band.
-      p = join_probability(retrained_join_scorer(), features[k]);
-      if (p >= s.rescue_threshold)
-        j.cost = o.max_join_cost + (s.rescue_threshold - p) * (s.band_high - s.band_low);
-    } else if (s.enabled && !screentone && s.veto_below > 0 && j.cost >= s.veto_low &&
-               j.cost < s.band_low) {
-      // Under the limit (session 29): the retrained net may refuse it,
+      p = join_probability(edge_net, features[k]);
+      if (p >= rescue_threshold)
+        j.cost = o.max_join_cost + (rescue_threshold - p) * (s.band_high - s.band_low);
+    } else if (s.enabled && veto_below > 0 && j.cost >= s.veto_low && j.cost < s.band_low) {
+      // Under the limit (session 29): the edges' net may refuse it,
       // whichever net judges the band.
-      p = join_probability(retrained_join_scorer(), features[k]);
-      if (p < s.veto_below) j.cost = std::numeric_limits<double>::infinity();
+      p = join_probability(edge_net, features[k]);
+      if (p < veto_below) j.cost = std::numeric_limits<double>::infinity();
     }
     j.probability = p;
     if (ctx.join_log == nullptr) continue;

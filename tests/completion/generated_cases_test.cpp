@@ -262,7 +262,9 @@ TEST(GeneratedCases, TwoWorkersGiveTheResultOfOne) {
 // other drawings at `threshold`, or with `retrained` (session 29) by the
 // retrained net at retrained_threshold: with one threshold low (0.05) and
 // the other high (0.999), the candidates of the band are rescued by the one
-// of their drawing only, and judged by their drawing's net.
+// of their drawing only, and judged by their drawing's net (session 30: on
+// screentone the screentone net, or with screentone_band off the default
+// one).
 TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
   auto run = [](const AnnotatedCase& c, double threshold, double screentone_threshold,
                 bool retrained) {
@@ -270,7 +272,9 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
     o.inpaint_strands = false;
     o.inpaint_background = false;
     o.join_scorer.record = true;
+    // `retrained` also stands for screentone_band off on screentone.
     o.join_scorer.retrained = retrained;
+    o.join_scorer.screentone_band = !retrained;
     (retrained ? o.join_scorer.retrained_threshold : o.join_scorer.threshold) = threshold;
     o.join_scorer.screentone_threshold = screentone_threshold;
     // The nets' thresholds alone: the ensembles' rescues are
@@ -285,8 +289,10 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
     const bool screentone = shading == generator::Shading::kScreentone;
     const AnnotatedCase c = test::generated_case(2004, shading);
     for (const bool retrained : {false, true}) {
-      const JoinScorerNet& net =
-          retrained && !screentone ? retrained_join_scorer() : default_join_scorer();
+      const JoinScorerNet& net = !screentone
+                                     ? (retrained ? retrained_join_scorer() : default_join_scorer())
+                                 : !retrained ? screentone_join_scorer()
+                                              : default_join_scorer();
       for (const auto& [threshold, screentone_threshold] :
            {std::pair{0.05, 0.999}, {0.999, 0.05}}) {
         SCOPED_TRACE(testing::Message() << "screentone " << screentone << " retrained " << retrained
@@ -322,12 +328,17 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
 // candidates under the limit with hand cost in [veto_low, band_low) at
 // p < veto_below, and joins candidates over the band up to rescue_high at
 // p >= rescue_threshold, whichever net judges the band (`retrained` or
-// not). With the bars set so that most candidates fall on their side
-// (veto_below 0.999, rescue_threshold 0.05), a refused candidate is never
-// chosen and a rescued one is ranked under the limit; a screentone drawing
-// keeps both edges as they were.
+// not). Session 30: on screentone drawings the screentone net does the
+// same at screentone_veto_below and screentone_rescue_threshold. With the
+// bars set so that most candidates fall on their side (veto 0.999, rescue
+// 0.05), a refused candidate is never chosen and a rescued one is ranked
+// under the limit; with only the other drawings' bars set, a screentone
+// drawing keeps both edges as they were, and the other drawings do with
+// only the screentone bars set.
 TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
-  auto run = [](const AnnotatedCase& c, bool edges, bool retrained) {
+  // `edges`: which drawings' bars are set (none, the others', screentone's).
+  enum class Edges { kNone, kOthers, kScreentone };
+  auto run = [](const AnnotatedCase& c, Edges edges, bool retrained) {
     Options o;
     o.inpaint_strands = false;
     o.inpaint_background = false;
@@ -335,87 +346,101 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
     o.trace_joins = true;
     o.join_scorer.retrained = retrained;
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
-    if (edges) {
-      o.join_scorer.veto_low = 0.0;
-      o.join_scorer.veto_below = 0.999;
-      o.join_scorer.rescue_high = 5.0;
-      o.join_scorer.rescue_threshold = 0.05;
-    } else {
-      o.join_scorer.veto_below = 0.0;
-      o.join_scorer.rescue_high = o.join_scorer.band_high;
-    }
+    o.join_scorer.veto_low = 0.0;
+    o.join_scorer.rescue_high = 5.0;
+    o.join_scorer.veto_below = edges == Edges::kOthers ? 0.999 : 0.0;
+    o.join_scorer.rescue_threshold = edges == Edges::kOthers ? 0.05 : 0.999999;
+    o.join_scorer.screentone_veto_below = edges == Edges::kScreentone ? 0.999 : 0.0;
+    o.join_scorer.screentone_rescue_threshold = edges == Edges::kScreentone ? 0.05 : 1.0;
+    if (edges == Edges::kNone) o.join_scorer.rescue_high = o.join_scorer.band_high;
     return complete_strands(test::input_from_case(c), o);
   };
   const JoinScorerOptions s;
   const double limit = Options{}.max_join_cost, t = 0.05;
+  const Result off =
+      run(test::generated_case(2004, generator::Shading::kFlat), Edges::kNone, false);
+  // Off, no candidate under the band is asked, none over it recorded.
+  int chosen_low = 0;
+  for (const JoinCandidate& j : off.join_candidates) {
+    EXPECT_LE(j.hand_cost, s.band_high);
+    if (j.hand_cost < s.band_low) {
+      EXPECT_EQ(j.probability, -1.0);
+    }
+    chosen_low += j.chosen && j.hand_cost >= 0 && j.hand_cost < s.band_low;
+  }
+  EXPECT_GT(chosen_low, 0);
+  for (const JoinTrace& x : off.join_trace) EXPECT_NE(x.stage, JoinStage::kVetoed);
   for (const generator::Shading shading :
        {generator::Shading::kFlat, generator::Shading::kScreentone}) {
     const bool screentone = shading == generator::Shading::kScreentone;
     SCOPED_TRACE(testing::Message() << "screentone " << screentone);
     const AnnotatedCase c = test::generated_case(2004, shading);
-    for (const bool retrained : {false, true}) {
-      SCOPED_TRACE(testing::Message() << "retrained " << retrained);
-      const Result off = run(c, false, retrained), on = run(c, true, retrained);
-      // Off, no candidate under the band is asked, none over it recorded.
-      int chosen_low = 0;
-      for (const JoinCandidate& j : off.join_candidates) {
-        EXPECT_LE(j.hand_cost, s.band_high);
-        if (j.hand_cost < s.band_low) {
-          EXPECT_EQ(j.probability, -1.0);
+    const JoinScorerNet& net = screentone ? screentone_join_scorer() : retrained_join_scorer();
+    for (const Edges edges : {Edges::kOthers, Edges::kScreentone}) {
+      // Whether this drawing's bars are the ones set.
+      const bool judged = screentone == (edges == Edges::kScreentone);
+      for (const bool retrained : {false, true}) {
+        // The band's net does not matter on a screentone drawing.
+        if (screentone && retrained) continue;
+        SCOPED_TRACE(testing::Message()
+                     << "edges " << static_cast<int>(edges) << " retrained " << retrained);
+        const Result on = run(c, edges, retrained);
+        int vetoed = 0, over = 0, rescued = 0;
+        for (const JoinCandidate& j : on.join_candidates) {
+          if (j.hand_cost >= 0 && j.hand_cost < s.band_low) {
+            if (!judged) {
+              EXPECT_EQ(j.probability, -1.0);
+              continue;
+            }
+            EXPECT_DOUBLE_EQ(j.probability, join_probability(net, j.features));
+            if (j.probability < 0.999) {
+              EXPECT_TRUE(std::isinf(j.cost));
+              EXPECT_FALSE(j.chosen);
+              ++vetoed;
+            } else {
+              EXPECT_EQ(j.cost, j.hand_cost);
+            }
+          } else if (j.hand_cost > s.band_high) {
+            EXPECT_LE(j.hand_cost, 5.0);
+            ++over;
+            // Unjudged: not asked on a screentone drawing; on the others
+            // asked, as rescue_high is shared, but at a bar none reaches.
+            if (!judged && screentone) {
+              EXPECT_EQ(j.probability, -1.0);
+            }
+            if (!judged || j.probability < 0) {
+              if (j.probability < 0.999999) {
+                EXPECT_EQ(j.cost, j.hand_cost);
+              }
+              continue;
+            }
+            EXPECT_DOUBLE_EQ(j.probability, join_probability(net, j.features));
+            if (j.probability >= t) {
+              EXPECT_DOUBLE_EQ(j.cost, limit + (t - j.probability) * (s.band_high - s.band_low));
+              ++rescued;
+            } else {
+              EXPECT_EQ(j.cost, j.hand_cost);
+            }
+          }
         }
-        chosen_low += j.chosen && j.hand_cost >= 0 && j.hand_cost < s.band_low;
-      }
-      EXPECT_GT(chosen_low, 0);
-      int vetoed = 0, over = 0, rescued = 0;
-      for (const JoinCandidate& j : on.join_candidates) {
-        if (j.hand_cost >= 0 && j.hand_cost < s.band_low) {
-          if (screentone) {
-            EXPECT_EQ(j.probability, -1.0);
-            continue;
-          }
-          EXPECT_DOUBLE_EQ(j.probability, join_probability(retrained_join_scorer(), j.features));
-          if (j.probability < 0.999) {
-            EXPECT_TRUE(std::isinf(j.cost));
-            EXPECT_FALSE(j.chosen);
-            ++vetoed;
-          } else {
-            EXPECT_EQ(j.cost, j.hand_cost);
-          }
-        } else if (j.hand_cost > s.band_high) {
-          EXPECT_LE(j.hand_cost, 5.0);
-          ++over;
-          if (screentone || j.probability < 0) {
-            EXPECT_EQ(j.probability, -1.0);
-            EXPECT_EQ(j.cost, j.hand_cost);
-            continue;
-          }
-          EXPECT_DOUBLE_EQ(j.probability, join_probability(retrained_join_scorer(), j.features));
-          if (j.probability >= t) {
-            EXPECT_DOUBLE_EQ(j.cost, limit + (t - j.probability) * (s.band_high - s.band_low));
-            ++rescued;
-          } else {
-            EXPECT_EQ(j.cost, j.hand_cost);
-          }
+        // The trace (eval_joins --census) names a vetoed pair's stage.
+        int traced_vetoes = 0;
+        for (const JoinTrace& x : on.join_trace) {
+          if (x.stage != JoinStage::kVetoed) continue;
+          ++traced_vetoes;
+          EXPECT_LT(x.hand_cost, s.band_low);
+          EXPECT_GE(x.probability, 0.0);
+          EXPECT_LT(x.probability, 0.999);
         }
-      }
-      // The trace (eval_joins --census) names a vetoed pair's stage.
-      int traced_vetoes = 0;
-      for (const JoinTrace& x : on.join_trace) {
-        if (x.stage != JoinStage::kVetoed) continue;
-        ++traced_vetoes;
-        EXPECT_LT(x.hand_cost, s.band_low);
-        EXPECT_GE(x.probability, 0.0);
-        EXPECT_LT(x.probability, 0.999);
-      }
-      for (const JoinTrace& x : off.join_trace) EXPECT_NE(x.stage, JoinStage::kVetoed);
-      EXPECT_EQ(traced_vetoes > 0, !screentone);
-      if (screentone) {
-        EXPECT_EQ(vetoed, 0);
-        EXPECT_EQ(rescued, 0);
-      } else {
-        EXPECT_GT(vetoed, 0);
-        EXPECT_GT(over, 0);
-        EXPECT_GT(rescued, 0);
+        EXPECT_EQ(traced_vetoes > 0, judged);
+        if (judged) {
+          EXPECT_GT(vetoed, 0);
+          EXPECT_GT(over, 0);
+          EXPECT_GT(rescued, 0);
+        } else {
+          EXPECT_EQ(vetoed, 0);
+          EXPECT_EQ(rescued, 0);
+        }
       }
     }
   }

@@ -347,6 +347,13 @@ TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
   EXPECT_NE(retrained_join_scorer().w1[0][0], default_join_scorer().w1[0][0]);
   EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_retrained_weights.cpp")),
             test::generated_part(retrained));
+  // And the net of the screentone drawings' candidates (session 30).
+  const std::string screentone =
+      join_scorer_source(screentone_join_scorer(), "x", "screentone_join_scorer");
+  EXPECT_NE(screentone.find("screentone_join_scorer()"), std::string::npos);
+  EXPECT_NE(screentone_join_scorer().w1[0][0], retrained_join_scorer().w1[0][0]);
+  EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_screentone_weights.cpp")),
+            test::generated_part(screentone));
 }
 
 // A strand that turns a corner under a band (session 18): piece 1 comes
@@ -496,6 +503,17 @@ TEST(JoinScorer, BadInputThrows) {
   o.join_scorer.rescue_high = 100.0;
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_NE(why.find("rescue_high"), std::string::npos) << why;
+  o = {};
+  o.join_scorer.screentone_veto_below = 1.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("screentone_veto_below = 1"), std::string::npos) << why;
+  EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
+  o = {};
+  o.join_scorer.screentone_rescue_threshold = 0.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("screentone_rescue_threshold = 0"), std::string::npos) << why;
+  o.join_scorer.screentone_rescue_threshold = 1.0;  // none rescued: valid
+  EXPECT_TRUE(o.is_valid(&why)) << why;
 }
 
 }  // namespace

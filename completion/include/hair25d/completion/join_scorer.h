@@ -53,6 +53,12 @@ std::span<const JoinScorerNet> paint_ensemble_join_scorers();
 // join_scorer_retrained_weights.cpp), used in place of the default net on
 // the drawings without screentone where JoinScorerOptions::retrained says.
 const JoinScorerNet& retrained_join_scorer();
+// Session 30: a net trained on the candidates of screentone drawings alone
+// (both relations; generated file join_scorer_screentone_weights.cpp),
+// judging the band's edges on screentone drawings where
+// JoinScorerOptions::screentone_veto_below and screentone_rescue_threshold
+// say.
+const JoinScorerNet& screentone_join_scorer();
 // The mean of the nets' probabilities (one net's alone when there is one):
 // a wrong candidate that one training seed happens to trust is refused
 // when the others do not. Throws hair25d::Error for no nets or a feature
@@ -87,8 +93,10 @@ struct JoinScorerOptions {
   // others' `threshold`. Session 21 (docs/completion-record.md): 0.65 raised
   // screentone recall by 0.009-0.021 on dev and fresh 100-drawing sets but
   // lost 0.006 / 0.003 precision on fresh 8000-8099 (annotation's /
-  // layering's relations): left at `threshold`'s 0.8.
-  double screentone_threshold = 0.8;
+  // layering's relations): left at `threshold`'s 0.8. Session 30: 0.9, with
+  // the screentone net judging the band there (screentone_band; with the
+  // default net, 0.8 as before).
+  double screentone_threshold = 0.9;
   // Session 25: on which drawings the ensemble (ensemble_join_scorers) may
   // rescue a candidate of the band that the default net refuses: none,
   // screentone ones (RegionTones::screentone) or all; it does when the mean
@@ -155,6 +163,28 @@ struct JoinScorerOptions {
   double veto_below = 0.2;
   double rescue_high = 5.0;
   double rescue_threshold = 0.97;
+  // Session 30 (joins67): the same two edges on screentone drawings, judged
+  // by screentone_join_scorer: refused under the limit (hand cost in
+  // [veto_low, band_low)) at p < screentone_veto_below (0: none is), joined
+  // over the band (up to rescue_high) at p >= screentone_rescue_threshold
+  // (1: none is). Held out (screentone 5900-5999, each relations), that net
+  // refuses 26 and 24 wrong candidates of 1.4-2.4 at p < 0.2 for no right
+  // one, and rescues 61 right ones of 4.0-5.0 for 1 wrong at p >= 0.9 (the
+  // retrained net 31 / 1, 28 / 0). At 0.35 / 0.9 (docs/completion-record.md
+  // "Session 30: screentone joins"): dev screentone 2000 and 3000 +75 right
+  // pairs and -60 wrong ones over both relations, dev mixed +13 / -21, the
+  // six unchanged; fresh screentone and mixed 9600 and 9700 +6 / -15.
+  double screentone_veto_below = 0.35;
+  double screentone_rescue_threshold = 0.9;
+  // With screentone_band, the screentone net also judges the band there (at
+  // screentone_threshold) in place of the default net. joins48 (session 25)
+  // lost precision replacing the default net on screentone; with the edges
+  // above and the bar at 0.9 (not 0.8) it adds, over the edges alone, 88
+  // right pairs and 7 wrong ones on dev screentone and mixed 2000 and 3000
+  // (both relations; the six unchanged) and 152 right and 14 wrong on fresh
+  // screentone and mixed 9600 and 9700; edges and band together against
+  // session 29's main: dev +176 / -74, fresh +158 / -1.
+  bool screentone_band = true;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
   // max_angle_deg are strand candidates for the scorer alone: costed as any
