@@ -238,6 +238,10 @@ int main(int argc, char** argv) {
                "no joins of back-hair pieces through the regions above both");
   app.add_option("--min-join-coverage", options.min_join_coverage,
                  "completion::Options::min_join_coverage");
+  app.add_option("--join-arm-shares", options.join_arm_shares,
+                 "completion::Options::join_arm_shares: tangent arms (shares of the chord) tried "
+                 "where the join patch lies under min_join_coverage, e.g. 0.2 0.33 0.5 0.7")
+      ->delimiter(',');
   app.add_flag("--join-scorer,!--no-join-scorer", options.join_scorer.enabled,
                "decide strand joins in the cost band by the learned scorer (join_scorer.h)");
   app.add_option("--scorer-band-low", options.join_scorer.band_low, "JoinScorerOptions::band_low");

@@ -28,4 +28,11 @@ CubicBezier join_bezier(const Vec2& start, const Vec2& start_tangent, const Vec2
   return {{start, start + h * start_tangent, end - h * end_tangent, end}};
 }
 
+CubicBezier join_bezier_arms(const Vec2& start, const Vec2& start_tangent, const Vec2& end,
+                             const Vec2& end_tangent, double start_share, double end_share) {
+  const double chord = (end - start).norm();
+  return {{start, start + start_share * chord * start_tangent,
+           end - end_share * chord * end_tangent, end}};
+}
+
 }  // namespace hair25d::completion

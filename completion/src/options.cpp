@@ -27,6 +27,9 @@ bool Options::is_valid(std::string* error) const {
     return fail("max_colour_distance = " + num(max_colour_distance) + "; must be > 0");
   if (!(min_join_coverage >= 0 && min_join_coverage <= 1))
     return fail("min_join_coverage = " + num(min_join_coverage) + "; must be in [0, 1]");
+  for (double share : join_arm_shares)
+    if (!(share > 0 && share <= 1.5))
+      return fail("join_arm_shares holds " + num(share) + "; each must be in (0, 1.5]");
   if (!(min_width_ratio >= 0 && min_width_ratio <= 1))
     return fail("min_width_ratio = " + num(min_width_ratio) + "; must be in [0, 1]");
   if (!(max_join_cost > 0)) return fail("max_join_cost = " + num(max_join_cost) + "; must be > 0");

@@ -573,6 +573,11 @@ TEST(Completion, BadInputThrows) {
   EXPECT_FALSE(bad.is_valid(&why));
   EXPECT_NE(why.find("min_join_coverage"), std::string::npos);
   EXPECT_THROW(complete_strands(in, bad), Error);
+  Options bad_arms;
+  bad_arms.join_arm_shares = {0.2, 0.0};
+  EXPECT_FALSE(bad_arms.is_valid(&why));
+  EXPECT_NE(why.find("join_arm_shares"), std::string::npos);
+  EXPECT_THROW(complete_strands(in, bad_arms), Error);
   in.head_center = Vec2(std::nan(""), 1);
   EXPECT_THROW(complete_strands(in), Error);
   EXPECT_THROW(assign_outline_pixels(d.image, wrong, 4, 140), Error);

@@ -24,4 +24,10 @@ struct CubicBezier {
 CubicBezier join_bezier(const Vec2& start, const Vec2& start_tangent, const Vec2& end,
                         const Vec2& end_tangent, double handle_scale = 1.0);
 
+// The same cubic with handles of their own lengths: `start_share` and
+// `end_share` of the chord (join_bezier's are a third each). Another guess
+// at the hidden shape of the strand, C¹ with the curves it joins as well.
+CubicBezier join_bezier_arms(const Vec2& start, const Vec2& start_tangent, const Vec2& end,
+                             const Vec2& end_tangent, double start_share, double end_share);
+
 }  // namespace hair25d::completion

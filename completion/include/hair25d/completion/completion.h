@@ -35,7 +35,13 @@ struct Options {
   double max_join_angle_deg = 70.0;   // tangent vs the join chord, at each end
   double max_colour_distance = 90.0;  // RGB distance of the pieces' colours
   double min_join_coverage = 0.85;    // share of the join patch under occluders
-  double min_width_ratio = 0.2;       // narrower / wider occluding edge
+  // Tangent arms (shares of the chord, at each piece's end) tried for the
+  // join patch's two Bézier sides when the patch of join_bezier's arms (a
+  // third) lies under min_join_coverage: the hidden strand may take any
+  // smooth path under the occluders, and the patch of the best covered
+  // shape is judged and drawn. Empty: the third only.
+  std::vector<double> join_arm_shares = {0.2, 1.0 / 3.0, 0.5, 0.7};
+  double min_width_ratio = 0.2;  // narrower / wider occluding edge
   double max_join_cost = 2.4;
   JoinScorerOptions join_scorer;  // a learned scorer for ambiguous strand joins
   // Back-hair pieces on opposite sides of the face joined across it (the
