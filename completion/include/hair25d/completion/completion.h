@@ -39,7 +39,11 @@ struct Options {
   // join patch's two Bézier sides when the patch of join_bezier's arms (a
   // third) lies under min_join_coverage: the hidden strand may take any
   // smooth path under the occluders, and the patch of the best covered
-  // shape is judged and drawn. Empty: the third only.
+  // shape is judged and drawn; such a candidate joins by the hand cost
+  // alone (not the scorer's band), off screentone drawings, from a patch
+  // cover of 0.6 (joins.cpp). Empty: the third only. Session 30 (joins68):
+  // +101 right pairs over 22 dev and fresh runs of both relations, 5 wrong
+  // added and 5 removed (docs/completion-record.md).
   std::vector<double> join_arm_shares = {0.2, 1.0 / 3.0, 0.5, 0.7};
   double min_width_ratio = 0.2;  // narrower / wider occluding edge
   double max_join_cost = 2.4;
