@@ -163,6 +163,10 @@ constexpr double kUnevenCostShare = 0.5;
 // strands spent 51 of its 52 ms of shapes on them.
 constexpr double kMinCoverToReshape = 0.6;
 
+// What a join costs for each share of its patch off the occluders (§5.1's
+// cover term), the same for the patch drawn and for another shape tried.
+constexpr double kUncoveredCost = 3.0;
+
 // Joins across a cut of ink only (`Edge::ink`, find_ink_edges): the pieces
 // face each other across a crossing tip, so their cut chords are short (at
 // most kMaxInkJoinGap px on average), and pieces of flat paint step at most
@@ -540,15 +544,15 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           // under max_join_cost: the scorer never saw such patches, and in
           // its band they let in wrong joins (dev mixed 2000: +7 right / +0
           // wrong by the hand cost, −1 / +2 more from the band). Not on
-          // screentone drawings, where no net vetoes a hand-cost join (the
-          // retrained net's veto is off there): dev screentone 2099 took a
-          // wrong one at hand cost 2.38 (+6 wrong pairs with the layering's
-          // relations, +7 over the set against +8 right).
+          // screentone drawings: dev screentone 2099 took a wrong one at
+          // hand cost 2.38 (+6 wrong pairs with the layering's relations),
+          // and with the screentone net's veto (session 30) the shapes there
+          // still bought 32 right and 18 wrong pairs over six dev runs.
           if (cover < o.min_join_coverage && cover >= kMinCoverToReshape &&
               !o.join_arm_shares.empty() && !tones.screentone() && cost <= o.max_join_cost) {
             const JoinShape shape = best_join_shape(ctx, a, b, cover_face, ink, o.join_arm_shares);
             if (shape.cover >= o.min_join_coverage &&
-                cost + 3.0 * (1.0 - shape.cover) <= o.max_join_cost) {
+                cost + kUncoveredCost * (1.0 - shape.cover) <= o.max_join_cost) {
               join.patch = join_patch(a, b, shape.share_a, shape.share_b);
               lowest.clear();
               under_by.clear();
@@ -569,7 +573,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
             why = JoinStage::kOtherBack;
           cost = cover < o.min_join_coverage || over_other_back
                      ? std::numeric_limits<double>::infinity()
-                     : cost + 3.0 * (1.0 - cover);
+                     : cost + kUncoveredCost * (1.0 - cover);
           if (scoring && std::isfinite(cost)) {
             terms = JoinTerms{mean_angle / max_angle,
                               worst_angle / max_angle,
