@@ -85,7 +85,7 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   // screentone net on it (session 30), each with its own bars.
   const JoinScorerNet& edge_net = screentone ? screentone_join_scorer() : retrained_join_scorer();
   const double veto_below = screentone ? s.screentone_veto_below : s.veto_below;
-  const double rescue_threshold = screentone ? s.screentone_rescue_threshold : s.rescue_threshold;
+  const double rescue_threshold = rescue_threshold_for(s, screentone);
   // Session 25: the ensemble may rescue what the default net refuses.
   using Ensemble = JoinScorerOptions::Ensemble;
   // Session 26: with kEach, the paint ensemble on the drawings without

@@ -17,6 +17,14 @@ namespace hair25d::completion::detail {
 // the scorer's probability reaches this.
 inline constexpr double kUnevenThreshold = 0.2;
 
+// The bar a candidate over the band must reach to be joined (the retrained
+// net's off screentone, session 29; the screentone net's on it, session 30);
+// 1 or more means no rescue on such drawings. match_edges reads it to know
+// how far to look, score_candidates to judge.
+inline double rescue_threshold_for(const JoinScorerOptions& s, bool screentone) {
+  return screentone ? s.screentone_rescue_threshold : s.rescue_threshold;
+}
+
 // The scorer's inputs of session 17 (join_features.h): the dots' tone match
 // and steps on a screentone drawing, and how the covered part of the patch
 // (`under_by`: pixels per occluder) falls to its occluders.

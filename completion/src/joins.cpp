@@ -335,10 +335,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   const bool scoring = scorer.enabled || ctx.join_log != nullptr;
   // Session 29: up to rescue_high where the retrained net judges over the
   // band (and where candidates are recorded, for its training).
-  const bool rescue =
-      scorer.rescue_high > scorer.band_high &&
-      ((scorer.enabled && (!tones.screentone() || scorer.screentone_rescue_threshold < 1)) ||
-       ctx.join_log != nullptr);
+  const bool rescue = scorer.rescue_high > scorer.band_high &&
+                      ((scorer.enabled && rescue_threshold_for(scorer, tones.screentone()) < 1) ||
+                       ctx.join_log != nullptr);
   const double limit = !scoring ? o.max_join_cost
                        : rescue ? std::max(o.max_join_cost, scorer.rescue_high)
                                 : std::max(o.max_join_cost, scorer.band_high);

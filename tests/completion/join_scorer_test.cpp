@@ -319,6 +319,16 @@ TEST(JoinScorer, TrainerLearnsAPlantedRule) {
   EXPECT_LT(blind_right, 750);
 }
 
+// A committed weights file is `net` printed again under `function`, byte
+// for byte below its comment.
+void expect_committed(const JoinScorerNet& net, const std::string& function,
+                      const std::string& file) {
+  const std::string printed = join_scorer_source(net, "x", function);
+  EXPECT_NE(printed.find(function + "()"), std::string::npos) << file;
+  EXPECT_EQ(test::generated_part(test::committed_source(file)), test::generated_part(printed))
+      << file;
+}
+
 TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
   std::vector<JoinFeatures> x;
   std::vector<int> y;
@@ -335,25 +345,15 @@ TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
   const std::string printed = test::generated_part(join_scorer_source(default_join_scorer(), "x"));
   EXPECT_FALSE(printed.empty());
   EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_weights.cpp")), printed);
-  // And the net for candidates over the angle limit (session 18).
-  const std::string wide = join_scorer_source(wide_join_scorer(), "x", "wide_join_scorer");
-  EXPECT_NE(wide.find("wide_join_scorer()"), std::string::npos);
-  EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_wide_weights.cpp")),
-            test::generated_part(wide));
-  // And the net retrained for the drawings without screentone (session 29).
-  const std::string retrained =
-      join_scorer_source(retrained_join_scorer(), "x", "retrained_join_scorer");
-  EXPECT_NE(retrained.find("retrained_join_scorer()"), std::string::npos);
+  // And the other nets, each under its own function name.
+  expect_committed(wide_join_scorer(), "wide_join_scorer",
+                   "join_scorer_wide_weights.cpp");  // over the angle limit (session 18)
+  expect_committed(retrained_join_scorer(), "retrained_join_scorer",
+                   "join_scorer_retrained_weights.cpp");  // off screentone (session 29)
+  expect_committed(screentone_join_scorer(), "screentone_join_scorer",
+                   "join_scorer_screentone_weights.cpp");  // on screentone (session 30)
   EXPECT_NE(retrained_join_scorer().w1[0][0], default_join_scorer().w1[0][0]);
-  EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_retrained_weights.cpp")),
-            test::generated_part(retrained));
-  // And the net of the screentone drawings' candidates (session 30).
-  const std::string screentone =
-      join_scorer_source(screentone_join_scorer(), "x", "screentone_join_scorer");
-  EXPECT_NE(screentone.find("screentone_join_scorer()"), std::string::npos);
   EXPECT_NE(screentone_join_scorer().w1[0][0], retrained_join_scorer().w1[0][0]);
-  EXPECT_EQ(test::generated_part(test::committed_source("join_scorer_screentone_weights.cpp")),
-            test::generated_part(screentone));
 }
 
 // A strand that turns a corner under a band (session 18): piece 1 comes
