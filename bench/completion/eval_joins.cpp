@@ -238,6 +238,9 @@ int main(int argc, char** argv) {
                "no joins of back-hair pieces through the regions above both");
   app.add_option("--min-join-coverage", options.min_join_coverage,
                  "completion::Options::min_join_coverage");
+  app.add_option("--cover-fringe", options.cover_fringe,
+                 "completion::Options::cover_fringe: label-0 pixels this near a region count as "
+                 "its own in the cover test");
   app.add_option("--join-arm-shares", options.join_arm_shares,
                  "completion::Options::join_arm_shares: tangent arms (shares of the chord) tried "
                  "where the join patch lies under min_join_coverage, e.g. 0.2 0.33 0.5 0.7")

@@ -10,6 +10,7 @@
 
 #include "bank_crossings.h"
 #include "context.h"
+#include "cover_labels.h"
 #include "face_joins.h"
 #include "hair25d/core/error.h"
 #include "hair25d/core/firm_equal.h"
@@ -339,9 +340,14 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
     if (r.relation != Relation::kEqual && !remote(r, touching) && firm(r))
       firm_occluders[r.relation == Relation::kBelow ? r.a : r.b].insert(
           r.relation == Relation::kBelow ? r.b : r.a);
-  std::map<int, std::set<int>> occluders;
+  std::map<int, std::set<int>> occluders, user_occluders;
   for (const auto& [id, info] : ctx.regions) occluders[id] = info.occluders;
+  for (const RegionRelation& r : relations)
+    if (r.relation != Relation::kEqual && r.user_fixed)
+      user_occluders[r.relation == Relation::kBelow ? r.a : r.b].insert(
+          r.relation == Relation::kBelow ? r.b : r.a);
   ctx.above = chains_above(occluders);
+  ctx.user_above = chains_above(user_occluders);
   return chains_above(firm_occluders);
 }
 
@@ -375,6 +381,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // (region paint only: no relation is read).
   detail::RegionTones tones(ctx);
   detail::RegionFields fields(ctx);
+  if (options.cover_fringe > 0 && tones.screentone())
+    ctx.cover_labels = detail::fringe_labels(ctx.labels, options.cover_fringe);
   const std::map<int, std::set<int>> firm_above =
       read_relations(input.relations, touching, tones, fields, ctx, strands, result);
   const auto firmly_above = [&](int upper, int region) {

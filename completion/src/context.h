@@ -49,6 +49,10 @@ struct Context {
   const Image* image = nullptr;
   const LabelMap* original = nullptr;  // as given (0 on outlines)
   LabelMap labels;                     // outlines assigned
+  // What the cover test reads: `labels` with the outlines' light fringe
+  // given to the nearest region (Options::cover_fringe); empty: `labels`.
+  LabelMap cover_labels;
+  const LabelMap& cover_map() const { return cover_labels.empty() ? labels : cover_labels; }
   std::map<int, RegionInfo> regions;
   Vec2 head{0, 0};
   const Options* options = nullptr;
@@ -72,6 +76,13 @@ struct Context {
   bool is_above(int upper, int region) const {
     auto it = above.find(region);
     return it != above.end() && it->second.count(upper) > 0;
+  }
+  // region -> regions above it through chains of the user's orders
+  // (RegionRelation::user_fixed: fixed in the studio, or an annotation's).
+  std::map<int, std::set<int>> user_above;
+  bool is_user_above(int upper, int region) const {
+    auto it = user_above.find(region);
+    return it != user_above.end() && it->second.count(upper) > 0;
   }
   // Orders between regions that do not touch (completion.cpp `remote`;
   // smaller id first): occluders, but they do not keep two pieces' edges

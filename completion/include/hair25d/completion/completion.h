@@ -24,6 +24,10 @@ struct Options {
   // many pixels first (FORMATS.md).
   int outline_reach = 4;
   int dark_luma = 140;  // a pixel darker than this (0..255) can be an outline pixel
+  // The cover test (min_join_coverage) reads label-0 pixels this near a
+  // labelled one as that label's, whatever their luma: the outlines' light
+  // anti-aliased fringe lies in no region of the map. 0 reads them as holes.
+  int cover_fringe = 0;
   // A region's boundary pixel is occluded when an occluder pixel lies within
   // this many pixels; occluding runs closer than `merge_gap` are merged.
   int occluder_reach = 2;
