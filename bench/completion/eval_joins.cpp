@@ -276,6 +276,8 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::max_angle_deg");
   app.add_option("--scorer-wide-threshold", options.join_scorer.wide_threshold,
                  "JoinScorerOptions::wide_threshold");
+  app.add_option("--scorer-side-threshold", options.join_scorer.side_threshold,
+                 "JoinScorerOptions::side_threshold: side-tangent candidates (1 = off)");
   app.add_option("--scorer-refuse-below", options.join_scorer.refuse_below,
                  "JoinScorerOptions::refuse_below");
   app.add_option("--scorer-veto-low", options.join_scorer.veto_low, "JoinScorerOptions::veto_low");

@@ -43,6 +43,13 @@ struct Edge {
   // occluders of it, across a cut of drawn ink only (with, for a whole cut,
   // the occluded runs beside it); empty for an occluding edge.
   std::set<int> ink;
+  // Session 31: the edge's end tangents measured unreliable (they part by
+  // over kBentEndsDeg, or an end has no arm), and the strand's direction at
+  // the cut read from both side outlines instead: the midpoints of the two
+  // runs leaving p and q, paired by arc length, trace the strand's middle
+  // line (unit, into the hidden part; zero when the runs are too short).
+  bool unreliable = false;
+  Vec2 side_tangent{0, 0};
 };
 
 struct Context {
@@ -134,6 +141,10 @@ struct Join {
   // Off the gradient by windows of uneven slopes: the scorer alone may join
   // it, at kUnevenThreshold (joins.cpp).
   bool uneven_gradient = false;
+  // Session 31 (Options::side_tangents): refused by the angle with the
+  // edges' own tangents, within it with an unreliable edge's side tangent;
+  // the scorer alone may join it (JoinScorerOptions::side_threshold).
+  bool side_tangent = false;
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
 // records) or refuses joining the strands of regions a and b. `face` (CV_8U,

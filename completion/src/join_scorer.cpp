@@ -145,6 +145,8 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("wide_band_high = " + num(wide_band_high) + "; must be in [0, 100)");
   if (!(wide_threshold > 0 && wide_threshold < 1))
     return fail("wide_threshold = " + num(wide_threshold) + "; must be in (0, 1)");
+  if (!(side_threshold > 0 && side_threshold <= 1))
+    return fail("side_threshold = " + num(side_threshold) + "; must be in (0, 1]");
   if (!(crop_size >= 0 && crop_size <= 512))
     return fail("crop_size = " + std::to_string(crop_size) + "; must be in [0, 512]");
   return true;

@@ -63,20 +63,26 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   // wide_band_high (as the wide net was).
   std::vector<double> inner = costs;
   bool any_wide = false;
+  // Session 31: a side-tangent candidate is no rival of the others (their
+  // features and decisions stay as without it); its own rivals are all of
+  // the band.
+  auto apart = [&](std::size_t k) {
+    const Join& j = (*candidates)[which[k]];
+    return j.wide || j.side_tangent;
+  };
   for (std::size_t k = 0; k < which.size(); ++k)
-    if ((*candidates)[which[k]].wide)
-      inner[k] = std::numeric_limits<double>::infinity(), any_wide = true;
+    if (apart(k)) inner[k] = std::numeric_limits<double>::infinity(), any_wide = true;
   if (any_wide) {
     std::vector<JoinFeatures> all = features;
     add_rival_features(costs, ends, std::max(s.band_high, s.wide_band_high), &all);
     for (std::size_t k = 0; k < which.size(); ++k)
-      if ((*candidates)[which[k]].wide) features[k] = all[k];
+      if (apart(k)) features[k] = all[k];
   }
   {
     std::vector<JoinFeatures> own = features;
     add_rival_features(inner, ends, s.band_high, &own);
     for (std::size_t k = 0; k < which.size(); ++k)
-      if (!(*candidates)[which[k]].wide) features[k] = own[k];
+      if (!apart(k)) features[k] = own[k];
   }
   const JoinScorerNet& net = retrained                         ? retrained_join_scorer()
                              : screentone && s.screentone_band ? screentone_join_scorer()
@@ -105,7 +111,15 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
-    if (j.wide) {
+    if (j.side_tangent) {
+      // Session 31: an angle refusal undone by a side tangent joins only by
+      // the band's net at side_threshold, within the band's top, ranked as
+      // the band's rescues; never by the hand cost.
+      if (s.enabled && j.cost <= s.band_high) p = join_probability(net, features[k]);
+      j.cost = p >= s.side_threshold
+                   ? o.max_join_cost + (s.side_threshold - p) * (s.band_high - s.band_low)
+                   : std::numeric_limits<double>::infinity();
+    } else if (j.wide) {
       // Over the angle limit: the scorer alone joins it.
       // Session 29: joined after every other candidate under the limit
       // (ranked by p among themselves), so that it only takes edges no

@@ -404,47 +404,52 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   for (const Edge& e : edges) edge_count[e.region] += e.atoms.size() == 1;
   std::vector<Join> candidates;
   std::vector<std::optional<JoinTerms>> terms_of;
+  // Session 31 (JoinScorerOptions::side_threshold): side-tangent candidates
+  // off screentone, their edges' copies and the edges they copy.
+  const bool sides = scorer.enabled && scorer.side_threshold < 1 && !tones.screentone();
+  std::vector<Edge> side_edges;
+  std::vector<int> side_origin;
   for (std::size_t i = 0; i < edges.size(); ++i)
     for (std::size_t j = i + 1; j < edges.size(); ++j) {
-      const Edge& a = edges[i];
-      const Edge& b = edges[j];
-      if (a.region == b.region) continue;
+      const Edge& ea = edges[i];
+      const Edge& eb = edges[j];
+      if (ea.region == eb.region) continue;
       // Options::trace_joins: the pair's stage, set by the rule that drops it.
       const int traced = ctx.join_trace ? static_cast<int>(ctx.join_trace->size()) : -1;
-      if (traced >= 0) ctx.join_trace->push_back({a.region, b.region});
+      if (traced >= 0) ctx.join_trace->push_back({ea.region, eb.region});
       const auto drop = [&](JoinStage stage) {
         if (traced >= 0) (*ctx.join_trace)[traced].stage = stage;
       };
-      if (ctx.keeps_apart(a.region, b.region)) {
+      if (ctx.keeps_apart(ea.region, eb.region)) {
         drop(JoinStage::kKeptApart);
         continue;
       }
       // An ink edge joins only a region it faces across the ink.
-      const bool ink = !a.ink.empty() || !b.ink.empty();
-      if (ink && !a.ink.count(b.region) && !b.ink.count(a.region)) {
+      const bool ink = !ea.ink.empty() || !eb.ink.empty();
+      if (ink && !ea.ink.count(eb.region) && !eb.ink.count(ea.region)) {
         drop(JoinStage::kInkFacing);
         continue;
       }
-      const double colour = (a.colour - b.colour).norm();
+      const double colour = (ea.colour - eb.colour).norm();
       if (colour > o.max_colour_distance) {
         drop(JoinStage::kColour);
         continue;
       }
       BankJoin bank;
-      if (a.atoms.size() == 1 && b.atoms.size() == 1 && !ink)
-        bank = bank_join(crossings[i], crossings[j], a, b);
+      if (ea.atoms.size() == 1 && eb.atoms.size() == 1 && !ink)
+        bank = bank_join(crossings[i], crossings[j], ea, eb);
       // p_a ↔ q_b and p_b ↔ q_a: the outlines traverse both pieces the same way.
-      const Vec2 c1 = b.q - a.p, c2 = a.q - b.p;
-      const double angles[4] = {angle(a.tangent_p, c1), angle(-b.tangent_q, c1),
-                                angle(b.tangent_p, c2), angle(-a.tangent_q, c2)};
-      const double worst = *std::max_element(angles, angles + 4);
-      const double wide = std::max(a.width, b.width), narrow = std::min(a.width, b.width);
+      const Vec2 c1 = eb.q - ea.p, c2 = ea.q - eb.p;
+      double angles[4] = {angle(ea.tangent_p, c1), angle(-eb.tangent_q, c1),
+                          angle(eb.tangent_p, c2), angle(-ea.tangent_q, c2)};
+      double worst = *std::max_element(angles, angles + 4);
+      const double wide = std::max(ea.width, eb.width), narrow = std::min(ea.width, eb.width);
       // A wide piece's side under a strand (tangents only guessed) is no cut
       // across a strand: on the annotated cases such edges joined the cap to
       // the bangs in front of it.
-      const bool cut_pair = !a.guessed && !b.guessed && wide > 0 &&
+      const bool cut_pair = !ea.guessed && !eb.guessed && wide > 0 &&
                             narrow / wide >= o.min_width_ratio &&
-                            !segments_cross(a.p, b.q, b.p, a.q);
+                            !segments_cross(ea.p, eb.q, eb.p, ea.q);
       // A nub's tangents say nothing; the other piece's alone (its two
       // angles: a's are 0 and 3, b's 1 and 2).
       std::optional<double> one_sided;
@@ -456,8 +461,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                  ctx.regions.at(e.region).pixels < kNubDepth * e.width * e.width;
         };
         const double limit_one = kOneSidedAngleDeg * M_PI / 180.0;
-        if (nub(a) && side_b <= limit_one) one_sided = side_b;
-        if (nub(b) && side_a <= limit_one && (!one_sided || side_a < *one_sided))
+        if (nub(ea) && side_b <= limit_one) one_sided = side_b;
+        if (nub(eb) && side_a <= limit_one && (!one_sided || side_a < *one_sided))
           one_sided = side_a;
       }
       // A cut of ink only runs across a strand, not along it: both pieces
@@ -465,15 +470,46 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       // width²); a run along a strand's side beside another strand, ink
       // between them all along, is as long as the strand and as shallow.
       const bool across =
-          !ink || (ctx.regions.at(a.region).pixels >= kNubDepth * a.width * a.width &&
-                   ctx.regions.at(b.region).pixels >= kNubDepth * b.width * b.width &&
+          !ink || (ctx.regions.at(ea.region).pixels >= kNubDepth * ea.width * ea.width &&
+                   ctx.regions.at(eb.region).pixels >= kNubDepth * eb.width * eb.width &&
                    0.5 * (c1.norm() + c2.norm()) <= kMaxInkJoinGap);
       const bool strand_like = cut_pair && across && (worst <= max_angle || one_sided);
       // Over the angle limit but within the scorer's (JoinScorerOptions::max_angle_deg).
       const bool wide_angle =
           scoring && cut_pair && across && !strand_like && worst <= wide_max_angle;
+      // Session 31: refused by the angle with the edges' own tangents, an
+      // edge whose tangents are unreliable (Edge::unreliable) may take its
+      // side tangent for both ends; the choice with the smallest worst angle,
+      // if within the limit, is a candidate the scorer alone may join.
+      Edge side_a, side_b;
+      bool side = false;
+      if (sides && cut_pair && across && !strand_like && !wide_angle && !ink &&
+          bank.share < kMinBankShare) {
+        auto usable = [](const Edge& e) { return e.unreliable && e.side_tangent.norm() > 0; };
+        double best = worst;
+        for (int choice = 1; choice <= 3; ++choice) {
+          const bool on_a = choice & 1, on_b = choice & 2;
+          if ((on_a && !usable(ea)) || (on_b && !usable(eb))) continue;
+          const Vec2 ap = on_a ? ea.side_tangent : ea.tangent_p;
+          const Vec2 aq = on_a ? ea.side_tangent : ea.tangent_q;
+          const Vec2 bp = on_b ? eb.side_tangent : eb.tangent_p;
+          const Vec2 bq = on_b ? eb.side_tangent : eb.tangent_q;
+          const double tried[4] = {angle(ap, c1), angle(-bq, c1), angle(bp, c2), angle(-aq, c2)};
+          const double w = *std::max_element(tried, tried + 4);
+          if (w > max_angle || w >= best) continue;
+          best = w;
+          side = true;
+          side_a = ea, side_b = eb;
+          side_a.tangent_p = ap, side_a.tangent_q = aq;
+          side_b.tangent_p = bp, side_b.tangent_q = bq;
+          std::copy(tried, tried + 4, angles);
+        }
+        if (side) worst = best;
+      }
+      const Edge& a = side ? side_a : ea;
+      const Edge& b = side ? side_b : eb;
       if (traced >= 0) (*ctx.join_trace)[traced].angle_deg = worst * 180.0 / M_PI;
-      if (!strand_like && !wide_angle && bank.share < kMinBankShare) {
+      if (!strand_like && !wide_angle && !side && bank.share < kMinBankShare) {
         drop(a.guessed || b.guessed                              ? JoinStage::kGuessed
              : !(wide > 0 && narrow / wide >= o.min_width_ratio) ? JoinStage::kWidthRatio
              : !cut_pair                                         ? JoinStage::kCrossingChords
@@ -499,8 +535,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                                 (front.count(a.region) > 0 || front.count(b.region) > 0)) ||
                                (step.off_gradient && !uneven) ||
                                (ink && step.flat && step.step > kMaxInkFlatStep);
-      if ((strand_like || wide_angle) && other_paint) why = JoinStage::kOtherPaint;
-      if ((strand_like || wide_angle) && !other_paint) {
+      if ((strand_like || wide_angle || side) && other_paint) why = JoinStage::kOtherPaint;
+      if ((strand_like || wide_angle || side) && !other_paint) {
         // The hidden part keeps a strand's width: half-way along the joins its
         // width lies near the widths at the two cuts (criterion 3 of §5.1 seen
         // from the whole join, not only its ends).
@@ -649,6 +685,19 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       } else if (wide_angle && std::isfinite(cost)) {
         join.wide = true;
       }
+      // Scored with its side tangents: its edges are copies at the end of
+      // the scored list, mapped back to their own after scoring.
+      // Unscored (over the limit before the cover), it is dropped.
+      if (side && !terms) cost = std::numeric_limits<double>::infinity();
+      if (side && terms && cost <= limit) {
+        join.side_tangent = true;
+        join.edge_a = static_cast<int>(edges.size() + side_edges.size());
+        side_edges.push_back(std::move(side_a));
+        join.edge_b = static_cast<int>(edges.size() + side_edges.size());
+        side_edges.push_back(std::move(side_b));
+        side_origin.push_back(static_cast<int>(i));
+        side_origin.push_back(static_cast<int>(j));
+      }
       if (cost > (join.wide ? wide_limit : limit)) {
         drop(why);
         continue;
@@ -660,9 +709,19 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       candidates.push_back(std::move(join));
       terms_of.push_back(terms);
     }
-  if (scoring)
+  if (scoring && side_edges.empty())
     score_candidates(ctx, edges, front, edge_count, terms_of, tones.screentone(),
                      shadow.squaredNorm() > 0, &candidates);
+  if (scoring && !side_edges.empty()) {
+    std::vector<Edge> scored = edges;
+    scored.insert(scored.end(), side_edges.begin(), side_edges.end());
+    score_candidates(ctx, scored, front, edge_count, terms_of, tones.screentone(),
+                     shadow.squaredNorm() > 0, &candidates);
+    const int own = static_cast<int>(edges.size());
+    for (Join& x : candidates)
+      for (int* e : {&x.edge_a, &x.edge_b})
+        if (*e >= own) *e = side_origin[*e - own];
+  }
   if (ctx.join_trace)
     for (const Join& x : candidates) {
       if (x.trace < 0) continue;

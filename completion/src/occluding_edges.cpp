@@ -19,6 +19,9 @@ constexpr int kInkSearch = 8;
 // piece is looked for across ink (the drawing's own labels): a crossing
 // tip's ink is assigned to the tip's own region, not to the pieces.
 constexpr int kInkReach = 16;
+// An edge whose two end tangents part by more than this is bent (an arm
+// round a tip or corner: docs/completion-record.md, session 22).
+constexpr double kBentEndsDeg = 45.0;
 
 // Each labelled point of a closed contour takes the label most of its five
 // neighbours (itself and two either side) carry, so that one stray pixel at a
@@ -118,6 +121,30 @@ Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<i
   e.guessed = !has_p && !has_q && !enclosed;
   if (!has_p) e.tangent_p = has_q ? e.tangent_q : out;
   if (!has_q) e.tangent_q = has_p ? e.tangent_p : out;
+  // Session 31: the end tangents are unreliable when an end has no arm or
+  // the two ends' own fits part by over kBentEndsDeg (an arm round a tip or
+  // a small piece's corner; a band's two sides run roughly parallel). The
+  // strand's direction is then read from both sides at once: the midpoint
+  // of the two runs leaving p and q, k px of outline from each end, traces
+  // the piece's middle line, which a corner on one side bends only half as
+  // much and which needs no arm of its own at either end.
+  e.unreliable = !e.guessed && (!has_p || !has_q ||
+                                e.tangent_p.dot(e.tangent_q) < std::cos(kBentEndsDeg * M_PI / 180));
+  if (e.unreliable) {
+    const int common = std::min(free_before, free_after);
+    const int skip = std::min(3, common / 3), last = std::min(arm + skip, common);
+    if (last - skip >= 2) {
+      Polyline middle;
+      for (int k = skip; k <= last; ++k) middle.push_back(0.5 * (at(begin - k) + at(end + k)));
+      const Vec2 into = middle.front() - middle.back();
+      if (into.norm() > 1.0) e.side_tangent = principal_axis(middle, into);
+    } else if (free_before + free_after >= 4) {
+      // One run too short to pair: the middle of the two runs' far ends
+      // (all the visible outline each has, up to fit_length) to the cut's.
+      const Vec2 into = 0.5 * (e.p + e.q) - 0.5 * (at(begin - free_before) + at(end + free_after));
+      if (into.norm() > 1.0) e.side_tangent = into.normalized();
+    }
+  }
   // Both sides of a band run into the hidden part the same way; opposite
   // tangents mean the shorter visible run turned a corner: trust the longer.
   if (e.tangent_p.dot(e.tangent_q) < -0.3) {

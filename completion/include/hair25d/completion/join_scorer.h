@@ -209,6 +209,13 @@ struct JoinScorerOptions {
   double max_angle_deg = 0.0;
   double wide_band_high = 5.0;
   double wide_threshold = 0.95;
+  // Session 31: an edge pair refused by max_join_angle_deg whose angles lie
+  // within it once an unreliable edge (end tangents parting by over 45°, or
+  // an end without visible outline) takes its side tangent (the middle line
+  // of the two side outlines leaving the cut) for both ends is a candidate
+  // joined only by the band's net at p >= side_threshold (hand cost up to
+  // band_high), off screentone drawings. 1 turns it off.
+  double side_threshold = 1.0;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
