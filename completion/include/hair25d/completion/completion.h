@@ -27,7 +27,12 @@ struct Options {
   // The cover test (min_join_coverage) reads label-0 pixels this near a
   // labelled one as that label's, whatever their luma: the outlines' light
   // anti-aliased fringe lies in no region of the map. 0 reads them as holes.
-  int cover_fringe = 0;
+  // Only on screentone drawings (there the fringe is paper-white and the
+  // cover class is 8 times flat's: dev 64 lost links against 8) and only
+  // where the user's orders put the occluders above a piece (joins.cpp
+  // `users_occluders`; with the layering's orders the fringe let in wrong
+  // joins at a third of those it added).
+  int cover_fringe = 2;
   // A region's boundary pixel is occluded when an occluder pixel lies within
   // this many pixels; occluding runs closer than `merge_gap` are merged.
   int occluder_reach = 2;
