@@ -245,6 +245,10 @@ int main(int argc, char** argv) {
                  "completion::Options::join_arm_shares: tangent arms (shares of the chord) tried "
                  "where the join patch lies under min_join_coverage, e.g. 0.2 0.33 0.5 0.7")
       ->delimiter(',');
+  app.add_option("--corridor-width", options.corridor_width,
+                 "completion::Options::corridor_width (share of the narrower cut; 0: none)");
+  app.add_option("--corridor-min-probability", options.corridor_min_probability,
+                 "completion::Options::corridor_min_probability");
   app.add_flag("--join-scorer,!--no-join-scorer", options.join_scorer.enabled,
                "decide strand joins in the cost band by the learned scorer (join_scorer.h)");
   app.add_option("--scorer-band-low", options.join_scorer.band_low, "JoinScorerOptions::band_low");

@@ -145,6 +145,10 @@ struct Join {
   // edges' own tangents, within it with an unreliable edge's side tangent;
   // the scorer alone may join it (JoinScorerOptions::side_threshold).
   bool side_tangent = false;
+  // Under min_join_coverage, let in by a corridor under the occluders
+  // (Options::corridor_width): joins only at the retrained net's
+  // corridor_min_probability.
+  bool corridor = false;
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
 // records) or refuses joining the strands of regions a and b. `face` (CV_8U,

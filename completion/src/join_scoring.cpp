@@ -163,6 +163,13 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       p = join_probability(edge_net, features[k]);
       if (p < veto_below) j.cost = std::numeric_limits<double>::infinity();
     }
+    // Options::corridor_width: a candidate the corridor let in joins only
+    // when the retrained net finds it likely enough, whatever its cost.
+    if (j.corridor && s.enabled) {
+      const double q = join_probability(retrained_join_scorer(), features[k]);
+      if (q < o.corridor_min_probability) j.cost = std::numeric_limits<double>::infinity();
+      if (p < 0) p = q;
+    }
     j.probability = p;
     if (ctx.join_log == nullptr) continue;
     JoinCandidate c;

@@ -32,6 +32,11 @@ bool Options::is_valid(std::string* error) const {
   for (double share : join_arm_shares)
     if (!(share > 0 && share <= 1.5))
       return fail("join_arm_shares holds " + num(share) + "; each must be in (0, 1.5]");
+  if (!(corridor_width >= 0 && corridor_width <= 2))
+    return fail("corridor_width = " + num(corridor_width) + "; must be in [0, 2]");
+  if (!(corridor_min_probability >= 0 && corridor_min_probability <= 1))
+    return fail("corridor_min_probability = " + num(corridor_min_probability) +
+                "; must be in [0, 1]");
   if (!(min_width_ratio >= 0 && min_width_ratio <= 1))
     return fail("min_width_ratio = " + num(min_width_ratio) + "; must be in [0, 1]");
   if (!(max_join_cost > 0)) return fail("max_join_cost = " + num(max_join_cost) + "; must be > 0");

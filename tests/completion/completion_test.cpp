@@ -578,6 +578,15 @@ TEST(Completion, BadInputThrows) {
   EXPECT_FALSE(bad_arms.is_valid(&why));
   EXPECT_NE(why.find("join_arm_shares"), std::string::npos);
   EXPECT_THROW(complete_strands(in, bad_arms), Error);
+  Options bad_corridor;
+  bad_corridor.corridor_width = -0.5;
+  EXPECT_FALSE(bad_corridor.is_valid(&why));
+  EXPECT_NE(why.find("corridor_width"), std::string::npos);
+  EXPECT_THROW(complete_strands(in, bad_corridor), Error);
+  bad_corridor.corridor_width = 0.5;
+  bad_corridor.corridor_min_probability = 1.5;
+  EXPECT_FALSE(bad_corridor.is_valid(&why));
+  EXPECT_NE(why.find("corridor_min_probability"), std::string::npos);
   in.head_center = Vec2(std::nan(""), 1);
   EXPECT_THROW(complete_strands(in), Error);
   EXPECT_THROW(assign_outline_pixels(d.image, wrong, 4, 140), Error);

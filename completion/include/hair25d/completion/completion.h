@@ -54,6 +54,15 @@ struct Options {
   // +101 right pairs over 22 dev and fresh runs of both relations, 5 wrong
   // added and 5 removed (docs/completion-record.md).
   std::vector<double> join_arm_shares = {0.2, 1.0 / 3.0, 0.5, 0.7};
+  // A strand candidate whose patch (after join_arm_shares) lies under
+  // min_join_coverage is let in when a corridor corridor_width × the
+  // narrower cut wide runs under the occluders from cut to cut (the hidden
+  // strand need not be the patch's shape), off screentone drawings; it keeps
+  // its patch's cover term in the hand cost and joins only when the
+  // retrained net's p (retrained_join_scorer) reaches
+  // corridor_min_probability, whatever its cost. 0: no corridor.
+  double corridor_width = 0.0;
+  double corridor_min_probability = 0.9;
   double min_width_ratio = 0.2;  // narrower / wider occluding edge
   double max_join_cost = 2.4;
   JoinScorerOptions join_scorer;  // a learned scorer for ambiguous strand joins
