@@ -278,8 +278,10 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
     (retrained ? o.join_scorer.retrained_threshold : o.join_scorer.threshold) = threshold;
     o.join_scorer.screentone_threshold = screentone_threshold;
     // The nets' thresholds alone: the ensembles' rescues are
-    // join_scorer_ensemble_test.cpp's.
+    // join_scorer_ensemble_test.cpp's, the side tangents' bar
+    // side_tangent_test.cpp's.
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
+    o.join_scorer.side_threshold = 1.0;
     return complete_strands(test::input_from_case(c), o);
   };
   const JoinScorerOptions s;

@@ -89,6 +89,8 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
       o.join_scorer.record = true;
       o.join_scorer.threshold = o.join_scorer.screentone_threshold = 0.99;
       o.join_scorer.ensemble = ensemble;
+      // Side-tangent candidates have their own bar (side_tangent_test.cpp).
+      o.join_scorer.side_threshold = 1.0;
       o.join_scorer.ensemble_threshold = 0.05;
       o.join_scorer.paint_ensemble_threshold = 0.06;
       o.join_scorer.cel_ensemble_threshold = 0.07;
