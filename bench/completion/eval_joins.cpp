@@ -299,6 +299,20 @@ int main(int argc, char** argv) {
   app.add_flag("--scorer-screentone-band,!--no-scorer-screentone-band",
                options.join_scorer.screentone_band,
                "JoinScorerOptions::screentone_band: the screentone net judges the band there");
+  app.add_flag("--scorer-shaded,!--no-scorer-shaded", options.join_scorer.shaded,
+               "JoinScorerOptions::shaded: the shaded net on two-tone and gradient drawings");
+  app.add_flag("--scorer-shaded-band,!--no-scorer-shaded-band", options.join_scorer.shaded_band,
+               "JoinScorerOptions::shaded_band: the shaded net judges the band there");
+  app.add_flag("--scorer-retrained-shaded,!--no-scorer-retrained-shaded",
+               options.join_scorer.retrained_shaded,
+               "JoinScorerOptions::retrained_shaded: the retrained net judges the band on "
+               "two-tone and gradient drawings");
+  app.add_option("--scorer-shaded-threshold", options.join_scorer.shaded_threshold,
+                 "JoinScorerOptions::shaded_threshold");
+  app.add_option("--scorer-shaded-veto-below", options.join_scorer.shaded_veto_below,
+                 "JoinScorerOptions::shaded_veto_below");
+  app.add_option("--scorer-shaded-rescue-threshold", options.join_scorer.shaded_rescue_threshold,
+                 "JoinScorerOptions::shaded_rescue_threshold");
   app.add_flag("--census", options.trace_joins,
                "Name the stage where each lost link of a true strand was stopped "
                "(Options::trace_joins, tests/completion/join_census.h): a line per link and a "

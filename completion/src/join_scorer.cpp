@@ -139,6 +139,13 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
   if (!(screentone_rescue_threshold > 0 && screentone_rescue_threshold <= 1))
     return fail("screentone_rescue_threshold = " + num(screentone_rescue_threshold) +
                 "; must be in (0, 1]");
+  if (!(shaded_threshold > 0 && shaded_threshold < 1))
+    return fail("shaded_threshold = " + num(shaded_threshold) + "; must be in (0, 1)");
+  if (!(shaded_veto_below >= 0 && shaded_veto_below < 1))
+    return fail("shaded_veto_below = " + num(shaded_veto_below) + "; must be in [0, 1)");
+  if (!(shaded_rescue_threshold > 0 && shaded_rescue_threshold <= 1))
+    return fail("shaded_rescue_threshold = " + num(shaded_rescue_threshold) +
+                "; must be in (0, 1]");
   if (!(max_angle_deg >= 0 && max_angle_deg <= 180))
     return fail("max_angle_deg = " + num(max_angle_deg) + "; must be in [0, 180]");
   if (!(wide_band_high >= 0 && wide_band_high < 100))

@@ -8,6 +8,7 @@
 #include "bank_crossings.h"
 #include "hair25d/completion/join_scorer.h"
 #include "join_crop.h"
+#include "join_paint.h"
 
 namespace hair25d::completion::detail {
 namespace {
@@ -35,16 +36,26 @@ void add_scorer_terms(RegionTones& tones, int ra, int rb, const std::map<int, in
   for (const auto& [l, n] : under_by) t->patch_occluders += 10 * n >= total;
 }
 
+bool shaded_drawing(RegionTones& tones, RegionFields& fields, const Eigen::Vector3d& shadow) {
+  return !tones.screentone() && (shadow.squaredNorm() > 0 || !fields.cels().cel_drawing());
+}
+
 void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                       const std::set<int>& front, const std::map<int, int>& edge_count,
                       const std::vector<std::optional<JoinTerms>>& terms_of, bool screentone,
-                      bool cel, std::vector<Join>* candidates) {
+                      bool shaded, bool cel, std::vector<Join>* candidates) {
   const Options& o = *ctx.options;
   const JoinScorerOptions& s = o.join_scorer;
-  const bool retrained = s.retrained && !screentone;
-  const double threshold = screentone  ? s.screentone_threshold
-                           : retrained ? s.retrained_threshold
-                                       : s.threshold;
+  // Session 31: a shaded drawing's band and edges by the shaded net.
+  const bool shaded_net = s.shaded && shaded && !screentone;
+  const bool shaded_band = shaded_net && s.shaded_band;
+  // Session 31: or the retrained net there (`retrained_shaded`).
+  const bool retrained =
+      !screentone && !shaded_band && (s.retrained || (s.retrained_shaded && shaded));
+  const double threshold = screentone    ? s.screentone_threshold
+                           : shaded_band ? s.shaded_threshold
+                           : retrained   ? s.retrained_threshold
+                                         : s.threshold;
   std::vector<int> which;
   std::vector<double> costs;
   std::vector<std::pair<int, int>> ends;
@@ -86,12 +97,18 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   }
   const JoinScorerNet& net = retrained                         ? retrained_join_scorer()
                              : screentone && s.screentone_band ? screentone_join_scorer()
+                             : shaded_band                     ? shaded_join_scorer()
                                                                : default_join_scorer();
   // The band's edges: the retrained net off screentone (session 29), the
-  // screentone net on it (session 30), each with its own bars.
-  const JoinScorerNet& edge_net = screentone ? screentone_join_scorer() : retrained_join_scorer();
-  const double veto_below = screentone ? s.screentone_veto_below : s.veto_below;
-  const double rescue_threshold = rescue_threshold_for(s, screentone);
+  // screentone net on it (session 30), the shaded net on a shaded drawing
+  // (session 31), each with its own bars.
+  const JoinScorerNet& edge_net = screentone   ? screentone_join_scorer()
+                                  : shaded_net ? shaded_join_scorer()
+                                               : retrained_join_scorer();
+  const double veto_below = screentone   ? s.screentone_veto_below
+                            : shaded_net ? s.shaded_veto_below
+                                         : s.veto_below;
+  const double rescue_threshold = rescue_threshold_for(s, screentone, shaded);
   // Session 25: the ensemble may rescue what the default net refuses.
   using Ensemble = JoinScorerOptions::Ensemble;
   // Session 26: with kEach, the paint ensemble on the drawings without

@@ -3,6 +3,7 @@
 // candidates (join_scorer.h says when and how).
 #pragma once
 
+#include <Eigen/Core>
 #include <map>
 #include <optional>
 #include <set>
@@ -18,12 +19,21 @@ namespace hair25d::completion::detail {
 inline constexpr double kUnevenThreshold = 0.2;
 
 // The bar a candidate over the band must reach to be joined (the retrained
-// net's off screentone, session 29; the screentone net's on it, session 30);
-// 1 or more means no rescue on such drawings. match_edges reads it to know
-// how far to look, score_candidates to judge.
-inline double rescue_threshold_for(const JoinScorerOptions& s, bool screentone) {
-  return screentone ? s.screentone_rescue_threshold : s.rescue_threshold;
+// net's off screentone, session 29; the screentone net's on it, session 30;
+// the shaded net's on a shaded drawing with JoinScorerOptions::shaded,
+// session 31); 1 or more means no rescue on such drawings. match_edges
+// reads it to know how far to look, score_candidates to judge.
+inline double rescue_threshold_for(const JoinScorerOptions& s, bool screentone, bool shaded) {
+  return screentone           ? s.screentone_rescue_threshold
+         : shaded && s.shaded ? s.shaded_rescue_threshold
+                              : s.rescue_threshold;
 }
+
+// Whether a drawing without screentone is shaded (session 31): a cel shadow
+// band (`shadow`, join_paint.h shadow_ratio, not zero) or paint that is not
+// cel (RegionCels::cel_drawing false: gradients). Told from the drawing's
+// paint, never from how it was made; flat drawings are neither.
+bool shaded_drawing(RegionTones& tones, RegionFields& fields, const Eigen::Vector3d& shadow);
 
 // The scorer's inputs of session 17 (join_features.h): the dots' tone match
 // and steps on a screentone drawing, and how the covered part of the patch
@@ -38,6 +48,6 @@ void add_scorer_terms(RegionTones& tones, int ra, int rb, const std::map<int, in
 void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
                       const std::set<int>& front, const std::map<int, int>& edge_count,
                       const std::vector<std::optional<JoinTerms>>& terms_of, bool screentone,
-                      bool cel, std::vector<Join>* candidates);
+                      bool shaded, bool cel, std::vector<Join>* candidates);
 
 }  // namespace hair25d::completion::detail

@@ -351,24 +351,6 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   for (std::size_t i = 0; i < edges.size(); ++i)
     if (edges[i].atoms.size() == 1 && edges[i].ink.empty())
       crossings[i] = cross_occluders(ctx, edges[i]);
-  // The learned scorer (join_scorer.h) sees candidates up to its band's top.
-  const JoinScorerOptions& scorer = o.join_scorer;
-  const bool scoring = scorer.enabled || ctx.join_log != nullptr;
-  // Session 29: up to rescue_high where the retrained net judges over the
-  // band (and where candidates are recorded, for its training).
-  const bool rescue = scorer.rescue_high > scorer.band_high &&
-                      ((scorer.enabled && rescue_threshold_for(scorer, tones.screentone()) < 1) ||
-                       ctx.join_log != nullptr);
-  const double limit = !scoring ? o.max_join_cost
-                       : rescue ? std::max(o.max_join_cost, scorer.rescue_high)
-                                : std::max(o.max_join_cost, scorer.band_high);
-  const double wide_limit = std::max(limit, scorer.wide_band_high);
-  // Session 29: no wide candidates on screentone drawings but to record
-  // them: there the wide net's joins on dev screentone 2000-2099 were 6
-  // right pairs and 2 wrong ones over both relations (none right with the
-  // layering's); on dev mixed, flat and two-tone 56 right and 6 wrong.
-  const double wide_max_angle =
-      tones.screentone() && ctx.join_log == nullptr ? 0.0 : scorer.max_angle_deg * M_PI / 180.0;
   std::vector<EdgePaint> paints(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) paints[i] = edge_paint(ctx, edges[i]);
   std::map<int, RegionPaint> region_paints;
@@ -380,6 +362,28 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   };
   for (const auto& [id, info] : ctx.regions) region_paint_of(id);
   const Eigen::Vector3d shadow = shadow_ratio(region_paints);
+  // Session 31: two-tone (a shadow ratio) and gradient (no cel paint)
+  // drawings, told from the paint, have their own net (join_scorer.h).
+  const bool shaded = shaded_drawing(tones, fields, shadow);
+  // The learned scorer (join_scorer.h) sees candidates up to its band's top.
+  const JoinScorerOptions& scorer = o.join_scorer;
+  const bool scoring = scorer.enabled || ctx.join_log != nullptr;
+  // Session 29: up to rescue_high where the retrained net judges over the
+  // band (and where candidates are recorded, for its training).
+  const bool rescue =
+      scorer.rescue_high > scorer.band_high &&
+      ((scorer.enabled && rescue_threshold_for(scorer, tones.screentone(), shaded) < 1) ||
+       ctx.join_log != nullptr);
+  const double limit = !scoring ? o.max_join_cost
+                       : rescue ? std::max(o.max_join_cost, scorer.rescue_high)
+                                : std::max(o.max_join_cost, scorer.band_high);
+  const double wide_limit = std::max(limit, scorer.wide_band_high);
+  // Session 29: no wide candidates on screentone drawings but to record
+  // them: there the wide net's joins on dev screentone 2000-2099 were 6
+  // right pairs and 2 wrong ones over both relations (none right with the
+  // layering's); on dev mixed, flat and two-tone 56 right and 6 wrong.
+  const double wide_max_angle =
+      tones.screentone() && ctx.join_log == nullptr ? 0.0 : scorer.max_angle_deg * M_PI / 180.0;
   const std::map<int, int> sharing =
       tones.screentone() ? std::map<int, int>{} : paint_sharing(region_paints);
   // One flat paint on both pieces that few regions share (kRarePaintBonus).
@@ -732,12 +736,12 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       terms_of.push_back(terms);
     }
   if (scoring && side_edges.empty())
-    score_candidates(ctx, edges, front, edge_count, terms_of, tones.screentone(),
+    score_candidates(ctx, edges, front, edge_count, terms_of, tones.screentone(), shaded,
                      shadow.squaredNorm() > 0, &candidates);
   if (scoring && !side_edges.empty()) {
     std::vector<Edge> scored = edges;
     scored.insert(scored.end(), side_edges.begin(), side_edges.end());
-    score_candidates(ctx, scored, front, edge_count, terms_of, tones.screentone(),
+    score_candidates(ctx, scored, front, edge_count, terms_of, tones.screentone(), shaded,
                      shadow.squaredNorm() > 0, &candidates);
     const int own = static_cast<int>(edges.size());
     for (Join& x : candidates)

@@ -354,6 +354,10 @@ TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
                    "join_scorer_screentone_weights.cpp");  // on screentone (session 30)
   EXPECT_NE(retrained_join_scorer().w1[0][0], default_join_scorer().w1[0][0]);
   EXPECT_NE(screentone_join_scorer().w1[0][0], retrained_join_scorer().w1[0][0]);
+  expect_committed(shaded_join_scorer(), "shaded_join_scorer",
+                   "join_scorer_shaded_weights.cpp");  // two-tone and gradient (session 31)
+  EXPECT_NE(shaded_join_scorer().w1[0][0], screentone_join_scorer().w1[0][0]);
+  EXPECT_NE(shaded_join_scorer().w1[0][0], retrained_join_scorer().w1[0][0]);
 }
 
 // A strand that turns a corner under a band (session 18): piece 1 comes

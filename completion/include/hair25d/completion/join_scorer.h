@@ -59,6 +59,12 @@ const JoinScorerNet& retrained_join_scorer();
 // JoinScorerOptions::screentone_veto_below and screentone_rescue_threshold
 // say.
 const JoinScorerNet& screentone_join_scorer();
+// Session 31: a net trained on the candidates of two-tone and gradient
+// drawings alone (both relations; generated file
+// join_scorer_shaded_weights.cpp), judging the band and its edges on the
+// drawings told shaded from their paint where JoinScorerOptions::shaded
+// says.
+const JoinScorerNet& shaded_join_scorer();
 // The mean of the nets' probabilities (one net's alone when there is one):
 // a wrong candidate that one training seed happens to trust is refused
 // when the others do not. Throws hair25d::Error for no nets or a feature
@@ -185,6 +191,23 @@ struct JoinScorerOptions {
   // screentone and mixed 9600 and 9700; edges and band together against
   // session 29's main: dev +176 / -74, fresh +158 / -1.
   bool screentone_band = true;
+  // Session 31: on a shaded drawing (two-tone: a cel shadow band; gradient:
+  // paint that is no cel paint; told from the drawing's paint, join_scoring.h
+  // shaded_drawing), shaded_join_scorer judges the band's edges in place of
+  // the retrained net: refused under the limit at p < shaded_veto_below (0:
+  // none is), joined over the band at p >= shaded_rescue_threshold (1: none
+  // is); with shaded_band it also judges the band at shaded_threshold in
+  // place of the default net. Flat and screentone drawings keep their nets.
+  bool shaded = false;
+  bool shaded_band = true;
+  double shaded_threshold = 0.9;
+  double shaded_veto_below = 0.2;
+  double shaded_rescue_threshold = 0.97;
+  // Session 31: `retrained` on shaded drawings only (the retrained net
+  // judges their band at retrained_threshold; flat drawings, where
+  // `retrained` lost precision on the lead's held set, keep the default
+  // net). With shaded_band on, the shaded net judges there instead.
+  bool retrained_shaded = false;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
   // max_angle_deg are strand candidates for the scorer alone: costed as any
