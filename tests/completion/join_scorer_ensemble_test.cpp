@@ -91,6 +91,8 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
       o.join_scorer.ensemble = ensemble;
       // Side-tangent candidates have their own bar (side_tangent_test.cpp).
       o.join_scorer.side_threshold = 1.0;
+      // The default net judges the band of every drawing without screentone.
+      o.join_scorer.retrained_shaded = false;
       o.join_scorer.ensemble_threshold = 0.05;
       o.join_scorer.paint_ensemble_threshold = 0.06;
       o.join_scorer.cel_ensemble_threshold = 0.07;

@@ -25,6 +25,8 @@ Result run(const AnnotatedCase& c, bool shaded, double shaded_threshold, double 
   o.join_scorer.record = true;
   // The nets alone: the ensembles' rescues are join_scorer_ensemble_test.cpp's.
   o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
+  // Side-tangent candidates have their own bar (side_tangent_test.cpp).
+  o.join_scorer.side_threshold = 1.0;
   o.join_scorer.shaded = shaded;
   o.join_scorer.shaded_threshold = shaded_threshold;
   o.join_scorer.shaded_veto_below = veto_below;

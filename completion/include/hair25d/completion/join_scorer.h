@@ -206,8 +206,12 @@ struct JoinScorerOptions {
   // Session 31: `retrained` on shaded drawings only (the retrained net
   // judges their band at retrained_threshold; flat drawings, where
   // `retrained` lost precision on the lead's held set, keep the default
-  // net). With shaded_band on, the shaded net judges there instead.
-  bool retrained_shaded = false;
+  // net). With shaded_band on, the shaded net judges there instead. On
+  // since the lead's held and fresh sets (held mixed, fresh two-tone,
+  // gradient and mixed 10200: +38 right / -4 wrong pairs, held mixed with
+  // the layering's relations -5 right; completion-record.md "Session 31:
+  // the changes together").
+  bool retrained_shaded = true;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
   // max_angle_deg are strand candidates for the scorer alone: costed as any
