@@ -381,10 +381,11 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // (region paint only: no relation is read).
   detail::RegionTones tones(ctx);
   detail::RegionFields fields(ctx);
-  if (options.cover_fringe > 0 && tones.screentone())
-    ctx.cover_labels = detail::fringe_labels(ctx.labels, options.cover_fringe);
   const std::map<int, std::set<int>> firm_above =
       read_relations(input.relations, touching, tones, fields, ctx, strands, result);
+  // Options::cover_fringe: read only under the user's orders (none: no cost).
+  if (options.cover_fringe > 0 && tones.screentone() && !ctx.user_above.empty())
+    ctx.cover_labels = detail::fringe_labels(ctx.labels, options.cover_fringe);
   const auto firmly_above = [&](int upper, int region) {
     const auto it = firm_above.find(region);
     return it != firm_above.end() && it->second.count(upper) > 0;
