@@ -80,8 +80,7 @@ bool corridor_under_occluders(const Context& ctx, const Edge& a, const Edge& b,
     near.setTo(0);
     const int n = static_cast<int>(std::ceil(radius + 1.5));
     cv::polylines(near, cut, false, cv::Scalar(255), 2 * n + 1);
-    const cv::Rect box = cv::boundingRect(cut) + cv::Size(2 * n + 1, 2 * n + 1) -
-                         cv::Point(n, n);
+    const cv::Rect box = cv::boundingRect(cut) + cv::Size(2 * n + 1, 2 * n + 1) - cv::Point(n, n);
     const cv::Rect in = box & cv::Rect(0, 0, w, h);
     std::vector<int> ids;
     for (int y = in.y; y < in.y + in.height; ++y)

@@ -664,9 +664,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
             why = JoinStage::kCover;
           else if (over_other_back)
             why = JoinStage::kOtherBack;
-          cost = uncovered || over_other_back
-                     ? std::numeric_limits<double>::infinity()
-                     : cost + kUncoveredCost * (1.0 - cover);
+          cost = uncovered || over_other_back ? std::numeric_limits<double>::infinity()
+                                              : cost + kUncoveredCost * (1.0 - cover);
           if (scoring && std::isfinite(cost)) {
             terms = JoinTerms{mean_angle / max_angle,
                               worst_angle / max_angle,
