@@ -106,6 +106,24 @@ struct Context {
   }
 };
 
+// Whether a label lies above piece `a` or `b` (never label 0), the
+// relations asked once per label: a patch's box holds few labels.
+class AboveEither {
+ public:
+  AboveEither(const Context& ctx, int a, int b) : ctx_(ctx), a_(a), b_(b) {}
+  bool operator()(int l) {
+    for (const auto& [label, is] : seen_)
+      if (label == l) return is;
+    seen_.push_back({l, l != 0 && (ctx_.is_above(l, a_) || ctx_.is_above(l, b_))});
+    return seen_.back().second;
+  }
+
+ private:
+  const Context& ctx_;
+  int a_, b_;
+  std::vector<std::pair<int, bool>> seen_;
+};
+
 // Region facts and occluding edges (occluding_edges.cpp).
 void describe_regions(Context& ctx);
 // Maximal boundary runs under one occluder each ("atoms"), ids from `first_id`.

@@ -37,13 +37,7 @@ bool corridor_under_occluders(const Context& ctx, const Edge& a, const Edge& b,
   if (w <= 2 || h <= 2 || static_cast<double>(w) * h > kMaxCorridorBox) return false;
   // open: under an occluder or in a piece; piece: in a or b.
   cv::Mat open(h, w, CV_8U, cv::Scalar(0)), piece(h, w, CV_8U, cv::Scalar(0));
-  std::vector<std::pair<int, bool>> above_of;  // label, above a or b (asked once)
-  auto above = [&](int l) {
-    for (const auto& [label, is] : above_of)
-      if (label == l) return is;
-    above_of.push_back({l, l != 0 && (ctx.is_above(l, a.region) || ctx.is_above(l, b.region))});
-    return above_of.back().second;
-  };
+  AboveEither above(ctx, a.region, b.region);
   for (int y = 0; y < h; ++y) {
     std::uint8_t* o = open.ptr<std::uint8_t>(y);
     std::uint8_t* p = piece.ptr<std::uint8_t>(y);

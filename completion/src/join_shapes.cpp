@@ -46,13 +46,7 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
   // counted: a pixel outside both pieces; under: one of those under cover.
   // What the relations say of a label is asked once (a box holds few).
   cv::Mat counted(h, w, CV_8U, cv::Scalar(0)), under(h, w, CV_8U, cv::Scalar(0));
-  std::vector<std::pair<int, bool>> above_of;  // label, above a or b
-  auto above = [&](int l) {
-    for (const auto& [label, is] : above_of)
-      if (label == l) return is;
-    above_of.push_back({l, l != 0 && (ctx.is_above(l, a.region) || ctx.is_above(l, b.region))});
-    return above_of.back().second;
-  };
+  AboveEither above(ctx, a.region, b.region);
   for (int y = 0; y < h; ++y) {
     std::uint8_t* c = counted.ptr<std::uint8_t>(y);
     std::uint8_t* u = under.ptr<std::uint8_t>(y);
