@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -35,6 +36,8 @@ struct Total {
   int refused_right = 0, refused_wrong = 0;
   // --census: lost links (and their pairs) by class, then by the drawing's shading.
   std::map<std::string, std::map<std::string, std::pair<int, int>>> census;
+  // --census: wrong merges (links and pairs) by chosen case-1 joins and by other passes.
+  std::pair<int, int> wrong_chosen{0, 0}, wrong_other{0, 0};
 };
 
 // --census: one line per lost link, counted in `total`.
@@ -55,6 +58,55 @@ void print_census(const AnnotatedCase& c, const completion::Result& r, const std
                   l.best->hole_other);
     if (l.best && l.best->stage == completion::JoinStage::kAtomTaken)
       std::printf(", taken by %d-%d", l.best->rival_a, l.best->rival_b);
+    std::printf("\n");
+  }
+}
+
+// --census: the wrong merges. Within each predicted strand, its regions'
+// true strands are linked first by the case-1 joins chosen across them
+// (each printed with its trace); what stays apart came by another pass
+// (equals, bank, mass, path, face or seam joins), printed with its pairs.
+void print_wrong_merges(const AnnotatedCase& c, const completion::Result& r,
+                        const std::string& name, Total* total) {
+  std::map<int, int> truth;
+  for (const AnnotatedRegion& reg : c.region_list) truth[reg.id] = reg.strand;
+  for (const completion::CompletedStrand& s : r.strands) {
+    std::map<int, int> count;  // regions by true strand
+    for (int id : s.regions)
+      if (truth.count(id)) ++count[truth[id]];
+    if (count.size() < 2) continue;
+    std::map<int, int> parent, size;
+    for (const auto& [t, n] : count) parent[t] = t, size[t] = n;
+    std::function<int(int)> find = [&](int g) {
+      return parent[g] == g ? g : parent[g] = find(parent[g]);
+    };
+    const std::set<int> in(s.regions.begin(), s.regions.end());
+    for (const completion::JoinTrace& t : r.join_trace) {
+      if (t.stage != completion::JoinStage::kChosen) continue;
+      if (!in.count(t.region_a) || !in.count(t.region_b)) continue;
+      const int a = find(truth[t.region_a]), b = find(truth[t.region_b]);
+      if (a == b) continue;
+      const int pairs = size[a] * size[b];
+      parent[a] = b, size[b] += size[a];
+      total->wrong_chosen.first += 1, total->wrong_chosen.second += pairs;
+      std::printf("%s: wrong join %d-%d (%d pairs): cost %.2f, angle %.0f, p %.2f, cover %.2f\n",
+                  name.c_str(), t.region_a, t.region_b, pairs, t.hand_cost, t.angle_deg,
+                  t.probability, t.cover);
+    }
+    std::map<int, std::vector<int>> rest;  // the groups left apart, by their root
+    for (const auto& [t, n] : count) rest[find(t)].push_back(t);
+    if (rest.size() < 2) continue;
+    int pairs = 0, sum = 0;
+    for (const auto& [root, ts] : rest) pairs += sum * size[root], sum += size[root];
+    total->wrong_other.first += static_cast<int>(rest.size()) - 1;
+    total->wrong_other.second += pairs;
+    std::printf("%s: wrong merge by another pass (%d pairs):", name.c_str(), pairs);
+    for (const auto& [root, ts] : rest) {
+      std::printf(" {");
+      for (int id : s.regions)
+        if (truth.count(id) && find(truth[id]) == root) std::printf(" %d", id);
+      std::printf(" }");
+    }
     std::printf("\n");
   }
 }
@@ -163,7 +215,10 @@ void score(const AnnotatedCase& c, Relations relations, const completion::Option
     total->bound.other_linked += b.other_linked;
   }
   const completion::test::PairScore s = completion::test::score_pairs(c, r);
-  if (options.trace_joins) print_census(c, r, name, kind, total);
+  if (options.trace_joins) {
+    print_census(c, r, name, kind, total);
+    print_wrong_merges(c, r, name, total);
+  }
   if (!r.paint_refusals.empty()) {
     std::map<int, int> strand;
     for (const AnnotatedRegion& reg : c.region_list) strand[reg.id] = reg.strand;
@@ -241,6 +296,8 @@ int main(int argc, char** argv) {
   app.add_option("--cover-fringe", options.cover_fringe,
                  "completion::Options::cover_fringe: label-0 pixels this near a region count as "
                  "its own in the cover test");
+  app.add_option("--cover-fringe-layering-cost", options.cover_fringe_layering_cost,
+                 "completion::Options::cover_fringe_layering_cost");
   app.add_option("--join-arm-shares", options.join_arm_shares,
                  "completion::Options::join_arm_shares: tangent arms (shares of the chord) tried "
                  "where the join patch lies under min_join_coverage, e.g. 0.2 0.33 0.5 0.7")
@@ -388,7 +445,12 @@ int main(int argc, char** argv) {
     std::printf("strand paint refusals: %d right, %d wrong\n", total.refused_right,
                 total.refused_wrong);
   if (bound) print_bound("all", total.bound);
-  if (options.trace_joins) print_census_table(total);
+  if (options.trace_joins) {
+    print_census_table(total);
+    std::printf("census: wrong merges: case-1 joins %d (%d pairs), other passes %d (%d pairs)\n",
+                total.wrong_chosen.first, total.wrong_chosen.second, total.wrong_other.first,
+                total.wrong_other.second);
+  }
   if (csv) std::fclose(csv);
   return 0;
 }

@@ -383,8 +383,10 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   detail::RegionFields fields(ctx);
   const std::map<int, std::set<int>> firm_above =
       read_relations(input.relations, touching, tones, fields, ctx, strands, result);
-  // Options::cover_fringe: read only under the user's orders (none: no cost).
-  if (options.cover_fringe > 0 && tones.screentone() && !ctx.user_above.empty())
+  // Options::cover_fringe: read under the user's orders, or the layering's
+  // at a low hand cost (cover_fringe_layering_cost; 0 and no user's: no cost).
+  if (options.cover_fringe > 0 && tones.screentone() &&
+      (!ctx.user_above.empty() || options.cover_fringe_layering_cost > 0))
     ctx.cover_labels = detail::fringe_labels(ctx.labels, options.cover_fringe);
   const auto firmly_above = [&](int upper, int region) {
     const auto it = firm_above.find(region);

@@ -106,6 +106,16 @@ struct Context {
   }
 };
 
+// Whether pixel (x, y) of a join's patch, of label `l`, lies hidden: in a
+// region above a piece (`above`), on the face where the face hides back
+// hair (`face`, empty when it does not), or on the drawn ink across a cut of
+// ink only (`ink`). One rule for the cover, the shapes and the corridor.
+inline bool hidden_pixel(const Context& ctx, bool above, int l, int x, int y, const cv::Mat& face,
+                         bool ink) {
+  return above || (l == 0 && !face.empty() && face.at<std::uint8_t>(y, x)) ||
+         (ink && ctx.original->at(x, y) == 0);
+}
+
 // Whether a label lies above piece `a` or `b` (never label 0), the
 // relations asked once per label: a patch's box holds few labels.
 class AboveEither {
@@ -116,6 +126,10 @@ class AboveEither {
       if (label == l) return is;
     seen_.push_back({l, l != 0 && (ctx_.is_above(l, a_) || ctx_.is_above(l, b_))});
     return seen_.back().second;
+  }
+  // hidden_pixel with this label's relations.
+  bool hides(int l, int x, int y, const cv::Mat& face, bool ink) {
+    return hidden_pixel(ctx_, (*this)(l), l, x, y, face, ink);
   }
 
  private:

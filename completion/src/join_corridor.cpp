@@ -46,8 +46,7 @@ bool corridor_under_occluders(const Context& ctx, const Edge& a, const Edge& b,
       const int l = ctx.labels.at(gx, gy);
       if (l == a.region || l == b.region) {
         o[x] = p[x] = 255;
-      } else if (above(l) || (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ||
-                 (ink && ctx.original->at(gx, gy) == 0)) {
+      } else if (above.hides(l, gx, gy, face, ink)) {
         o[x] = 255;
       }
     }

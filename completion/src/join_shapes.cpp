@@ -59,9 +59,7 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
       const int l = ctx.labels.at(gx, gy);
       if (l == a.region || l == b.region) continue;
       c[x] = 255;
-      if (above(l) || (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ||
-          (ink && ctx.original->at(gx, gy) == 0))
-        u[x] = 255;
+      if (above.hides(l, gx, gy, face, ink)) u[x] = 255;
     }
   }
   cv::Mat mask(h, w, CV_8U), both(h, w, CV_8U);

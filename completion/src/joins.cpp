@@ -289,8 +289,7 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       LabelCount& c = count_of(l);
       ++c.pixels;
       // Across a cut of ink only, the drawn ink is what lies over the gap.
-      if (c.above || (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx)) ||
-          (ink && ctx.original->at(gx, gy) == 0)) {
+      if (hidden_pixel(ctx, c.above, l, gx, gy, face, ink)) {
         ++under;
         ++c.under;  // the face and the ink count as 0
       }
@@ -323,15 +322,18 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
 }
 
 // Whether each label holding a tenth of the patch's covered pixels lies
-// above piece `ra` or `rb` by the user's orders (Context::user_above);
-// label 0, the face or ink, counts.
-bool users_occluders(const Context& ctx, const std::map<int, int>& under_by, int ra, int rb) {
+// above piece `ra` or `rb` by the user's orders (Context::user_above), or
+// by the layering's when `users` is false; label 0, the face or ink, counts.
+bool users_occluders(const Context& ctx, const std::map<int, int>& under_by, int ra, int rb,
+                     bool users = true) {
   int total = 0;
   for (const auto& [l, n] : under_by) total += n;
   if (total == 0) return false;
+  const auto above = [&](int l, int r) {
+    return users ? ctx.is_user_above(l, r) : ctx.is_above(l, r);
+  };
   for (const auto& [l, n] : under_by)
-    if (l != 0 && 10 * n >= total && !ctx.is_user_above(l, ra) && !ctx.is_user_above(l, rb))
-      return false;
+    if (l != 0 && 10 * n >= total && !above(l, ra) && !above(l, rb)) return false;
   return true;
 }
 
@@ -626,16 +628,19 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           // Options::cover_fringe: on screentone the outlines' light fringe
           // lies in no region of the map; read as the nearest region's, it
           // counts under the occluders. Only where every occluder over the
-          // patch lies above a piece by the user's orders: with the
-          // layering's, the fringe let in wrong joins at about a third of
-          // those it added (dev screentone 2000 +53 right / +21 wrong pairs).
+          // patch lies above a piece by the user's orders, or, without
+          // them, by the layering's at a low hand cost: at any cost the
+          // fringe let in wrong joins at about a third of those it added
+          // (dev screentone 2000 +53 right / +21 wrong pairs).
           if (!ctx.cover_labels.empty()) {
             int fringe_hidden = 0;
             std::map<int, int> fringe_under;
             const double fringe_cover =
                 coverage(ctx, join.patch, a.region, b.region, cover_face, &fringe_hidden, nullptr,
                          nullptr, ink, &fringe_under, nullptr, true);
-            if (fringe_cover > cover && users_occluders(ctx, fringe_under, a.region, b.region)) {
+            const bool users = !ctx.user_above.empty();
+            if (fringe_cover > cover && (users || cost <= o.cover_fringe_layering_cost) &&
+                users_occluders(ctx, fringe_under, a.region, b.region, users)) {
               cover = fringe_cover;
               hidden = fringe_hidden;
               if (scoring) under_by = fringe_under;

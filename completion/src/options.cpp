@@ -17,6 +17,9 @@ bool Options::is_valid(std::string* error) const {
     return fail("dark_luma = " + std::to_string(dark_luma) + "; must be in [0, 256]");
   if (cover_fringe < 0 || cover_fringe > 8)
     return fail("cover_fringe = " + std::to_string(cover_fringe) + "; must be in [0, 8]");
+  if (!(cover_fringe_layering_cost >= 0 && cover_fringe_layering_cost <= 100))
+    return fail("cover_fringe_layering_cost = " + num(cover_fringe_layering_cost) +
+                "; must be in [0, 100]");
   if (occluder_reach < 0 || occluder_reach > 16)
     return fail("occluder_reach = " + std::to_string(occluder_reach) + "; must be in [0, 16]");
   if (!(merge_gap >= 0)) return fail("merge_gap = " + num(merge_gap) + "; must be >= 0");

@@ -1,8 +1,10 @@
 // Options::cover_fringe (session 31): the cover test reads the outlines'
 // light fringe, which lies in no region of the map, as the nearest
-// region's, on screentone drawings and under the user's orders only.
+// region's, on screentone drawings, under the user's orders or (session 32)
+// the layering's at a low hand cost.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -52,11 +54,12 @@ std::map<int, int> strand_of(const Result& r) {
   return out;
 }
 
-Result run(const AnnotatedCase& c, int fringe, bool users) {
+Result run(const AnnotatedCase& c, int fringe, bool users, double layering_cost = 0.0) {
   Options o;
   o.inpaint_strands = false;
   o.inpaint_background = false;
   o.cover_fringe = fringe;
+  o.cover_fringe_layering_cost = layering_cost;
   Input in = test::input_from_case(c);
   // The same orders as the layering's (firm, not the user's).
   if (!users)
@@ -79,8 +82,26 @@ TEST(CoverFringe, ScreentoneJoinUnderTheUsersOrders) {
     const std::map<int, int> s = strand_of(run(c, 2, true));
     EXPECT_EQ(s.at(13), s.at(25));
   }
-  // Not the user's orders: the fringe is not read, the strands are main's.
+  // Not the user's orders and no cost for the layering's: the fringe is not
+  // read, the strands are main's.
   EXPECT_EQ(strand_of(run(c, 2, false)), strand_of(run(c, 0, false)));
+}
+
+// Without the user's orders the fringe is read under the layering's at a
+// low hand cost only: dev screentone 2006's 13-25 (one strand) is that
+// cheap; dev screentone 2018's 17 and 25 (two strands) would be joined
+// through the fringe at a higher cost, and stay apart under the cap.
+TEST(CoverFringe, LayeringsOrdersAtALowCost) {
+  {
+    const AnnotatedCase c = test::generated_case(2006, generator::Shading::kScreentone);
+    const std::map<int, int> s = strand_of(run(c, 2, false, 1.5));
+    EXPECT_EQ(s.at(13), s.at(25));
+  }
+  const AnnotatedCase c = test::generated_case(2018, generator::Shading::kScreentone);
+  const std::map<int, int> capped = strand_of(run(c, 2, false, 1.5));
+  EXPECT_NE(capped.at(17), capped.at(25));
+  const std::map<int, int> any = strand_of(run(c, 2, false, 99.0));
+  EXPECT_EQ(any.at(17), any.at(25)) << "the cap, not the cover, keeps them apart";
 }
 
 // Flat drawings do not read the fringe.
@@ -97,6 +118,12 @@ TEST(CoverFringe, BadReachIsRefused) {
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_NE(why.find("cover_fringe = -1"), std::string::npos) << why;
   EXPECT_THROW(complete_strands(test::input_from_case(c), o), Error);
+  Options cost;
+  cost.cover_fringe_layering_cost = -0.5;
+  EXPECT_FALSE(cost.is_valid(&why));
+  EXPECT_NE(why.find("cover_fringe_layering_cost = -0.5"), std::string::npos) << why;
+  cost.cover_fringe_layering_cost = std::nan("");
+  EXPECT_FALSE(cost.is_valid(&why));
 }
 
 }  // namespace

@@ -29,10 +29,15 @@ struct Options {
   // anti-aliased fringe lies in no region of the map. 0 reads them as holes.
   // Only on screentone drawings (there the fringe is paper-white and the
   // cover class is 8 times flat's: dev 64 lost links against 8) and only
-  // where the user's orders put the occluders above a piece (joins.cpp
-  // `users_occluders`; with the layering's orders the fringe let in wrong
-  // joins at a third of those it added).
+  // where the occluders over the patch lie above a piece (joins.cpp
+  // `users_occluders`): by the user's orders when there are some, else by
+  // the layering's and at a hand cost under cover_fringe_layering_cost.
   int cover_fringe = 2;
+  // With the layering's orders the fringe let in wrong joins at a third of
+  // those it added at any cost (dev screentone 2000: +53 right / +21 wrong
+  // pairs); under hand cost 1.5 it added 50 right and 3 wrong pairs on dev
+  // screentone and mixed 2000 and 3000 (session 32). 0: never.
+  double cover_fringe_layering_cost = 1.5;
   // A region's boundary pixel is occluded when an occluder pixel lies within
   // this many pixels; occluding runs closer than `merge_gap` are merged.
   int occluder_reach = 2;
