@@ -350,6 +350,8 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::rescue_threshold");
   app.add_option("--scorer-screentone-veto-below", options.join_scorer.screentone_veto_below,
                  "JoinScorerOptions::screentone_veto_below");
+  app.add_option("--scorer-screentone-veto-low", options.join_scorer.screentone_veto_low,
+                 "JoinScorerOptions::screentone_veto_low");
   app.add_option("--scorer-screentone-rescue-threshold",
                  options.join_scorer.screentone_rescue_threshold,
                  "JoinScorerOptions::screentone_rescue_threshold");

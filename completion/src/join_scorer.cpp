@@ -128,6 +128,8 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
                 num(threshold) + ")]");
   if (!(veto_low >= 0 && veto_low < 100))
     return fail("veto_low = " + num(veto_low) + "; must be in [0, 100)");
+  if (!(screentone_veto_low >= 0 && screentone_veto_low < 100))
+    return fail("screentone_veto_low = " + num(screentone_veto_low) + "; must be in [0, 100)");
   if (!(veto_below >= 0 && veto_below < 1))
     return fail("veto_below = " + num(veto_below) + "; must be in [0, 1)");
   if (!(rescue_high >= 0 && rescue_high < 100))

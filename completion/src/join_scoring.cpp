@@ -108,6 +108,7 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   const double veto_below = screentone   ? s.screentone_veto_below
                             : shaded_net ? s.shaded_veto_below
                                          : s.veto_below;
+  const double veto_low = screentone ? s.screentone_veto_low : s.veto_low;
   const double rescue_threshold = rescue_threshold_for(s, screentone, shaded);
   // Session 25: the ensemble may rescue what the default net refuses.
   using Ensemble = JoinScorerOptions::Ensemble;
@@ -174,7 +175,7 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       p = join_probability(edge_net, features[k]);
       if (p >= rescue_threshold)
         j.cost = o.max_join_cost + (rescue_threshold - p) * (s.band_high - s.band_low);
-    } else if (s.enabled && veto_below > 0 && j.cost >= s.veto_low && j.cost < s.band_low) {
+    } else if (s.enabled && veto_below > 0 && j.cost >= veto_low && j.cost < s.band_low) {
       // Under the limit (session 29): the edges' net may refuse it,
       // whichever net judges the band.
       p = join_probability(edge_net, features[k]);

@@ -326,6 +326,46 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
   }
 }
 
+// Session 32: the veto reaches lower on screentone drawings
+// (screentone_veto_low 0.6 against veto_low 1.4): there a candidate of hand
+// cost 0.6-1.4 is asked, elsewhere it is not.
+TEST(GeneratedCases, ScreentoneVetoReachesLower) {
+  const JoinScorerOptions s;
+  ASSERT_LT(s.screentone_veto_low, s.veto_low);
+  for (const generator::Shading shading :
+       {generator::Shading::kFlat, generator::Shading::kScreentone}) {
+    const bool screentone = shading == generator::Shading::kScreentone;
+    SCOPED_TRACE(testing::Message() << "screentone " << screentone);
+    Options o;
+    o.inpaint_strands = false;
+    o.inpaint_background = false;
+    o.join_scorer.record = true;
+    o.trace_joins = true;
+    int between = 0, vetoed = 0;
+    for (int seed : {2000, 2001, 2004}) {
+      const Result r =
+          complete_strands(test::input_from_case(test::generated_case(seed, shading)), o);
+      for (const JoinCandidate& j : r.join_candidates) {
+        if (!screentone || j.hand_cost < s.screentone_veto_low || j.hand_cost >= s.veto_low)
+          continue;
+        ++between;
+        EXPECT_DOUBLE_EQ(j.probability, join_probability(screentone_join_scorer(), j.features));
+        EXPECT_EQ(std::isinf(j.cost), j.probability < s.screentone_veto_below);
+      }
+      for (const JoinTrace& x : r.join_trace)
+        if (x.stage == JoinStage::kVetoed && x.hand_cost < s.veto_low) {
+          EXPECT_GE(x.hand_cost, s.screentone_veto_low);
+          ++vetoed;
+        }
+    }
+    if (screentone) {
+      EXPECT_GT(between, 0);  // each asked, and refused exactly under the bar
+    } else {
+      EXPECT_EQ(vetoed, 0) << "under veto_low only on screentone";
+    }
+  }
+}
+
 // Session 29: on drawings without screentone the retrained net refuses
 // candidates under the limit with hand cost in [veto_low, band_low) at
 // p < veto_below, and joins candidates over the band up to rescue_high at
@@ -349,6 +389,7 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
     o.join_scorer.retrained = retrained;
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
     o.join_scorer.veto_low = 0.0;
+    o.join_scorer.screentone_veto_low = 0.0;
     o.join_scorer.rescue_high = 5.0;
     o.join_scorer.veto_below = edges == Edges::kOthers ? 0.999 : 0.0;
     o.join_scorer.rescue_threshold = edges == Edges::kOthers ? 0.05 : 0.999999;

@@ -508,6 +508,10 @@ TEST(JoinScorer, BadInputThrows) {
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_NE(why.find("rescue_high"), std::string::npos) << why;
   o = {};
+  o.join_scorer.screentone_veto_low = -0.5;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("screentone_veto_low = -0.5"), std::string::npos) << why;
+  o = {};
   o.join_scorer.screentone_veto_below = 1.0;
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_NE(why.find("screentone_veto_below = 1"), std::string::npos) << why;

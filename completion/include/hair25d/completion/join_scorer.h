@@ -182,6 +182,13 @@ struct JoinScorerOptions {
   // six unchanged; fresh screentone and mixed 9600 and 9700 +6 / -15.
   double screentone_veto_below = 0.35;
   double screentone_rescue_threshold = 0.9;
+  // The veto's lower end on screentone drawings, `veto_low` elsewhere.
+  // Session 32: the screentone net (trained on every candidate up to
+  // band_high) refuses wrong joins under 1.4 too, which frees their edges
+  // for right ones: at 0.6, dev screentone 2000 and 3000 over both
+  // relations +22 right pairs and +1 wrong (docs/completion-record.md
+  // "Session 32: the screentone veto lower").
+  double screentone_veto_low = 0.6;
   // With screentone_band, the screentone net also judges the band there (at
   // screentone_threshold) in place of the default net. joins48 (session 25)
   // lost precision replacing the default net on screentone; with the edges
