@@ -339,6 +339,11 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::wide_threshold");
   app.add_option("--scorer-side-threshold", options.join_scorer.side_threshold,
                  "JoinScorerOptions::side_threshold: side-tangent candidates (1 = off)");
+  app.add_option("--scorer-second-threshold", options.join_scorer.second_threshold,
+                 "JoinScorerOptions::second_threshold: the retrained net's bar for the default "
+                 "net's band refusals on flat drawings (1 = off)");
+  app.add_option("--scorer-second-low", options.join_scorer.second_low,
+                 "JoinScorerOptions::second_low: the band net's least p for a second opinion");
   app.add_option("--scorer-refuse-below", options.join_scorer.refuse_below,
                  "JoinScorerOptions::refuse_below");
   app.add_option("--scorer-veto-low", options.join_scorer.veto_low, "JoinScorerOptions::veto_low");

@@ -7,7 +7,9 @@
 //   train:   reads such CSVs, trains on the rows of the training files in
 //            the cost window, prints how the scorer and the hand cost
 //            separate right from wrong in the band on every file, and writes
-//            the weights as join_scorer_weights.cpp.
+//            the weights as join_scorer_weights.cpp;
+//   probs:   prints every committed net's probability for each row of such a
+//            CSV (session 32: how the nets judge one net's refusals).
 // Training seeds must be disjoint from the evaluation seeds (101–116,
 // 201–216, 301–316, 401–416) and the annotated cases; docs/completion-record.md gives the
 // commands.
@@ -268,6 +270,11 @@ int main(int argc, char** argv) {
                     "ensemble_join_scorers (join_scorer_ensemble_weights.cpp)");
   std::vector<std::string> drop;
   train->add_option("--drop", drop, "Inputs left out (set to 0 everywhere): feature names");
+  // Session 32: every committed net's probability for each row, to compare
+  // the nets' opinions on the candidates one of them refuses.
+  auto* probs = app.add_subcommand("probs", "Print every committed net's probability per row");
+  std::string probs_csv;
+  probs->add_option("--csv", probs_csv, "CSV of collect")->required();
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -287,6 +294,32 @@ int main(int argc, char** argv) {
         for (int k : dropped) r.f[k] = 0;
       return rows;
     };
+    if (*probs) {
+      std::printf(
+          "set,case,a,b,label,hand_cost,default,retrained,screentone,shaded,ensemble,paint\n");
+      std::ifstream in(probs_csv);
+      if (!in) throw std::runtime_error("cannot read " + probs_csv);
+      for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> cells;
+        std::stringstream s(line);
+        for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+        if (cells.size() != 7 + kJoinFeatures)
+          throw std::runtime_error("bad row in " + probs_csv + ": " + std::to_string(cells.size()) +
+                                   " cells; must be " + std::to_string(7 + kJoinFeatures));
+        JoinFeatures f{};
+        for (int k = 0; k < kJoinFeatures; ++k) f[k] = std::stof(cells[7 + k]);
+        std::printf("%s,%s,%s,%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", cells[0].c_str(),
+                    cells[1].c_str(), cells[2].c_str(), cells[3].c_str(), cells[4].c_str(),
+                    cells[5].c_str(),
+                    completion::join_probability(completion::default_join_scorer(), f),
+                    completion::join_probability(completion::retrained_join_scorer(), f),
+                    completion::join_probability(completion::screentone_join_scorer(), f),
+                    completion::join_probability(completion::shaded_join_scorer(), f),
+                    completion::join_probability(completion::ensemble_join_scorers(), f),
+                    completion::join_probability(completion::paint_ensemble_join_scorers(), f));
+      }
+      return 0;
+    }
     if (*collect) {
       std::FILE* f = std::fopen(csv.c_str(), "a");
       if (!f) throw std::runtime_error("cannot write " + csv);

@@ -156,6 +156,10 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("wide_threshold = " + num(wide_threshold) + "; must be in (0, 1)");
   if (!(side_threshold > 0 && side_threshold <= 1))
     return fail("side_threshold = " + num(side_threshold) + "; must be in (0, 1]");
+  if (!(second_low >= 0 && second_low <= 1))
+    return fail("second_low = " + num(second_low) + "; must be in [0, 1]");
+  if (!(second_threshold > 0 && second_threshold <= 1))
+    return fail("second_threshold = " + num(second_threshold) + "; must be in (0, 1]");
   if (!(crop_size >= 0 && crop_size <= 512))
     return fail("crop_size = " + std::to_string(crop_size) + "; must be in [0, 512]");
   return true;

@@ -126,6 +126,14 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   const double ensemble_threshold = !paint_nets ? s.ensemble_threshold
                                     : cel       ? s.cel_ensemble_threshold
                                                 : s.paint_ensemble_threshold;
+  // Session 32: a second opinion on the band's refusals where the default
+  // net judges the band (flat drawings): the retrained net, trained on
+  // eight times its rows. Not the shaded net where the retrained one judges
+  // (shaded drawings): on dev two-tone 3000 one added pair in five was
+  // wrong at 0.85, and at 0.95 it lost a right pair (docs/
+  // completion-record.md "Session 32: a second opinion on the band's
+  // refusals").
+  const bool second = s.second_threshold < 1 && &net == &default_join_scorer() && !screentone;
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
@@ -166,6 +174,11 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       else if (q >= ensemble_threshold)
         j.cost = std::min(j.cost,
                           o.max_join_cost + (ensemble_threshold - q) * (s.band_high - s.band_low));
+      else if (second && p >= s.second_low &&
+               join_probability(retrained_join_scorer(), features[k]) >= s.second_threshold)
+        // After every candidate under the limit, the surest first by the
+        // band's net: it only takes edges no other join wants.
+        j.cost = o.max_join_cost - kWideRankSpan * p;
       else if (p < s.refuse_below)
         j.cost = std::numeric_limits<double>::infinity();
     } else if (s.enabled && rescue_threshold < 1 && !j.uneven_gradient && j.cost > s.band_high &&

@@ -253,6 +253,20 @@ struct JoinScorerOptions {
   // +76 right / +2 wrong pairs over both relations; completion-record.md
   // "Session 31: the changes together").
   double side_threshold = 0.9;
+  // Session 32 (joins74): a second opinion on the band's refusals where
+  // the default net judges the band (flat drawings: not screentone, not
+  // shaded, `retrained` off). A band candidate it refuses with p in
+  // [second_low, threshold) is joined when the retrained net gives
+  // q >= second_threshold; such a join is made after every candidate under
+  // the limit (as a wide one), so it only takes edges no other join wants.
+  // On dev flat 2000 the default net's band refusals at 0.5-0.8 were 120 /
+  // 14 right / wrong candidates, which the retrained net separates (AUC
+  // 0.87; the default net 0.54): at q >= 0.9 it keeps 44 / 0. The shaded net as the
+  // second opinion on shaded drawings lost precision on dev two-tone 3000
+  // (docs/completion-record.md "Session 32: a second opinion on the band's
+  // refusals"). second_threshold 1 turns it off.
+  double second_low = 0.5;
+  double second_threshold = 0.85;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
