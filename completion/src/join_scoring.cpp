@@ -133,7 +133,8 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   // wrong at 0.85, and at 0.95 it lost a right pair (docs/
   // completion-record.md "Session 32: a second opinion on the band's
   // refusals").
-  const bool second = s.second_threshold < 1 && &net == &default_join_scorer() && !screentone;
+  const bool second =
+      s.second_threshold < 1 && &net == &default_join_scorer() && !screentone && !shaded;
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;

@@ -279,9 +279,10 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
     o.join_scorer.screentone_threshold = screentone_threshold;
     // The nets' thresholds alone: the ensembles' rescues are
     // join_scorer_ensemble_test.cpp's, the side tangents' bar
-    // side_tangent_test.cpp's.
+    // side_tangent_test.cpp's, the second opinion's join_scorer_second_test.cpp's.
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
     o.join_scorer.side_threshold = 1.0;
+    o.join_scorer.second_threshold = 1.0;
     return complete_strands(test::input_from_case(c), o);
   };
   const JoinScorerOptions s;

@@ -89,8 +89,10 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
       o.join_scorer.record = true;
       o.join_scorer.threshold = o.join_scorer.screentone_threshold = 0.99;
       o.join_scorer.ensemble = ensemble;
-      // Side-tangent candidates have their own bar (side_tangent_test.cpp).
+      // Side-tangent candidates have their own bar (side_tangent_test.cpp),
+      // and so has the second opinion (join_scorer_second_test.cpp).
       o.join_scorer.side_threshold = 1.0;
+      o.join_scorer.second_threshold = 1.0;
       // The default net judges the band of every drawing without screentone.
       o.join_scorer.retrained_shaded = false;
       o.join_scorer.ensemble_threshold = 0.05;

@@ -245,8 +245,10 @@ TEST(JoinScorer, EnabledScorerDecidesTheBandOnly) {
         o.join_scorer.band_high = 1.8;
         o.join_scorer.threshold = threshold;
         o.join_scorer.refuse_below = refuse_below;
-        // The default net alone (the ensembles: join_scorer_ensemble_test.cpp).
+        // The default net alone (the ensembles: join_scorer_ensemble_test.cpp;
+        // the second opinion: join_scorer_second_test.cpp).
         o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
+        o.join_scorer.second_threshold = 1.0;
         const Result r = complete_strands(test::input_of(d, Vec2(150, 300)), o);
         const JoinCandidate* c = candidate(r, 1, 2);
         ASSERT_NE(c, nullptr);
