@@ -261,10 +261,12 @@ struct JoinScorerOptions {
   // the limit (as a wide one), so it only takes edges no other join wants.
   // On dev flat 2000 the default net's band refusals at 0.5-0.8 were 120 /
   // 14 right / wrong candidates, which the retrained net separates (AUC
-  // 0.87; the default net 0.54): at q >= 0.9 it keeps 44 / 0. The shaded net as the
-  // second opinion on shaded drawings lost precision on dev two-tone 3000
-  // (docs/completion-record.md "Session 32: a second opinion on the band's
-  // refusals"). second_threshold 1 turns it off.
+  // 0.87; the default net 0.54): at q >= 0.9 it keeps 44 / 0. At 0.5 /
+  // 0.85: dev flat and mixed 2000 and 3000 +52 right pairs, 0 wrong; fresh
+  // flat and mixed 10400-10599 +73 / +2 (both relations). The shaded net
+  // as the second opinion on shaded drawings lost precision on dev
+  // two-tone 3000 (docs/completion-record.md "Session 32: a second opinion
+  // on the band's refusals"). second_threshold 1 turns it off.
   double second_low = 0.5;
   double second_threshold = 0.85;
   // Record every strand-join candidate with hand cost ≤ band_high in
