@@ -13,6 +13,7 @@
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/generator/generator.h"
+#include "same_joins.h"
 
 namespace hair25d::completion {
 namespace {
@@ -93,12 +94,7 @@ TEST(JoinScorerShaded, FlatDrawingsKeepTheirNets) {
   const Result off = run(c, false, 0.9, 0.2, 0.97);
   const Result on = run(c, true, 0.05, 0.999, 0.05, true);
   judged_by(on, default_join_scorer(), retrained_join_scorer());
-  ASSERT_EQ(off.join_candidates.size(), on.join_candidates.size());
-  for (std::size_t i = 0; i < on.join_candidates.size(); ++i) {
-    EXPECT_EQ(off.join_candidates[i].cost, on.join_candidates[i].cost);
-    EXPECT_EQ(off.join_candidates[i].chosen, on.join_candidates[i].chosen);
-  }
-  EXPECT_EQ(off.summary, on.summary);
+  test::expect_same_joins(off, on);
 }
 
 TEST(JoinScorerShaded, BadBarsAreRefused) {
