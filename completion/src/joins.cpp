@@ -324,8 +324,8 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
 // Whether each label holding a tenth of the patch's covered pixels lies
 // above piece `ra` or `rb` by the user's orders (Context::user_above), or
 // by the layering's when `users` is false; label 0, the face or ink, counts.
-bool users_occluders(const Context& ctx, const std::map<int, int>& under_by, int ra, int rb,
-                     bool users = true) {
+bool occluders_above_pieces(const Context& ctx, const std::map<int, int>& under_by, int ra, int rb,
+                            bool users) {
   int total = 0;
   for (const auto& [l, n] : under_by) total += n;
   if (total == 0) return false;
@@ -632,15 +632,15 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           // them, by the layering's at a low hand cost: at any cost the
           // fringe let in wrong joins at about a third of those it added
           // (dev screentone 2000 +53 right / +21 wrong pairs).
-          if (!ctx.cover_labels.empty()) {
+          const bool users = !ctx.user_above.empty();
+          if (!ctx.cover_labels.empty() && (users || cost <= o.cover_fringe_layering_cost)) {
             int fringe_hidden = 0;
             std::map<int, int> fringe_under;
             const double fringe_cover =
                 coverage(ctx, join.patch, a.region, b.region, cover_face, &fringe_hidden, nullptr,
                          nullptr, ink, &fringe_under, nullptr, true);
-            const bool users = !ctx.user_above.empty();
-            if (fringe_cover > cover && (users || cost <= o.cover_fringe_layering_cost) &&
-                users_occluders(ctx, fringe_under, a.region, b.region, users)) {
+            if (fringe_cover > cover &&
+                occluders_above_pieces(ctx, fringe_under, a.region, b.region, users)) {
               cover = fringe_cover;
               hidden = fringe_hidden;
               if (scoring) under_by = fringe_under;

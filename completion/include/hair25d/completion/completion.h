@@ -30,7 +30,7 @@ struct Options {
   // Only on screentone drawings (there the fringe is paper-white and the
   // cover class is 8 times flat's: dev 64 lost links against 8) and only
   // where the occluders over the patch lie above a piece (joins.cpp
-  // `users_occluders`): by the user's orders when there are some, else by
+  // `occluders_above_pieces`): by the user's orders when there are some, else by
   // the layering's and at a hand cost under cover_fringe_layering_cost.
   int cover_fringe = 2;
   // With the layering's orders the fringe let in wrong joins at a third of
