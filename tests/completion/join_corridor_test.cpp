@@ -7,6 +7,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "facing_cuts.h"
 #include "join_shapes.h"
 
 namespace hair25d::completion::detail {
@@ -26,15 +27,8 @@ struct Case {
 
 Case make_case(int gap, int centre, bool related = true) {
   Case c;
-  c.a.region = 1;
-  c.a.p = Vec2(40, 60), c.a.q = Vec2(70, 60);
-  c.a.tangent_p = c.a.tangent_q = Vec2(0, 1);
-  c.b.region = 2;
-  c.b.p = Vec2(70, 120), c.b.q = Vec2(40, 120);
-  c.b.tangent_p = c.b.tangent_q = Vec2(0, -1);
-  for (int x = 40; x <= 70; ++x) c.a.points.push_back(Vec2(x, 60));
-  for (int x = 70; x >= 40; --x) c.b.points.push_back(Vec2(x, 120));
-  c.a.width = c.b.width = 30;
+  const FacingCuts cuts = facing_cuts(40);
+  c.a = cuts.a, c.b = cuts.b;
   c.ctx.labels = LabelMap(kWidth, kHeight);
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {

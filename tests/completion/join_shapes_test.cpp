@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "facing_cuts.h"
 #include "hair25d/completion/bezier.h"
 #include "raster.h"
 
@@ -33,14 +34,8 @@ struct Case {
 
 Case make_case(double share_a, double share_b) {
   Case c;
-  c.a.region = 1;
-  c.a.p = Vec2(40, 60), c.a.q = Vec2(70, 60);
-  c.a.tangent_p = c.a.tangent_q = Vec2(0, 1);
-  c.b.region = 2;
-  c.b.p = Vec2(120, 120), c.b.q = Vec2(90, 120);
-  c.b.tangent_p = c.b.tangent_q = Vec2(0, -1);
-  for (int x = 40; x <= 70; ++x) c.a.points.push_back(Vec2(x, 60));
-  for (int x = 120; x >= 90; --x) c.b.points.push_back(Vec2(x, 120));
+  const FacingCuts cuts = facing_cuts(90);
+  c.a = cuts.a, c.b = cuts.b;
   cv::Mat occluder(kHeight, kWidth, CV_8U, cv::Scalar(0));
   fill_polygon(occluder, join_patch(c.a, c.b, share_a, share_b), cv::Point(0, 0), 255);
   c.ctx.labels = LabelMap(kWidth, kHeight);
