@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "hair25d/core/error.h"
+#include "invalid_options.h"
 #include "synthetic.h"
 
 namespace hair25d::completion {
@@ -569,24 +570,19 @@ TEST(Completion, BadInputThrows) {
   in.relations = {};
   Options bad;
   bad.min_join_coverage = 2;
-  std::string why;
-  EXPECT_FALSE(bad.is_valid(&why));
-  EXPECT_NE(why.find("min_join_coverage"), std::string::npos);
+  test::expect_invalid(bad, "min_join_coverage");
   EXPECT_THROW(complete_strands(in, bad), Error);
   Options bad_arms;
   bad_arms.join_arm_shares = {0.2, 0.0};
-  EXPECT_FALSE(bad_arms.is_valid(&why));
-  EXPECT_NE(why.find("join_arm_shares"), std::string::npos);
+  test::expect_invalid(bad_arms, "join_arm_shares");
   EXPECT_THROW(complete_strands(in, bad_arms), Error);
   Options bad_corridor;
   bad_corridor.corridor_width = -0.5;
-  EXPECT_FALSE(bad_corridor.is_valid(&why));
-  EXPECT_NE(why.find("corridor_width"), std::string::npos);
+  test::expect_invalid(bad_corridor, "corridor_width");
   EXPECT_THROW(complete_strands(in, bad_corridor), Error);
   bad_corridor.corridor_width = 0.5;
   bad_corridor.corridor_min_probability = 1.5;
-  EXPECT_FALSE(bad_corridor.is_valid(&why));
-  EXPECT_NE(why.find("corridor_min_probability"), std::string::npos);
+  test::expect_invalid(bad_corridor, "corridor_min_probability");
   in.head_center = Vec2(std::nan(""), 1);
   EXPECT_THROW(complete_strands(in), Error);
   EXPECT_THROW(assign_outline_pixels(d.image, wrong, 4, 140), Error);

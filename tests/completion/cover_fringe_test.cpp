@@ -13,6 +13,7 @@
 #include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
+#include "invalid_options.h"
 
 namespace hair25d::completion {
 namespace {
@@ -114,16 +115,13 @@ TEST(CoverFringe, BadReachIsRefused) {
   const AnnotatedCase c = test::generated_case(2006, generator::Shading::kScreentone);
   Options o;
   o.cover_fringe = -1;
-  std::string why;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("cover_fringe = -1"), std::string::npos) << why;
+  test::expect_invalid(o, "cover_fringe = -1");
   EXPECT_THROW(complete_strands(test::input_from_case(c), o), Error);
   Options cost;
   cost.cover_fringe_layering_cost = -0.5;
-  EXPECT_FALSE(cost.is_valid(&why));
-  EXPECT_NE(why.find("cover_fringe_layering_cost = -0.5"), std::string::npos) << why;
+  test::expect_invalid(cost, "cover_fringe_layering_cost = -0.5");
   cost.cover_fringe_layering_cost = std::nan("");
-  EXPECT_FALSE(cost.is_valid(&why));
+  test::expect_invalid(cost, "cover_fringe_layering_cost = nan");
 }
 
 }  // namespace

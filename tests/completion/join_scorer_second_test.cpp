@@ -11,6 +11,7 @@
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/generator/generator.h"
+#include "invalid_options.h"
 #include "same_joins.h"
 
 namespace hair25d::completion {
@@ -85,14 +86,12 @@ TEST(JoinScorerSecond, BadBarsAreRefused) {
   JoinScorerOptions s;
   std::string why;
   s.second_threshold = 0.0;
-  EXPECT_FALSE(s.is_valid(&why));
-  EXPECT_NE(why.find("second_threshold"), std::string::npos) << why;
+  test::expect_invalid(s, "second_threshold");
   s.second_threshold = 1.5;
-  EXPECT_FALSE(s.is_valid(&why));
+  test::expect_invalid(s, "second_threshold = 1.5");
   s = {};
   s.second_low = -0.1;
-  EXPECT_FALSE(s.is_valid(&why));
-  EXPECT_NE(why.find("second_low"), std::string::npos) << why;
+  test::expect_invalid(s, "second_low");
   s = {};
   s.second_threshold = 1.0;  // off: valid
   EXPECT_TRUE(s.is_valid(&why)) << why;

@@ -13,6 +13,7 @@
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/generator/generator.h"
+#include "invalid_options.h"
 #include "same_joins.h"
 
 namespace hair25d::completion {
@@ -101,16 +102,13 @@ TEST(JoinScorerShaded, BadBarsAreRefused) {
   JoinScorerOptions s;
   std::string why;
   s.shaded_threshold = 1.0;
-  EXPECT_FALSE(s.is_valid(&why));
-  EXPECT_NE(why.find("shaded_threshold"), std::string::npos) << why;
+  test::expect_invalid(s, "shaded_threshold");
   s = {};
   s.shaded_veto_below = -0.1;
-  EXPECT_FALSE(s.is_valid(&why));
-  EXPECT_NE(why.find("shaded_veto_below"), std::string::npos) << why;
+  test::expect_invalid(s, "shaded_veto_below");
   s = {};
   s.shaded_rescue_threshold = 0.0;
-  EXPECT_FALSE(s.is_valid(&why));
-  EXPECT_NE(why.find("shaded_rescue_threshold"), std::string::npos) << why;
+  test::expect_invalid(s, "shaded_rescue_threshold");
   s.shaded_rescue_threshold = 1.0;  // none rescued: valid
   EXPECT_TRUE(s.is_valid(&why)) << why;
 }

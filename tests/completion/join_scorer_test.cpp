@@ -11,6 +11,7 @@
 
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
+#include "invalid_options.h"
 #include "synthetic.h"
 #include "weights_file.h"
 
@@ -461,67 +462,55 @@ TEST(JoinScorer, BadInputThrows) {
   Options o;
   o.join_scorer.band_high = 1.0;  // below band_low
   std::string why;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("band_high"), std::string::npos);
+  test::expect_invalid(o, "band_high");
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.threshold = 1.0;
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.screentone_threshold = 0.0;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("screentone_threshold"), std::string::npos);
+  test::expect_invalid(o, "screentone_threshold");
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   for (double* t :
        {&o.join_scorer.paint_ensemble_threshold, &o.join_scorer.cel_ensemble_threshold}) {
     o = {};
     *t = 1.0;
-    EXPECT_FALSE(o.is_valid(&why));
-    EXPECT_NE(why.find("ensemble_threshold = 1"), std::string::npos) << why;
+    test::expect_invalid(o, "ensemble_threshold = 1");
   }
   o = {};
   o.join_scorer.cel_ensemble_threshold = 0.0;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("cel_ensemble_threshold"), std::string::npos);
+  test::expect_invalid(o, "cel_ensemble_threshold");
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.retrained_threshold = 0.0;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("retrained_threshold = 0"), std::string::npos) << why;
+  test::expect_invalid(o, "retrained_threshold = 0");
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.refuse_below = 0.95;  // above the threshold
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.veto_below = 1.0;  // would refuse every candidate
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("veto_below = 1"), std::string::npos) << why;
+  test::expect_invalid(o, "veto_below = 1");
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.veto_low = -1.0;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("veto_low"), std::string::npos) << why;
+  test::expect_invalid(o, "veto_low");
   o = {};
   o.join_scorer.rescue_threshold = 0.0;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("rescue_threshold = 0"), std::string::npos) << why;
+  test::expect_invalid(o, "rescue_threshold = 0");
   o = {};
   o.join_scorer.rescue_high = 100.0;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("rescue_high"), std::string::npos) << why;
+  test::expect_invalid(o, "rescue_high");
   o = {};
   o.join_scorer.screentone_veto_low = -0.5;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("screentone_veto_low = -0.5"), std::string::npos) << why;
+  test::expect_invalid(o, "screentone_veto_low = -0.5");
   o = {};
   o.join_scorer.screentone_veto_below = 1.0;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("screentone_veto_below = 1"), std::string::npos) << why;
+  test::expect_invalid(o, "screentone_veto_below = 1");
   EXPECT_THROW(complete_strands(test::input_of(d, Vec2(150, 300)), o), Error);
   o = {};
   o.join_scorer.screentone_rescue_threshold = 0.0;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("screentone_rescue_threshold = 0"), std::string::npos) << why;
+  test::expect_invalid(o, "screentone_rescue_threshold = 0");
   o.join_scorer.screentone_rescue_threshold = 1.0;  // none rescued: valid
   EXPECT_TRUE(o.is_valid(&why)) << why;
 }

@@ -14,6 +14,7 @@
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/generator/generator.h"
+#include "invalid_options.h"
 
 namespace hair25d::completion {
 namespace {
@@ -62,11 +63,9 @@ TEST(SideTangents, NoneOnScreentone) {
 
 TEST(SideTangents, BadThresholdIsRefused) {
   Options o;
-  std::string why;
   for (double t : {0.0, 1.5, -0.2}) {
     o.join_scorer.side_threshold = t;
-    EXPECT_FALSE(o.is_valid(&why)) << t;
-    EXPECT_NE(why.find("side_threshold"), std::string::npos) << why;
+    test::expect_invalid(o, "side_threshold");
   }
 }
 
