@@ -296,6 +296,8 @@ int main(int argc, char** argv) {
   app.add_option("--cover-fringe", options.cover_fringe,
                  "completion::Options::cover_fringe: label-0 pixels this near a region count as "
                  "its own in the cover test");
+  app.add_option("--second-partner-p", options.second_partner_p,
+                 "completion::Options::second_partner_p: a back-hair cut's second partner (0: never)");
   app.add_option("--cover-fringe-layering-cost", options.cover_fringe_layering_cost,
                  "completion::Options::cover_fringe_layering_cost");
   app.add_option("--join-arm-shares", options.join_arm_shares,

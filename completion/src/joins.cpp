@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <map>
@@ -335,6 +334,21 @@ bool occluders_above_pieces(const Context& ctx, const std::map<int, int>& under_
   for (const auto& [l, n] : under_by)
     if (l != 0 && 10 * n >= total && !above(l, ra) && !above(l, rb)) return false;
   return true;
+}
+
+// Options::second_partner_p: a candidate the scorer is sure of whose atoms
+// are taken on one of its edges only, each by one join.
+bool second_partner(const Join& j, const std::vector<Edge>& edges, const std::set<int>& used,
+                    const std::set<int>& twice, double bar) {
+  if (bar <= 0 || j.probability < bar) return false;
+  int taken = -1;
+  for (int e : {j.edge_a, j.edge_b})
+    for (int atom : edges[e].atoms) {
+      if (!used.count(atom)) continue;
+      if (twice.count(atom) || (taken >= 0 && taken != e)) return false;
+      taken = e;
+    }
+  return taken >= 0;
 }
 
 }  // namespace
@@ -773,11 +787,13 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   // Edges may overlap (an atom and a merged edge holding it): an atom joins once.
   std::set<int> used;
   std::map<int, std::pair<int, int>> taken_by;  // atom -> the regions of its join (traced)
+  std::set<int> twice;                           // atoms joined a second time
   std::vector<Join> chosen;
   for (Join& j : candidates) {
     bool free = true;
     for (int e : {j.edge_a, j.edge_b})
       for (int atom : edges[e].atoms) free = free && !used.count(atom);
+    const bool second = !free && second_partner(j, edges, used, twice, o.second_partner_p);
     JoinTrace* t = j.trace >= 0 ? &(*ctx.join_trace)[j.trace] : nullptr;
     if (t) {
       t->stage = JoinStage::kAtomTaken;
@@ -785,7 +801,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         for (int atom : edges[e].atoms)
           if (const auto it = taken_by.find(atom); it != taken_by.end() && t->rival_a == 0)
             std::tie(t->rival_a, t->rival_b) = it->second;
-      if (free)
+      if (free || second)
         t->stage = two_tones_by_dots(tones, edges[j.edge_a].region, edges[j.edge_b].region)
                        ? JoinStage::kTwoTones
                        : JoinStage::kRefused;
@@ -794,10 +810,13 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
     // outlines say; refused here, not among the candidates, so that the
     // scorer still reads them as rivals (refused before scoring, dev
     // screentone 5028 lost a right back-piece path join to a rescued one).
-    if (!free || two_tones_by_dots(tones, edges[j.edge_a].region, edges[j.edge_b].region) ||
+    if ((!free && !second) ||
+        two_tones_by_dots(tones, edges[j.edge_a].region, edges[j.edge_b].region) ||
         !try_join(edges[j.edge_a].region, edges[j.edge_b].region))
       continue;
-    for (int e : {j.edge_a, j.edge_b}) used.insert(edges[e].atoms.begin(), edges[e].atoms.end());
+    for (int e : {j.edge_a, j.edge_b})
+      for (int atom : edges[e].atoms)
+        if (!used.insert(atom).second) twice.insert(atom);
     if (t) {
       t->stage = JoinStage::kChosen;
       for (int e : {j.edge_a, j.edge_b})

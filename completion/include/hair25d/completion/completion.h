@@ -72,6 +72,15 @@ struct Options {
   double corridor_width = 0.0;
   double corridor_min_probability = 0.9;
   double min_width_ratio = 0.2;  // narrower / wider occluding edge
+  // A candidate refused only because one of its cuts already joins another
+  // piece (its atoms taken, each once) joins too when the scorer gives it at
+  // least second_partner_p: one cut may face two pieces of a strand, as a
+  // back-hair piece's cut faces two pieces of the back hair split by a
+  // strand, and the greedy one-to-one matching let only the cheaper join in
+  // (census "atom taken: right rival", dev screentone 2000: 9 links, 48
+  // pairs). 0: never. Session 33: at 0.95, +137 right / +2 wrong pairs over
+  // 14 dev runs (docs/completion-record.md).
+  double second_partner_p = 0.95;
   double max_join_cost = 2.4;
   JoinScorerOptions join_scorer;  // a learned scorer for ambiguous strand joins
   // Back-hair pieces on opposite sides of the face joined across it (the

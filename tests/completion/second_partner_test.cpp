@@ -1,0 +1,84 @@
+// Options::second_partner_p (session 33): a candidate the scorer is sure of
+// joins though one of its cuts already joins another piece.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "annotated_eval.h"
+#include "generated_case.h"
+#include "hair25d/completion/completion.h"
+#include "hair25d/core/error.h"
+#include "invalid_options.h"
+
+namespace hair25d::completion {
+namespace {
+
+Result run(const AnnotatedCase& c, double second_partner_p) {
+  Options o;
+  o.inpaint_strands = false;
+  o.inpaint_background = false;
+  o.trace_joins = true;
+  o.second_partner_p = second_partner_p;
+  return complete_strands(test::input_from_case(c), o);
+}
+
+std::map<int, int> strand_of(const Result& r) {
+  std::map<int, int> out;
+  for (std::size_t s = 0; s < r.strands.size(); ++s)
+    for (int id : r.strands[s].regions) out[id] = static_cast<int>(s);
+  return out;
+}
+
+// The traced edge pair of pieces a and b that reached `stage` (a pair of
+// pieces has one trace per pair of their edges).
+const JoinTrace* trace_of(const Result& r, int a, int b, JoinStage stage) {
+  for (const JoinTrace& t : r.join_trace)
+    if (((t.region_a == a && t.region_b == b) || (t.region_a == b && t.region_b == a)) &&
+        t.stage == stage)
+      return &t;
+  return nullptr;
+}
+
+// Dev screentone 2037: piece 27's cut faces 23 and 25, all three one strand
+// in the annotation; 23-27 is cheaper and takes 27's cut, and 25-27 (the
+// scorer's p 1.0) is refused by the one-to-one matching unless a cut may
+// take a second partner.
+TEST(SecondPartner, ACutJoinsTwoPiecesOfOneStrand) {
+  const AnnotatedCase c = test::generated_case(2037, generator::Shading::kScreentone);
+  const Result off = run(c, 0.0);
+  const JoinTrace* refused = trace_of(off, 25, 27, JoinStage::kAtomTaken);
+  ASSERT_NE(refused, nullptr);
+  EXPECT_GE(refused->probability, 0.95);
+  EXPECT_EQ(trace_of(off, 25, 27, JoinStage::kChosen), nullptr);
+  std::map<int, int> s = strand_of(off);
+  EXPECT_EQ(s.at(23), s.at(27));
+  EXPECT_NE(s.at(25), s.at(27));
+
+  const Result on = run(c, 0.95);
+  EXPECT_NE(trace_of(on, 25, 27, JoinStage::kChosen), nullptr);
+  s = strand_of(on);
+  EXPECT_EQ(s.at(23), s.at(27));
+  EXPECT_EQ(s.at(25), s.at(27));
+}
+
+// A bar above the scorer's p keeps the one-to-one matching.
+TEST(SecondPartner, NotUnderTheBar) {
+  const AnnotatedCase c = test::generated_case(2037, generator::Shading::kScreentone);
+  EXPECT_EQ(strand_of(run(c, 1.0)), strand_of(run(c, 0.0)));
+}
+
+TEST(SecondPartner, BadBarIsRefused) {
+  const AnnotatedCase c = test::generated_case(2037, generator::Shading::kScreentone);
+  Options o;
+  o.second_partner_p = 0.3;
+  test::expect_invalid(o, "second_partner_p = 0.3");
+  EXPECT_THROW(complete_strands(test::input_from_case(c), o), Error);
+  o.second_partner_p = 1.5;
+  test::expect_invalid(o, "second_partner_p = 1.5");
+  o.second_partner_p = -0.0;  // never: valid
+  std::string why;
+  EXPECT_TRUE(o.is_valid(&why)) << why;
+}
+
+}  // namespace
+}  // namespace hair25d::completion
