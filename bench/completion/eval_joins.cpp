@@ -18,6 +18,7 @@
 #include "hair25d/core/annotation.h"
 #include "hair25d/generator/generator.h"
 #include "join_upper_bound.h"
+#include "relation_gap.h"
 #ifdef HAIR25D_HAVE_PIPELINE
 #include "hair25d/pipeline/joint_layering.h"
 #endif
@@ -285,6 +286,10 @@ int main(int argc, char** argv) {
                  "completion::Options::max_join_angle_deg");
   app.add_option("--tangent-arm", options.tangent_arm, "completion::Options::tangent_arm");
   app.add_flag("!--no-face-joins", options.face_joins, "no joins across the face");
+  app.add_flag("--remote-across-occluder,--no-remote-across-occluder",
+               options.remote_across_occluder,
+               "completion::Options::remote_across_occluder: no occluder from a remote order "
+               "between two pieces of one paint under a common occluder");
   app.add_flag("--continuation-seams", options.continuation_seams,
                "read weak orders between pieces whose sides run on as seams (session 27)");
   app.add_flag("--strand-paint,!--no-strand-paint", options.strand_paint,
@@ -379,6 +384,11 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::shaded_veto_below");
   app.add_option("--scorer-shaded-rescue-threshold", options.join_scorer.shaded_rescue_threshold,
                  "JoinScorerOptions::shaded_rescue_threshold");
+  bool gap = false;
+  app.add_flag("--relation-gap", gap,
+               "Run each generated case with both relations and print the links the "
+               "annotation's make but the layering's lose, by census stage and by what in the "
+               "layering's relations differs (relation_gap.h); no figures");
   app.add_flag("--census", options.trace_joins,
                "Name the stage where each lost link of a true strand was stopped "
                "(Options::trace_joins, tests/completion/join_census.h): a line per link and a "
@@ -410,6 +420,7 @@ int main(int argc, char** argv) {
   }
 #endif
   Total total;
+  completion::test::GapTotal gap_total;
   try {
     if (!annotated.empty()) {
       for (const auto& folder : find_annotated_cases(annotated)) {
@@ -437,6 +448,11 @@ int main(int argc, char** argv) {
                          : shading == "gradient"   ? 2
                          : shading == "screentone" ? 3
                                                    : 0;
+        if (gap) {
+          completion::test::relation_gap(generator::generate_case(g), options,
+                                         "seed " + std::to_string(seed + k), &gap_total);
+          continue;
+        }
         score(generator::generate_case(g), predicted, options, "seed " + std::to_string(seed + k),
               overlay, bound, csv, names[kind], &total);
       }
@@ -444,6 +460,10 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "eval_joins: %s\n", e.what());
     return 1;
+  }
+  if (gap) {
+    completion::test::print_gap_table(gap_total);
+    return 0;
   }
   std::printf(
       "all: precision %.3f recall %.3f (pairs predicted %d, true %d, correct %d), "

@@ -299,8 +299,28 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
               detail::strand_continuation(ctx, r.a, r.b, directly_above)))))
       seams.insert({r.a, r.b});
   }
+  // Options::remote_across_occluder: the regions each lies directly under,
+  // through orders between touching regions.
+  std::map<int, std::set<int>> touching_above;
+  if (ctx.options->remote_across_occluder)
+    for (const RegionRelation& r : relations)
+      if (r.relation != Relation::kEqual && !detail::unmeasured(r, touching) &&
+          !remote(r, touching))
+        touching_above[r.relation == Relation::kBelow ? r.a : r.b].insert(
+            r.relation == Relation::kBelow ? r.b : r.a);
+  const auto across_occluder = [&](const RegionRelation& r) {
+    if (!ctx.options->remote_across_occluder || r.relation == Relation::kEqual ||
+        !remote(r, touching) || firm(r))
+      return false;
+    const std::set<int>& over_a = touching_above[r.a];
+    const std::set<int>& over_b = touching_above[r.b];
+    const bool common = std::any_of(over_a.begin(), over_a.end(),
+                                    [&](int o) { return over_b.count(o) > 0; });
+    return common && detail::one_paint(tones, fields, r.a, r.b);
+  };
   for (const RegionRelation& r : relations) {
     if (detail::unmeasured(r, touching)) continue;
+    if (across_occluder(r)) continue;
     if (weak_equal(r) && detail::two_paints(tones, fields, r.a, r.b)) {
       ++result.refused_equals;
       continue;

@@ -98,6 +98,16 @@ struct Options {
   // two strands on 7000-7099, 0.963 -> 0.961; docs/completion-record.md,
   // "Session 27").
   bool continuation_seams = false;
+  // A weak remote order (not the user's, |score| under the firm bar, between
+  // regions that do not touch once the outlines are assigned) between two
+  // pieces of one paint that a third region lies above, touching both,
+  // makes no occluder: the two are likely pieces of one strand on both sides
+  // of that occluder, and the order the layering measured across it cuts a
+  // run into one piece beside the strand's cut, or turns its strand front
+  // hair (session 33, joins77, docs/completion-record.md). Firm ones still
+  // do: on dev mixed 2000 one firm such order kept a piece of another strand
+  // out of a path join.
+  bool remote_across_occluder = false;
   // Two groups of pieces are made one strand (a join, or the layering's
   // equal or seam; never the user's relations refused) only when no piece
   // of one is painted apart from a piece of the other (strand_paint.h: two
