@@ -305,6 +305,10 @@ int main(int argc, char** argv) {
                  "completion::Options::second_partner_p: a back-hair cut's second partner (0: never)");
   app.add_option("--cover-fringe-layering-cost", options.cover_fringe_layering_cost,
                  "completion::Options::cover_fringe_layering_cost");
+  app.add_option("--face-piece-mass-step", options.face_piece_mass_step,
+                 "completion::Options::face_piece_mass_step: on screentone, back-hair passes "
+                 "leave apart pieces whose dots step more than this when one runs along the "
+                 "face (0: off)");
   app.add_option("--join-arm-shares", options.join_arm_shares,
                  "completion::Options::join_arm_shares: tangent arms (shares of the chord) tried "
                  "where the join patch lies under min_join_coverage, e.g. 0.2 0.33 0.5 0.7")

@@ -307,6 +307,16 @@ bool dark_shares_apart(RegionTones& tones, int a, int b);
 // edge links and one face link of such pairs were chosen, every one wrong);
 // the mass and path joins refuse kOther too.
 bool two_tones_by_dots(RegionTones& tones, int a, int b);
+// The face mask grown by 3 px (what the path joins' face share reads),
+// empty without a face.
+cv::Mat near_face_mask(const cv::Mat& face);
+// Options::face_piece_mass_step (session 33): on screentone, two pieces
+// whose dots step more than it (RegionTones::mass_step, measured) while one
+// of them runs along the face (`near_face`) for most of its outline: a
+// strand lying on the face, no piece of the back hair that the back-hair
+// passes (path, back paint, face and body joins) would join it to.
+bool strand_on_face(const Context& ctx, RegionTones& tones, const cv::Mat& near_face, int a,
+                    int b);
 // The colour at the 75th luma percentile of a region's own pixels in the
 // 11 x 11 window round `at`: the paper between screentone dots (which cover
 // under half of a tone).

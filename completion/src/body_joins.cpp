@@ -102,6 +102,9 @@ std::vector<MassJoin> body_join_candidates(const Context& ctx, const Face& drawn
   for (const auto& [id, info] : ctx.regions)
     if (!front.count(id) && !tailed.tails.count(id)) pieces.insert(id);
   if (pieces.size() < 2) return out;
+  const cv::Mat near_face = ctx.options->face_piece_mass_step > 0 && tones.screentone()
+                                ? near_face_mask(drawn_face.mask)
+                                : cv::Mat();
   cv::Mat& body = *body_out;
   // Dark clothes count on cel drawings, whose paint test is exact
   // (`RegionCels`): on gradient 201-216 two wrong joins crossed dark
@@ -202,7 +205,8 @@ std::vector<MassJoin> body_join_candidates(const Context& ctx, const Face& drawn
       bool paint = false;
       double step = 0.0;
       if (tones.screentone()) {
-        paint = tones.match(a, b) == RegionTones::Match::kSame;
+        paint = tones.match(a, b) == RegionTones::Match::kSame &&
+                !strand_on_face(ctx, tones, near_face, a, b);
       } else if (fields.cels().cel_drawing()) {
         const RegionCels::Judgement cel = fields.cels().judge(a, b);
         paint = cel.same || cel.step <= kMaxMassCelStep;

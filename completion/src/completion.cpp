@@ -561,6 +561,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   detail::untail_back_paint(ctx, ctx.front(), fields.cels(), &tailed);
   for (int t : tailed.tails)
     if (ctx.regions.at(t).occluders.size() <= 2) front.insert(t);
+  const cv::Mat near_face =
+      options.face_piece_mass_step > 0 ? detail::near_face_mask(face.mask) : cv::Mat();
   for (const detail::FaceJoin& j : detail::face_join_candidates(ctx, face, front)) {
     // On a cel drawing pieces of other flat paints are two locks, as for the
     // mass and path joins (RegionCels::judge, step over 3 RGB): the face
@@ -581,6 +583,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     // Screentone pieces of two tones by their dots (session 23: dev 4079's
     // back hair joined across the face to a lighter tail, 2 wrong pairs).
     if (detail::two_tones_by_dots(tones, j.region_a, j.region_b)) continue;
+    // A strand lying on the face is no back hair (Options::face_piece_mass_step).
+    if (detail::strand_on_face(ctx, tones, near_face, j.region_a, j.region_b)) continue;
     if (!try_join(j.region_a, j.region_b)) continue;
     EdgeReport ra, rb;
     ra.region = j.region_a, ra.p = j.pa, ra.q = j.qa, ra.joined_region = j.region_b;

@@ -48,6 +48,10 @@ constexpr double kMaxPathFieldStep = 0.5;
 // two bangs lying on the face, joined under a third; screentone 116 bangs
 // 5 and 6).
 constexpr double kMaxFaceShare = 0.97;
+// A piece whose outline runs this much along the face lies on it or
+// borders it (strand_on_face). Dev screentone 2003 and 2009: the strands
+// on the face that back hair took measured 0.99 and 0.79.
+constexpr double kOnFaceShare = 0.75;
 
 // Hair hanging from under a back-hair piece is covered by at most this many
 // regions (the back and a strand lying on both; completion.cpp keeps tails
@@ -366,6 +370,7 @@ std::vector<MassJoin> back_paint_joins(const Context& ctx, const std::vector<int
       if (find(a) == find(b) || (one_strand && one_strand(a, b))) continue;
       if (ctx.is_above(a, b) || ctx.is_above(b, a)) continue;
       if (!one_paint(a, b)) continue;
+      if (strand_on_face(ctx, tones, near_face, a, b)) continue;
       if (std::min(face_share(ctx, near_face, a), face_share(ctx, near_face, b)) >= kMaxFaceShare)
         continue;
       std::set<int> either = above_of(ctx, a);
@@ -382,6 +387,22 @@ std::vector<MassJoin> back_paint_joins(const Context& ctx, const std::vector<int
 }
 
 }  // namespace
+
+cv::Mat near_face_mask(const cv::Mat& face) {
+  cv::Mat near_face;
+  if (!face.empty())
+    cv::dilate(face, near_face, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(7, 7)));
+  return near_face;
+}
+
+bool strand_on_face(const Context& ctx, RegionTones& tones, const cv::Mat& near_face, int a,
+                    int b) {
+  const double limit = ctx.options->face_piece_mass_step;
+  if (limit <= 0 || near_face.empty() || !tones.screentone()) return false;
+  const double step = tones.mass_step(a, b);
+  if (!std::isfinite(step) || step <= limit) return false;
+  return std::max(face_share(ctx, near_face, a), face_share(ctx, near_face, b)) >= kOnFaceShare;
+}
 
 Eigen::Vector3d light_colour_near(const Context& ctx, int region, const Vec2& at) {
   std::vector<std::pair<double, Eigen::Vector3d>> px;
@@ -806,9 +827,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
                                            RegionTones& tones, RegionFields& fields,
                                            const std::function<bool(int, int)>& one_strand) {
   if (!ctx.options->path_joins) return {};
-  cv::Mat near_face;
-  if (!face.empty())
-    cv::dilate(face, near_face, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(7, 7)));
+  const cv::Mat near_face = near_face_mask(face);
   const std::set<int> front = ctx.front();
   TailedHair tailed = tailed_hair(ctx, front);
   untail_back_paint(ctx, front, fields.cels(), &tailed);
@@ -879,6 +898,7 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
       // holding drawn lines), or two.
       const RegionTones::Match match = tones.match(a, b);
       if (match == RegionTones::Match::kOther) continue;
+      if (strand_on_face(ctx, tones, near_face, a, b)) continue;
       bool textured = match == RegionTones::Match::kSame;
       // On a cel drawing the pieces' paint (RegionCels::judge): a piece in
       // the other's base or band, on its side of the band's level, passes

@@ -20,6 +20,8 @@ bool Options::is_valid(std::string* error) const {
   if (!(cover_fringe_layering_cost >= 0 && cover_fringe_layering_cost <= 100))
     return fail("cover_fringe_layering_cost = " + num(cover_fringe_layering_cost) +
                 "; must be in [0, 100]");
+  if (!(face_piece_mass_step >= 0 && face_piece_mass_step <= 1))
+    return fail("face_piece_mass_step = " + num(face_piece_mass_step) + "; must be in [0, 1]");
   if (occluder_reach < 0 || occluder_reach > 16)
     return fail("occluder_reach = " + std::to_string(occluder_reach) + "; must be in [0, 16]");
   if (!(merge_gap >= 0)) return fail("merge_gap = " + num(merge_gap) + "; must be >= 0");

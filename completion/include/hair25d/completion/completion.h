@@ -38,6 +38,14 @@ struct Options {
   // pairs); under hand cost 1.5 it added 50 right and 3 wrong pairs on dev
   // screentone and mixed 2000 and 3000 (session 32). 0: never.
   double cover_fringe_layering_cost = 1.5;
+  // Screentone: two pieces whose dots step more than this (a share of the
+  // larger dot mass) while one runs along the face for most of its outline
+  // are a strand lying on the face and a piece of something else: the
+  // back-hair passes (path, back paint, face and body joins) leave them
+  // apart. RegionTones's "one tone" reaches 0.04; back hair took strands on
+  // the face at 0.030-0.039 (dev screentone 2003, 2009), a face-bordering
+  // piece of its own at 0.021 (3070). 0: no such test (session 33).
+  double face_piece_mass_step = 0.0;
   // A region's boundary pixel is occluded when an occluder pixel lies within
   // this many pixels; occluding runs closer than `merge_gap` are merged.
   int occluder_reach = 2;
