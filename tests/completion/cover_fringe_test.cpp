@@ -14,6 +14,7 @@
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
 #include "invalid_options.h"
+#include "strand_of.h"
 
 namespace hair25d::completion {
 namespace {
@@ -48,13 +49,6 @@ TEST(CoverFringe, FringeGoesToTheNearestRegionWithinReach) {
     for (int x = 0; x < 30; ++x) EXPECT_EQ(same.at(x, y), m.at(x, y));
 }
 
-std::map<int, int> strand_of(const Result& r) {
-  std::map<int, int> out;
-  for (std::size_t s = 0; s < r.strands.size(); ++s)
-    for (int id : r.strands[s].regions) out[id] = static_cast<int>(s);
-  return out;
-}
-
 Result run(const AnnotatedCase& c, int fringe, bool users, double layering_cost = 0.0) {
   Options o;
   o.inpaint_strands = false;
@@ -76,16 +70,16 @@ Result run(const AnnotatedCase& c, int fringe, bool users, double layering_cost 
 TEST(CoverFringe, ScreentoneJoinUnderTheUsersOrders) {
   const AnnotatedCase c = test::generated_case(2006, generator::Shading::kScreentone);
   {
-    const std::map<int, int> s = strand_of(run(c, 0, true));
+    const std::map<int, int> s = test::strand_of(run(c, 0, true));
     EXPECT_NE(s.at(13), s.at(25)) << "refused by the cover without the fringe";
   }
   {
-    const std::map<int, int> s = strand_of(run(c, 2, true));
+    const std::map<int, int> s = test::strand_of(run(c, 2, true));
     EXPECT_EQ(s.at(13), s.at(25));
   }
   // Not the user's orders and no cost for the layering's: the fringe is not
   // read, the strands are main's.
-  EXPECT_EQ(strand_of(run(c, 2, false)), strand_of(run(c, 0, false)));
+  EXPECT_EQ(test::strand_of(run(c, 2, false)), test::strand_of(run(c, 0, false)));
 }
 
 // Without the user's orders the fringe is read under the layering's at a
@@ -95,20 +89,20 @@ TEST(CoverFringe, ScreentoneJoinUnderTheUsersOrders) {
 TEST(CoverFringe, LayeringsOrdersAtALowCost) {
   {
     const AnnotatedCase c = test::generated_case(2006, generator::Shading::kScreentone);
-    const std::map<int, int> s = strand_of(run(c, 2, false, 1.5));
+    const std::map<int, int> s = test::strand_of(run(c, 2, false, 1.5));
     EXPECT_EQ(s.at(13), s.at(25));
   }
   const AnnotatedCase c = test::generated_case(2018, generator::Shading::kScreentone);
-  const std::map<int, int> capped = strand_of(run(c, 2, false, 1.5));
+  const std::map<int, int> capped = test::strand_of(run(c, 2, false, 1.5));
   EXPECT_NE(capped.at(17), capped.at(25));
-  const std::map<int, int> any = strand_of(run(c, 2, false, 99.0));
+  const std::map<int, int> any = test::strand_of(run(c, 2, false, 99.0));
   EXPECT_EQ(any.at(17), any.at(25)) << "the cap, not the cover, keeps them apart";
 }
 
 // Flat drawings do not read the fringe.
 TEST(CoverFringe, NotOnFlatDrawings) {
   const AnnotatedCase c = test::generated_case(2006, generator::Shading::kFlat);
-  EXPECT_EQ(strand_of(run(c, 2, true)), strand_of(run(c, 0, true)));
+  EXPECT_EQ(test::strand_of(run(c, 2, true)), test::strand_of(run(c, 0, true)));
 }
 
 TEST(CoverFringe, BadReachIsRefused) {

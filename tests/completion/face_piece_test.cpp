@@ -13,16 +13,10 @@
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
 #include "same_joins.h"
+#include "strand_of.h"
 
 namespace hair25d::completion {
 namespace {
-
-std::map<int, int> strand_of(const Result& r) {
-  std::map<int, int> out;
-  for (std::size_t s = 0; s < r.strands.size(); ++s)
-    for (int id : r.strands[s].regions) out[id] = static_cast<int>(s);
-  return out;
-}
 
 Result run(const AnnotatedCase& c, double step) {
   Options o;
@@ -41,17 +35,17 @@ Result run(const AnnotatedCase& c, double step) {
 // path joins refusing it) by the back-paint and body joins.
 TEST(FacePiece, StrandOnTheFaceIsNoBackHair) {
   const AnnotatedCase c2009 = test::generated_case(2009, generator::Shading::kScreentone);
-  EXPECT_EQ(strand_of(run(c2009, 0)).at(1), strand_of(run(c2009, 0)).at(22));
-  const std::map<int, int> s2009 = strand_of(run(c2009, 0.025));
+  EXPECT_EQ(test::strand_of(run(c2009, 0)).at(1), test::strand_of(run(c2009, 0)).at(22));
+  const std::map<int, int> s2009 = test::strand_of(run(c2009, 0.025));
   EXPECT_NE(s2009.at(1), s2009.at(22));
   const AnnotatedCase c2003 = test::generated_case(2003, generator::Shading::kScreentone);
-  EXPECT_EQ(strand_of(run(c2003, 0)).at(1), strand_of(run(c2003, 0)).at(7));
-  const std::map<int, int> s2003 = strand_of(run(c2003, 0.025));
+  EXPECT_EQ(test::strand_of(run(c2003, 0)).at(1), test::strand_of(run(c2003, 0)).at(7));
+  const std::map<int, int> s2003 = test::strand_of(run(c2003, 0.025));
   EXPECT_NE(s2003.at(1), s2003.at(7));
   EXPECT_NE(s2003.at(24), s2003.at(7));
   EXPECT_EQ(s2003.at(1), s2003.at(24)) << "the back hair's own pieces stay one";
   // A looser limit lets the 3.0 % step to back piece 24 through.
-  const std::map<int, int> loose = strand_of(run(c2003, 0.035));
+  const std::map<int, int> loose = test::strand_of(run(c2003, 0.035));
   EXPECT_EQ(loose.at(24), loose.at(7));
 }
 

@@ -9,6 +9,7 @@
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
 #include "invalid_options.h"
+#include "strand_of.h"
 
 namespace hair25d::completion {
 namespace {
@@ -20,13 +21,6 @@ Result run(const AnnotatedCase& c, double second_partner_p) {
   o.trace_joins = true;
   o.second_partner_p = second_partner_p;
   return complete_strands(test::input_from_case(c), o);
-}
-
-std::map<int, int> strand_of(const Result& r) {
-  std::map<int, int> out;
-  for (std::size_t s = 0; s < r.strands.size(); ++s)
-    for (int id : r.strands[s].regions) out[id] = static_cast<int>(s);
-  return out;
 }
 
 // The traced edge pair of pieces a and b that reached `stage` (a pair of
@@ -50,13 +44,13 @@ TEST(SecondPartner, ACutJoinsTwoPiecesOfOneStrand) {
   ASSERT_NE(refused, nullptr);
   EXPECT_GE(refused->probability, 0.95);
   EXPECT_EQ(trace_of(off, 25, 27, JoinStage::kChosen), nullptr);
-  std::map<int, int> s = strand_of(off);
+  std::map<int, int> s = test::strand_of(off);
   EXPECT_EQ(s.at(23), s.at(27));
   EXPECT_NE(s.at(25), s.at(27));
 
   const Result on = run(c, 0.95);
   EXPECT_NE(trace_of(on, 25, 27, JoinStage::kChosen), nullptr);
-  s = strand_of(on);
+  s = test::strand_of(on);
   EXPECT_EQ(s.at(23), s.at(27));
   EXPECT_EQ(s.at(25), s.at(27));
 }
@@ -64,7 +58,7 @@ TEST(SecondPartner, ACutJoinsTwoPiecesOfOneStrand) {
 // A bar above the scorer's p keeps the one-to-one matching.
 TEST(SecondPartner, NotUnderTheBar) {
   const AnnotatedCase c = test::generated_case(2037, generator::Shading::kScreentone);
-  EXPECT_EQ(strand_of(run(c, 1.0)), strand_of(run(c, 0.0)));
+  EXPECT_EQ(test::strand_of(run(c, 1.0)), test::strand_of(run(c, 0.0)));
 }
 
 TEST(SecondPartner, BadBarIsRefused) {
