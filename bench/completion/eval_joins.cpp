@@ -302,7 +302,8 @@ int main(int argc, char** argv) {
                  "completion::Options::cover_fringe: label-0 pixels this near a region count as "
                  "its own in the cover test");
   app.add_option("--second-partner-p", options.second_partner_p,
-                 "completion::Options::second_partner_p: a back-hair cut's second partner (0: never)");
+                 "completion::Options::second_partner_p: the scorer's least p for a cut's second "
+                 "partner (0: never)");
   app.add_option("--cover-fringe-layering-cost", options.cover_fringe_layering_cost,
                  "completion::Options::cover_fringe_layering_cost");
   app.add_option("--face-piece-mass-step", options.face_piece_mass_step,

@@ -121,11 +121,12 @@ void relation_gap(const AnnotatedCase& c, const Options& base, const std::string
     std::string cls, detail;
     const std::string direct = pred_of(x, y);
     const auto ia = ann.find({x, y});
-    const std::string ann_xy = ia == ann.end()                       ? "unjudged"
+    const std::string ann_xy = ia == ann.end()                  ? "unjudged"
                                : ia->second == Relation::kEqual ? "equal"
-                                                                 : "ordered";
+                                                                : "ordered";
     if (direct != "none" && direct != "equal")
-      cls = std::string("direct order ") + (direct.find("firm") != std::string::npos ? "firm" : "weak") +
+      cls = std::string("direct order ") +
+            (direct.find("firm") != std::string::npos ? "firm" : "weak") +
             (touching(x, y) ? ", touching" : ", remote") + " (annotation " + ann_xy + ")";
     // The annotation's occluders over both pieces.
     std::vector<int> common;
@@ -155,9 +156,9 @@ void relation_gap(const AnnotatedCase& c, const Options& base, const std::string
         if (ann_above(key.first, p)) continue;
         if (truth.count(key.first) && truth[key.first] == l.strand) continue;
         const auto ia = ann.find({key.first, p});
-        const std::string kind = ia == ann.end() ? (touching(key.first, p) ? "unjudged touching"
-                                                                           : "unjudged remote")
-                                                 : "reversed";
+        const std::string kind =
+            ia == ann.end() ? (touching(key.first, p) ? "unjudged touching" : "unjudged remote")
+                            : "reversed";
         detail += " extra " + std::to_string(key.first) + ">" + std::to_string(p) + " " + kind +
                   (std::abs(v.score) >= kFirm ? " firm" : " weak");
         if (extra.empty() || kind == "reversed") extra = "extra occluder " + kind;
@@ -179,8 +180,10 @@ void print_gap_table(const GapTotal& total) {
     by_stage[k.second].first += n.first, by_stage[k.second].second += n.second;
     std::printf("gap: %s | %s | %d (%d)\n", k.first.c_str(), k.second.c_str(), n.first, n.second);
   }
-  for (const auto& [k, n] : by_cls) std::printf("gap class: %s | %d (%d)\n", k.c_str(), n.first, n.second);
-  for (const auto& [k, n] : by_stage) std::printf("gap stage: %s | %d (%d)\n", k.c_str(), n.first, n.second);
+  for (const auto& [k, n] : by_cls)
+    std::printf("gap class: %s | %d (%d)\n", k.c_str(), n.first, n.second);
+  for (const auto& [k, n] : by_stage)
+    std::printf("gap stage: %s | %d (%d)\n", k.c_str(), n.first, n.second);
 }
 
 }  // namespace hair25d::completion::test

@@ -315,8 +315,7 @@ cv::Mat near_face_mask(const cv::Mat& face);
 // of them runs along the face (`near_face`) for most of its outline: a
 // strand lying on the face, no piece of the back hair that the back-hair
 // passes (path, back paint, face and body joins) would join it to.
-bool strand_on_face(const Context& ctx, RegionTones& tones, const cv::Mat& near_face, int a,
-                    int b);
+bool strand_on_face(const Context& ctx, RegionTones& tones, const cv::Mat& near_face, int a, int b);
 // The colour at the 75th luma percentile of a region's own pixels in the
 // 11 x 11 window round `at`: the paper between screentone dots (which cover
 // under half of a tone).

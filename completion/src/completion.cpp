@@ -314,8 +314,8 @@ std::map<int, std::set<int>> read_relations(const std::vector<RegionRelation>& r
       return false;
     const std::set<int>& over_a = touching_above[r.a];
     const std::set<int>& over_b = touching_above[r.b];
-    const bool common = std::any_of(over_a.begin(), over_a.end(),
-                                    [&](int o) { return over_b.count(o) > 0; });
+    const bool common =
+        std::any_of(over_a.begin(), over_a.end(), [&](int o) { return over_b.count(o) > 0; });
     return common && detail::one_paint(tones, fields, r.a, r.b);
   };
   for (const RegionRelation& r : relations) {

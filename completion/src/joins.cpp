@@ -787,7 +787,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   // Edges may overlap (an atom and a merged edge holding it): an atom joins once.
   std::set<int> used;
   std::map<int, std::pair<int, int>> taken_by;  // atom -> the regions of its join (traced)
-  std::set<int> twice;                           // atoms joined a second time
+  std::set<int> twice;                          // atoms joined a second time
   std::vector<Join> chosen;
   for (Join& j : candidates) {
     bool free = true;

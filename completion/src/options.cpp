@@ -38,7 +38,8 @@ bool Options::is_valid(std::string* error) const {
     if (!(share > 0 && share <= 1.5))
       return fail("join_arm_shares holds " + num(share) + "; each must be in (0, 1.5]");
   if (!(second_partner_p == 0 || (second_partner_p >= 0.5 && second_partner_p <= 1)))
-    return fail("second_partner_p = " + num(second_partner_p) + "; must be 0 (never) or in [0.5, 1]");
+    return fail("second_partner_p = " + num(second_partner_p) +
+                "; must be 0 (never) or in [0.5, 1]");
   if (!(corridor_width >= 0 && corridor_width <= 2))
     return fail("corridor_width = " + num(corridor_width) + "; must be in [0, 2]");
   if (!(corridor_min_probability >= 0 && corridor_min_probability <= 1))
