@@ -46,9 +46,9 @@ struct Options {
   // the face at 0.030-0.039 (dev screentone 2003, 2009), a face-bordering
   // piece of its own at 0.021 (3070). 0: no such test. Session 33: at
   // 0.025 it removed 45 wrong and 12 right pairs over the helper's dev and
-  // fresh runs and the lead's held and fresh 10700 ones, but 40 right and
-  // 1 wrong on the lead's fresh 10200 (back pieces split from back hair in
-  // 10254 and 10279): off (docs/completion-record.md).
+  // fresh runs and the lead's held and fresh 10700 ones, but 56 right and
+  // 1 wrong over the lead's fresh 10200 runs (back pieces split from the
+  // back hair in 10254 and 10279): off (docs/completion-record.md).
   double face_piece_mass_step = 0.0;
   // A region's boundary pixel is occluded when an occluder pixel lies within
   // this many pixels; occluding runs closer than `merge_gap` are merged.
