@@ -14,6 +14,7 @@
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
 #include "invalid_options.h"
+#include "joins_only.h"
 #include "strand_of.h"
 
 namespace hair25d::completion {
@@ -50,9 +51,7 @@ TEST(CoverFringe, FringeGoesToTheNearestRegionWithinReach) {
 }
 
 Result run(const AnnotatedCase& c, int fringe, bool users, double layering_cost = 0.0) {
-  Options o;
-  o.inpaint_strands = false;
-  o.inpaint_background = false;
+  Options o = test::joins_only();
   o.cover_fringe = fringe;
   o.cover_fringe_layering_cost = layering_cost;
   Input in = test::input_from_case(c);

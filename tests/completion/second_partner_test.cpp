@@ -9,15 +9,14 @@
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
 #include "invalid_options.h"
+#include "joins_only.h"
 #include "strand_of.h"
 
 namespace hair25d::completion {
 namespace {
 
 Result run(const AnnotatedCase& c, double second_partner_p) {
-  Options o;
-  o.inpaint_strands = false;
-  o.inpaint_background = false;
+  Options o = test::joins_only();
   o.trace_joins = true;
   o.second_partner_p = second_partner_p;
   return complete_strands(test::input_from_case(c), o);

@@ -15,14 +15,13 @@
 #include "hair25d/completion/join_scorer.h"
 #include "hair25d/generator/generator.h"
 #include "invalid_options.h"
+#include "joins_only.h"
 
 namespace hair25d::completion {
 namespace {
 
 Result run(const AnnotatedCase& c, double side_threshold) {
-  Options o;
-  o.inpaint_strands = false;
-  o.inpaint_background = false;
+  Options o = test::joins_only();
   o.trace_joins = true;
   o.join_scorer.side_threshold = side_threshold;
   return complete_strands(test::input_from_case(c), o);
