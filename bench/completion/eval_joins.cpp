@@ -331,6 +331,10 @@ int main(int argc, char** argv) {
                "JoinScorerOptions::retrained: the retrained net off screentone");
   app.add_option("--scorer-retrained-threshold", options.join_scorer.retrained_threshold,
                  "JoinScorerOptions::retrained_threshold");
+  app.add_option("--scorer-retrained-shaded-threshold",
+                 options.join_scorer.retrained_shaded_threshold,
+                 "JoinScorerOptions::retrained_shaded_threshold: the retrained net's bar for the "
+                 "band on two-tone and gradient drawings");
   const std::map<std::string, completion::JoinScorerOptions::Ensemble> ensembles{
       {"none", completion::JoinScorerOptions::Ensemble::kNone},
       {"screentone", completion::JoinScorerOptions::Ensemble::kScreentone},

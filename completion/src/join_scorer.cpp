@@ -123,6 +123,9 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("cel_ensemble_threshold = " + num(cel_ensemble_threshold) + "; must be in (0, 1)");
   if (!(retrained_threshold > 0 && retrained_threshold < 1))
     return fail("retrained_threshold = " + num(retrained_threshold) + "; must be in (0, 1)");
+  if (!(retrained_shaded_threshold > 0 && retrained_shaded_threshold < 1))
+    return fail("retrained_shaded_threshold = " + num(retrained_shaded_threshold) +
+                "; must be in (0, 1)");
   if (!(refuse_below >= 0 && refuse_below <= threshold))
     return fail("refuse_below = " + num(refuse_below) + "; must be in [0, threshold (" +
                 num(threshold) + ")]");

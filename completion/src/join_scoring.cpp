@@ -52,10 +52,13 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   // Session 31: or the retrained net there (`retrained_shaded`).
   const bool retrained =
       !screentone && !shaded_band && (s.retrained || (s.retrained_shaded && shaded));
-  const double threshold = screentone    ? s.screentone_threshold
-                           : shaded_band ? s.shaded_threshold
-                           : retrained   ? s.retrained_threshold
-                                         : s.threshold;
+  // Session 34: the retrained net's own bar on shaded drawings.
+  const bool retrained_shaded_bar = retrained && s.retrained_shaded && shaded;
+  const double threshold = screentone             ? s.screentone_threshold
+                           : shaded_band          ? s.shaded_threshold
+                           : retrained_shaded_bar ? s.retrained_shaded_threshold
+                           : retrained            ? s.retrained_threshold
+                                                  : s.threshold;
   std::vector<int> which;
   std::vector<double> costs;
   std::vector<std::pair<int, int>> ends;

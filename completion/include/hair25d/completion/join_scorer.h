@@ -219,6 +219,17 @@ struct JoinScorerOptions {
   // the layering's relations -5 right; completion-record.md "Session 31:
   // the changes together").
   bool retrained_shaded = true;
+  // Session 34 (lead): the bar of retrained_shaded's band, lower than
+  // retrained_threshold. Most refusals of the band on two-tone and
+  // gradient drawings over p 0.5 were right candidates (session 32,
+  // joins74), and the lost links among them are often back hair, whose
+  // pieces make many pairs. Dev two-tone and gradient 2000 and 3000, both
+  // relations, right / wrong pairs added against 0.9: 0.85 +50 / -5, 0.8
+  // +107 / -1, 0.75 +134 / +3, 0.7 +164 / +20; held mixed and fresh
+  // two-tone, gradient and mixed: 0.8 +79 / +5, 0.75 +112 / +3
+  // (completion-record.md "Session 34: the retrained net's bar on shaded
+  // drawings").
+  double retrained_shaded_threshold = 0.75;
   // Session 18: edge pairs whose tangents turn more than
   // Options::max_join_angle_deg (70°) from the join's chords but at most
   // max_angle_deg are strand candidates for the scorer alone: costed as any
