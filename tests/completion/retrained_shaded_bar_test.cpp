@@ -11,6 +11,7 @@
 #include "invalid_options.h"
 #include "joins_only.h"
 #include "strand_of.h"
+#include "trace_of.h"
 
 namespace hair25d::completion {
 namespace {
@@ -22,22 +23,13 @@ Result run(const AnnotatedCase& c, double bar) {
   return complete_strands(test::input_from_case(c), o);
 }
 
-// The traced edge pair of pieces a and b that reached `stage`.
-const JoinTrace* trace_of(const Result& r, int a, int b, JoinStage stage) {
-  for (const JoinTrace& t : r.join_trace)
-    if (((t.region_a == a && t.region_b == b) || (t.region_a == b && t.region_b == a)) &&
-        t.stage == stage)
-      return &t;
-  return nullptr;
-}
-
 // Dev two-tone 2077: back hair 1 and piece 20, one strand in the
 // annotation, meet across the strands over them in a band candidate the
 // retrained net gives p 0.87: refused at 0.9, joined at the default bar.
 TEST(RetrainedShadedBar, BackHairJoinsUnderTheOldBar) {
   const AnnotatedCase c = test::generated_case(2077, generator::Shading::kTwoTone);
   const Result high = run(c, 0.9);
-  const JoinTrace* refused = trace_of(high, 1, 20, JoinStage::kBandRefused);
+  const JoinTrace* refused = test::trace_of(high, 1, 20, JoinStage::kBandRefused);
   ASSERT_NE(refused, nullptr);
   EXPECT_GE(refused->probability, JoinScorerOptions{}.retrained_shaded_threshold);
   EXPECT_LT(refused->probability, 0.9);
@@ -45,7 +37,7 @@ TEST(RetrainedShadedBar, BackHairJoinsUnderTheOldBar) {
   EXPECT_NE(s.at(1), s.at(20));
 
   const Result low = run(c, JoinScorerOptions{}.retrained_shaded_threshold);
-  EXPECT_NE(trace_of(low, 1, 20, JoinStage::kChosen), nullptr);
+  EXPECT_NE(test::trace_of(low, 1, 20, JoinStage::kChosen), nullptr);
   s = test::strand_of(low);
   EXPECT_EQ(s.at(1), s.at(20));
 }

@@ -11,6 +11,7 @@
 #include "invalid_options.h"
 #include "joins_only.h"
 #include "strand_of.h"
+#include "trace_of.h"
 
 namespace hair25d::completion {
 namespace {
@@ -22,16 +23,6 @@ Result run(const AnnotatedCase& c, double second_partner_p) {
   return complete_strands(test::input_from_case(c), o);
 }
 
-// The traced edge pair of pieces a and b that reached `stage` (a pair of
-// pieces has one trace per pair of their edges).
-const JoinTrace* trace_of(const Result& r, int a, int b, JoinStage stage) {
-  for (const JoinTrace& t : r.join_trace)
-    if (((t.region_a == a && t.region_b == b) || (t.region_a == b && t.region_b == a)) &&
-        t.stage == stage)
-      return &t;
-  return nullptr;
-}
-
 // Dev screentone 2037: piece 27's cut faces 23 and 25, all three one strand
 // in the annotation; 23-27 is cheaper and takes 27's cut, and 25-27 (the
 // scorer's p 1.0) is refused by the one-to-one matching unless a cut may
@@ -39,16 +30,16 @@ const JoinTrace* trace_of(const Result& r, int a, int b, JoinStage stage) {
 TEST(SecondPartner, ACutJoinsTwoPiecesOfOneStrand) {
   const AnnotatedCase c = test::generated_case(2037, generator::Shading::kScreentone);
   const Result off = run(c, 0.0);
-  const JoinTrace* refused = trace_of(off, 25, 27, JoinStage::kAtomTaken);
+  const JoinTrace* refused = test::trace_of(off, 25, 27, JoinStage::kAtomTaken);
   ASSERT_NE(refused, nullptr);
   EXPECT_GE(refused->probability, 0.95);
-  EXPECT_EQ(trace_of(off, 25, 27, JoinStage::kChosen), nullptr);
+  EXPECT_EQ(test::trace_of(off, 25, 27, JoinStage::kChosen), nullptr);
   std::map<int, int> s = test::strand_of(off);
   EXPECT_EQ(s.at(23), s.at(27));
   EXPECT_NE(s.at(25), s.at(27));
 
   const Result on = run(c, 0.95);
-  EXPECT_NE(trace_of(on, 25, 27, JoinStage::kChosen), nullptr);
+  EXPECT_NE(test::trace_of(on, 25, 27, JoinStage::kChosen), nullptr);
   s = test::strand_of(on);
   EXPECT_EQ(s.at(23), s.at(27));
   EXPECT_EQ(s.at(25), s.at(27));

@@ -1,0 +1,18 @@
+// The traced edge pair of pieces a and b that reached `stage`
+// (Options::trace_joins; a pair of pieces has one trace per pair of their
+// edges), for the tests that ask how far a candidate got.
+#pragma once
+
+#include "hair25d/completion/completion.h"
+
+namespace hair25d::completion::test {
+
+inline const JoinTrace* trace_of(const Result& r, int a, int b, JoinStage stage) {
+  for (const JoinTrace& t : r.join_trace)
+    if (((t.region_a == a && t.region_b == b) || (t.region_a == b && t.region_b == a)) &&
+        t.stage == stage)
+      return &t;
+  return nullptr;
+}
+
+}  // namespace hair25d::completion::test
