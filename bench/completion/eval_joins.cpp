@@ -355,6 +355,12 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::wide_threshold");
   app.add_option("--scorer-side-threshold", options.join_scorer.side_threshold,
                  "JoinScorerOptions::side_threshold: side-tangent candidates (1 = off)");
+  app.add_option("--scorer-angle-refusal-threshold", options.join_scorer.angle_refusal_threshold,
+                 "JoinScorerOptions::angle_refusal_threshold: angle refusals' second chances, "
+                 "judged by their own net (1 = off)");
+  app.add_flag("--scorer-angle-refusal-turned,!--no-scorer-angle-refusal-turned",
+               options.join_scorer.angle_refusal_turned,
+               "JoinScorerOptions::angle_refusal_turned: also reversed and turned tangents");
   app.add_option("--scorer-second-threshold", options.join_scorer.second_threshold,
                  "JoinScorerOptions::second_threshold: the retrained net's bar for the default "
                  "net's band refusals on flat drawings (1 = off)");

@@ -35,6 +35,8 @@ namespace {
 using namespace hair25d;
 using completion::JoinFeatures;
 using completion::kJoinFeatures;
+// The input saying a row is an angle refusal's second chance (session 35).
+constexpr int kRetried = 44;
 
 struct Row {
   std::string set;
@@ -257,6 +259,13 @@ int main(int argc, char** argv) {
   train->add_flag(
       "--wide-only", wide_only,
       "Only candidates over the angle limit (worst_angle > 1, JoinScorerOptions::max_angle_deg)");
+  // Session 35: the second chances of angle refusals (JoinScorerOptions::
+  // angle_refusal_threshold) are rows of their own: only with this flag,
+  // and never among the others' rows.
+  bool angle_only = false;
+  train->add_flag("--angle-only", angle_only,
+                  "Only angle refusals' second chances (input `retried`; "
+                  "JoinScorerOptions::angle_refusal_threshold); without it they are left out");
   bool baseline = false;
   // Session 23: the same report for the committed net, so a retrained one
   // is compared with it on the same rows.
@@ -280,6 +289,9 @@ int main(int argc, char** argv) {
   try {
     // The committed net was trained on every input: zeroed ones would not be its rows.
     if (baseline && !drop.empty()) throw std::runtime_error("--baseline with --drop");
+    if (std::string(completion::join_feature_name(kRetried)) != "retried")
+      throw std::runtime_error("input 44 is not `retried`");
+    if (wide_only && angle_only) throw std::runtime_error("--wide-only with --angle-only");
     std::vector<int> dropped;
     for (const std::string& name : drop) {
       int k = 0;
@@ -290,13 +302,15 @@ int main(int argc, char** argv) {
     auto rows_of = [&](const std::string& path) {
       std::vector<Row> rows = read_rows(path);
       if (wide_only) std::erase_if(rows, [](const Row& r) { return !(r.f[1] > 1.0f); });
+      std::erase_if(rows, [&](const Row& r) { return (r.f[kRetried] > 0.5f) != angle_only; });
       for (Row& r : rows)
         for (int k : dropped) r.f[k] = 0;
       return rows;
     };
     if (*probs) {
       std::printf(
-          "set,case,a,b,label,hand_cost,default,retrained,screentone,shaded,ensemble,paint\n");
+          "set,case,a,b,label,hand_cost,default,retrained,screentone,shaded,ensemble,paint,"
+          "angle\n");
       std::ifstream in(probs_csv);
       if (!in) throw std::runtime_error("cannot read " + probs_csv);
       for (std::string line; std::getline(in, line);) {
@@ -308,7 +322,7 @@ int main(int argc, char** argv) {
                                    " cells; must be " + std::to_string(7 + kJoinFeatures));
         JoinFeatures f{};
         for (int k = 0; k < kJoinFeatures; ++k) f[k] = std::stof(cells[7 + k]);
-        std::printf("%s,%s,%s,%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", cells[0].c_str(),
+        std::printf("%s,%s,%s,%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", cells[0].c_str(),
                     cells[1].c_str(), cells[2].c_str(), cells[3].c_str(), cells[4].c_str(),
                     cells[5].c_str(),
                     completion::join_probability(completion::default_join_scorer(), f),
@@ -316,7 +330,8 @@ int main(int argc, char** argv) {
                     completion::join_probability(completion::screentone_join_scorer(), f),
                     completion::join_probability(completion::shaded_join_scorer(), f),
                     completion::join_probability(completion::ensemble_join_scorers(), f),
-                    completion::join_probability(completion::paint_ensemble_join_scorers(), f));
+                    completion::join_probability(completion::paint_ensemble_join_scorers(), f),
+                    completion::join_probability(completion::angle_join_scorer(), f));
       }
       return 0;
     }
@@ -425,7 +440,9 @@ int main(int argc, char** argv) {
         report(path + " " + name, rows, {t.net}, low, high, limit, threshold);
         if (baseline)
           report("  committed net: " + path + " " + name, rows,
-                 {wide_only ? completion::wide_join_scorer() : completion::default_join_scorer()},
+                 {wide_only    ? completion::wide_join_scorer()
+                  : angle_only ? completion::angle_join_scorer()
+                               : completion::default_join_scorer()},
                  low, high, limit, threshold);
         if (baseline && !wide_only)
           report("  retrained net: " + path + " " + name, rows,
@@ -442,6 +459,7 @@ int main(int argc, char** argv) {
       for (const std::string& name : drop) comment << " " << name;
       std::ofstream file(out);
       if (wide_only) comment << "\nOnly candidates over the angle limit (--wide-only).";
+      if (angle_only) comment << "\nOnly angle refusals' second chances (--angle-only).";
       file << completion::join_scorer_source(t.net, comment.str(),
                                              function.empty() ? "default_join_scorer" : function);
       if (!file) throw std::runtime_error("cannot write " + out);

@@ -50,6 +50,15 @@ struct Edge {
   // line (unit, into the hidden part; zero when the runs are too short).
   bool unreliable = false;
   Vec2 side_tangent{0, 0};
+  // Session 35 (JoinScorerOptions::angle_refusal_threshold): what backs the
+  // end tangents, for the net judging an angle refusal's second chance:
+  // visible outline beside p and q (px, up to fit_length), the angle the
+  // two ends' own fits part by (radians; 0 when an end has none), and the
+  // direction the "trust the longer run" rule dropped (zero when it did
+  // not act; joins73's turned tangent).
+  double arm_p = 0.0, arm_q = 0.0;
+  double ends_part = 0.0;
+  Vec2 turned_tangent{0, 0};
 };
 
 struct Context {
@@ -177,6 +186,9 @@ struct Join {
   // edges' own tangents, within it with an unreliable edge's side tangent;
   // the scorer alone may join it (JoinScorerOptions::side_threshold).
   bool side_tangent = false;
+  // Session 35: a side-tangent candidate made by the second chance of
+  // JoinScorerOptions::angle_refusal_threshold, judged by its own net.
+  bool angle_retry = false;
   // Under min_join_coverage, let in by a corridor under the occluders
   // (Options::corridor_width): joins only at the retrained net's
   // corridor_min_probability.

@@ -176,6 +176,20 @@ JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, con
   f[41] = static_cast<float>(std::min(t.dark_step, 0.3));
   f[42] = static_cast<float>(t.top_occluder);
   f[43] = static_cast<float>(std::min(t.patch_occluders, 4)) / 4.0f;
+  // Session 35: an angle refusal's second chance (zero for the others,
+  // where the nets trained before have no weights).
+  if (t.retried) {
+    f[44] = 1.0f;
+    f[45] = static_cast<float>(std::min(t.own_worst_angle, 3.0));
+    f[46] = static_cast<float>(t.arm_min);
+    f[47] = static_cast<float>(t.arm_mean);
+    f[48] = static_cast<float>(t.ends_part);
+    f[49] = t.retried_either_end ? 1.0f : 0.0f;
+    f[50] = t.retried_reversed ? 1.0f : 0.0f;
+    f[51] = t.retried_side ? 1.0f : 0.0f;
+    f[52] = t.retried_turned ? 1.0f : 0.0f;
+    f[53] = static_cast<float>(std::clamp(t.sliver, 0.0, 4.0));
+  }
   return f;
 }
 

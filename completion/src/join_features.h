@@ -36,6 +36,18 @@ struct JoinTerms {
   double dark_step = 0;     // |tone(a) − tone(b)| (screentone)
   double top_occluder = 1;  // share of the covered patch under its largest occluder
   int patch_occluders = 0;  // occluders holding ≥ 10 % of the covered patch
+  // Session 35: an angle refusal's second chance (Join::angle_retry): the
+  // worst angle with the edges' own tangents (over max_join_angle), which
+  // other tangents each edge took, and what backs its ends (Edge::arm_p,
+  // arm_q over fit_length, ends_part over π, the occluded run's length over
+  // its chord, log). All 0 for any other candidate.
+  bool retried = false;
+  double own_worst_angle = 0;
+  double arm_min = 0, arm_mean = 0;
+  double ends_part = 0;
+  bool retried_either_end = false, retried_reversed = false, retried_side = false,
+       retried_turned = false;
+  double sliver = 0;
 };
 
 // Every input but the rivals' (indices 27–30, filled by `add_rival_features`).

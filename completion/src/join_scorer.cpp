@@ -57,7 +57,17 @@ constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
                                                "mass_step",
                                                "dark_step",
                                                "top_occluder",
-                                               "patch_occluders"};
+                                               "patch_occluders",
+                                               "retried",
+                                               "own_worst_angle",
+                                               "arm_min",
+                                               "arm_mean",
+                                               "ends_part",
+                                               "retried_either_end",
+                                               "retried_reversed",
+                                               "retried_side",
+                                               "retried_turned",
+                                               "sliver"};
 
 std::string num(double v) {
   std::ostringstream s;
@@ -163,6 +173,9 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("second_low = " + num(second_low) + "; must be in [0, 1]");
   if (!(second_threshold > 0 && second_threshold <= 1))
     return fail("second_threshold = " + num(second_threshold) + "; must be in (0, 1]");
+  if (!(angle_refusal_threshold > 0 && angle_refusal_threshold <= 1))
+    return fail("angle_refusal_threshold = " + num(angle_refusal_threshold) +
+                "; must be in (0, 1]");
   if (!(crop_size >= 0 && crop_size <= 512))
     return fail("crop_size = " + std::to_string(crop_size) + "; must be in [0, 512]");
   return true;

@@ -141,7 +141,17 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
-    if (j.side_tangent) {
+    if (j.angle_retry) {
+      // Session 35: an angle refusal's second chance joins only by the net
+      // trained on such candidates, after every other candidate under the
+      // limit (a right one must not take a surer join's edge, as joins73's
+      // turned candidates did ranked with the band's rescues).
+      if (s.enabled && s.angle_refusal_threshold < 1 && j.cost <= s.band_high)
+        p = join_probability(angle_join_scorer(), features[k]);
+      j.cost = p >= s.angle_refusal_threshold
+                   ? o.max_join_cost - kWideRankSpan * (p - s.angle_refusal_threshold)
+                   : std::numeric_limits<double>::infinity();
+    } else if (j.side_tangent) {
       // Session 31: an angle refusal undone by a side tangent joins only by
       // the band's net at side_threshold, within the band's top, ranked as
       // the band's rescues; never by the hand cost.

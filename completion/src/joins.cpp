@@ -8,6 +8,7 @@
 #include <set>
 #include <tuple>
 
+#include "angle_retry.h"
 #include "bank_crossings.h"
 #include "context.h"
 #include "hair25d/completion/bezier.h"
@@ -433,6 +434,10 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   // Session 31 (JoinScorerOptions::side_threshold): side-tangent candidates
   // off screentone, their edges' copies and the edges they copy.
   const bool sides = scorer.enabled && scorer.side_threshold < 1 && !tones.screentone();
+  // Session 35: angle refusals' second chances, where their net may join
+  // them or where candidates are recorded (its training).
+  const bool retries =
+      (scorer.enabled && scorer.angle_refusal_threshold < 1) || ctx.join_log != nullptr;
   std::vector<Edge> side_edges;
   std::vector<int> side_origin;
   for (std::size_t i = 0; i < edges.size(); ++i)
@@ -507,6 +512,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       // edge whose tangents are unreliable (Edge::unreliable) may take its
       // side tangent for both ends; the choice with the smallest worst angle,
       // if within the limit, is a candidate the scorer alone may join.
+      const double own_worst = worst;
       Edge side_a, side_b;
       bool side = false;
       if (sides && cut_pair && across && !strand_like && !wide_angle && !ink &&
@@ -531,6 +537,23 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           std::copy(tried, tried + 4, angles);
         }
         if (side) worst = best;
+      }
+      // Session 35 (JoinScorerOptions::angle_refusal_threshold): what no
+      // side tangent brings within the limit (screentone drawings too) is
+      // tried with other tangents for each edge; judged by its own net.
+      RetriedTangents retried;
+      if (retries && !side && cut_pair && across && !strand_like && !wide_angle && !ink &&
+          bank.share < kMinBankShare) {
+        retried = retry_tangents(ea, eb, c1, c2, max_angle,
+                                 scorer.angle_refusal_turned || ctx.join_log != nullptr);
+        if (retried.found) {
+          side = true;
+          side_a = ea, side_b = eb;
+          side_a.tangent_p = retried.a.p, side_a.tangent_q = retried.a.q;
+          side_b.tangent_p = retried.b.p, side_b.tangent_q = retried.b.q;
+          std::copy(retried.angles, retried.angles + 4, angles);
+          worst = retried.worst;
+        }
       }
       const Edge& a = side ? side_a : ea;
       const Edge& b = side ? side_b : eb;
@@ -705,6 +728,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                               tone_cost,
                               one_sided.has_value()};
             add_scorer_terms(tones, a.region, b.region, under_by, &*terms);
+            if (retried.found)
+              add_retry_terms(ea, eb, retried, own_worst / max_angle, o.fit_length, &*terms);
           }
         }
       }
@@ -735,6 +760,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       if (side && !terms) cost = std::numeric_limits<double>::infinity();
       if (side && terms && cost <= limit) {
         join.side_tangent = true;
+        join.angle_retry = retried.found;
         join.edge_a = static_cast<int>(edges.size() + side_edges.size());
         side_edges.push_back(std::move(side_a));
         join.edge_b = static_cast<int>(edges.size() + side_edges.size());

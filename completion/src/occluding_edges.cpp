@@ -112,6 +112,9 @@ Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<i
   };
   const bool has_p = fit_direction(begin, 1, free_before, &e.tangent_p);
   const bool has_q = fit_direction(end, -1, free_after, &e.tangent_q);
+  e.arm_p = free_before;
+  e.arm_q = free_after;
+  if (has_p && has_q) e.ends_part = std::acos(std::clamp(e.tangent_p.dot(e.tangent_q), -1.0, 1.0));
   // Without visible outline beside an end, the band is taken to continue
   // parallel to its other side, or straight out across the chord.
   // A sliver wholly under occluders has nothing better; a piece with visible
@@ -147,11 +150,16 @@ Edge make_edge(const Context& ctx, const RegionInfo& region, const std::vector<i
   }
   // Both sides of a band run into the hidden part the same way; opposite
   // tangents mean the shorter visible run turned a corner: trust the longer.
+  // (The dropped one is kept: a sliver whose long side lies under a strand
+  // running along it may continue either way, session 32.)
   if (e.tangent_p.dot(e.tangent_q) < -0.3) {
-    if (free_before >= free_after)
+    if (free_before >= free_after) {
+      e.turned_tangent = e.tangent_q;
       e.tangent_q = e.tangent_p;
-    else
+    } else {
+      e.turned_tangent = e.tangent_p;
       e.tangent_p = e.tangent_q;
+    }
   }
   // The region's colour next to the edge (drawn pixels only, not outlines).
   Eigen::Vector3d sum(0, 0, 0);

@@ -361,6 +361,17 @@ TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
                    "join_scorer_shaded_weights.cpp");  // two-tone and gradient (session 31)
   EXPECT_NE(shaded_join_scorer().w1[0][0], screentone_join_scorer().w1[0][0]);
   EXPECT_NE(shaded_join_scorer().w1[0][0], retrained_join_scorer().w1[0][0]);
+  expect_committed(angle_join_scorer(), "angle_join_scorer",
+                   "join_scorer_angle_weights.cpp");  // angle refusals (session 35)
+  EXPECT_NE(angle_join_scorer().w1[0][0], wide_join_scorer().w1[0][0]);
+  // The nets trained before session 35's inputs have no weights there.
+  for (int k = 44; k < kJoinFeatures; ++k)
+    for (const JoinScorerNet* net :
+         {&default_join_scorer(), &wide_join_scorer(), &retrained_join_scorer(),
+          &screentone_join_scorer(), &shaded_join_scorer()}) {
+      EXPECT_EQ(net->inv_std[k], 0.0f) << k;
+      for (int h = 0; h < kJoinHidden; ++h) EXPECT_EQ(net->w1[k][h], 0.0f) << k;
+    }
 }
 
 // A strand that turns a corner under a band (session 18): piece 1 comes

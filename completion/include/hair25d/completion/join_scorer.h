@@ -13,7 +13,10 @@ namespace hair25d::completion {
 
 // Inputs of the scorer, all symmetric in the two pieces (join_features.cpp
 // says what each is; `join_feature_name` names them).
-inline constexpr int kJoinFeatures = 44;
+// Session 35: inputs 44-53 describe an angle refusal's second chance
+// (JoinScorerOptions::angle_refusal_threshold) and are 0 for every other
+// candidate; the nets trained before them have zero weights there.
+inline constexpr int kJoinFeatures = 54;
 inline constexpr int kJoinHidden = 12;
 using JoinFeatures = std::array<float, kJoinFeatures>;
 
@@ -65,6 +68,10 @@ const JoinScorerNet& screentone_join_scorer();
 // drawings told shaded from their paint where JoinScorerOptions::shaded
 // says.
 const JoinScorerNet& shaded_join_scorer();
+// Session 35: a net trained on the second chances of angle refusals alone
+// (JoinScorerOptions::angle_refusal_threshold; both relations, four
+// shadings; generated file join_scorer_angle_weights.cpp).
+const JoinScorerNet& angle_join_scorer();
 // The mean of the nets' probabilities (one net's alone when there is one):
 // a wrong candidate that one training seed happens to trust is refused
 // when the others do not. Throws hair25d::Error for no nets or a feature
@@ -280,6 +287,21 @@ struct JoinScorerOptions {
   // on the band's refusals"). second_threshold 1 turns it off.
   double second_low = 0.5;
   double second_threshold = 0.85;
+  // Session 35 (joins81): a cut pair refused by max_join_angle_deg that no
+  // side tangent brings within it (screentone drawings too) is tried with
+  // other tangents for each edge: one end's for both, its own reversed, its
+  // side tangent, the direction its opposite ends dropped (Edge::
+  // turned_tangent); the choice with the smallest worst angle, if within
+  // the limit and its hand cost within band_high, is judged by
+  // `angle_join_scorer` alone (trained on such candidates, with inputs
+  // saying which tangents were used and how much outline backs them) and
+  // joined at p >= angle_refusal_threshold, after every other candidate
+  // under the limit. 1 turns it off.
+  double angle_refusal_threshold = 1.0;
+  // Whether it also tries the readings that turn an edge's outline round
+  // (its own tangents reversed, the direction its opposite ends dropped);
+  // recorded candidates always do (the net's training data).
+  bool angle_refusal_turned = false;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
