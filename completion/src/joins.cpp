@@ -435,9 +435,11 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   // off screentone, their edges' copies and the edges they copy.
   const bool sides = scorer.enabled && scorer.side_threshold < 1 && !tones.screentone();
   // Session 35: angle refusals' second chances, where their net may join
-  // them or where candidates are recorded (its training).
+  // them or where candidates are recorded with the scorer off (its
+  // training, train_join_scorer collect); recorded with the scorer on and
+  // the option off, the candidates are main's.
   const bool retries =
-      (scorer.enabled && scorer.angle_refusal_threshold < 1) || ctx.join_log != nullptr;
+      scorer.enabled ? scorer.angle_refusal_threshold < 1 : ctx.join_log != nullptr;
   std::vector<Edge> side_edges;
   std::vector<int> side_origin;
   for (std::size_t i = 0; i < edges.size(); ++i)
@@ -545,7 +547,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       if (retries && !side && cut_pair && across && !strand_like && !wide_angle && !ink &&
           bank.share < kMinBankShare) {
         retried = retry_tangents(ea, eb, c1, c2, max_angle,
-                                 scorer.angle_refusal_turned || ctx.join_log != nullptr);
+                                 scorer.angle_refusal_turned || !scorer.enabled);
         if (retried.found) {
           side = true;
           side_a = ea, side_b = eb;

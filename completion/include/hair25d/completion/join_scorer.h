@@ -300,7 +300,8 @@ struct JoinScorerOptions {
   double angle_refusal_threshold = 1.0;
   // Whether it also tries the readings that turn an edge's outline round
   // (its own tangents reversed, the direction its opposite ends dropped);
-  // recorded candidates always do (the net's training data).
+  // candidates recorded with the scorer off always do (the net's training
+  // data).
   bool angle_refusal_turned = false;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
