@@ -4,6 +4,7 @@
 // candidates alone (`angle_join_scorer`), on every shading.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <utility>
 
@@ -14,6 +15,8 @@
 #include "hair25d/generator/generator.h"
 #include "invalid_options.h"
 #include "joins_only.h"
+#include "strand_of.h"
+#include "trace_of.h"
 
 namespace hair25d::completion {
 namespace {
@@ -71,6 +74,27 @@ TEST(AngleRefusals, RecordedAsRowsOfTheirOwn) {
     for (int k = kRetried; k < kJoinFeatures; ++k) EXPECT_EQ(j.features[k], 0.0f) << k;
   }
   EXPECT_GT(retried, 0);
+}
+
+// Dev two-tone 2002: pieces 2 and 19, one strand in the annotation, are
+// refused by the angle with their own tangents; at the default bar the
+// angle net's second chance joins them (p 0.91).
+TEST(AngleRefusals, JoinedAtTheDefaultBar) {
+  const AnnotatedCase c = test::generated_case(2002, generator::Shading::kTwoTone);
+  const Result off = run(c, 1.0);
+  EXPECT_EQ(test::trace_of(off, 2, 19, JoinStage::kChosen), nullptr);
+  EXPECT_NE(test::trace_of(off, 2, 19, JoinStage::kAngle), nullptr);
+  std::map<int, int> s = test::strand_of(off);
+  EXPECT_NE(s.at(2), s.at(19));
+
+  const double bar = JoinScorerOptions{}.angle_refusal_threshold;
+  ASSERT_LT(bar, 1.0);
+  const Result on = run(c, bar);
+  const JoinTrace* chosen = test::trace_of(on, 2, 19, JoinStage::kChosen);
+  ASSERT_NE(chosen, nullptr);
+  EXPECT_GE(chosen->probability, bar);
+  s = test::strand_of(on);
+  EXPECT_EQ(s.at(2), s.at(19));
 }
 
 TEST(AngleRefusals, BadThresholdIsRefused) {

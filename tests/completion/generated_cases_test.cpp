@@ -283,6 +283,8 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
     o.join_scorer.side_threshold = 1.0;
     o.join_scorer.second_threshold = 1.0;
+    // Angle refusals' second chances have their own net (angle_refusal_test.cpp).
+    o.join_scorer.angle_refusal_threshold = 1.0;
     return complete_strands(test::input_from_case(c), o);
   };
   const JoinScorerOptions s;
@@ -342,6 +344,8 @@ TEST(GeneratedCases, ScreentoneVetoReachesLower) {
     o.inpaint_background = false;
     o.join_scorer.record = true;
     o.trace_joins = true;
+    // Angle refusals' second chances have their own net (angle_refusal_test.cpp).
+    o.join_scorer.angle_refusal_threshold = 1.0;
     int between = 0, vetoed = 0;
     for (int seed : {2000, 2001, 2004}) {
       const Result r =
@@ -389,6 +393,8 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
     o.trace_joins = true;
     o.join_scorer.retrained = retrained;
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
+    // Angle refusals' second chances have their own net (angle_refusal_test.cpp).
+    o.join_scorer.angle_refusal_threshold = 1.0;
     o.join_scorer.veto_low = 0.0;
     o.join_scorer.screentone_veto_low = 0.0;
     o.join_scorer.rescue_high = 5.0;

@@ -93,6 +93,8 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
       // and so has the second opinion (join_scorer_second_test.cpp).
       o.join_scorer.side_threshold = 1.0;
       o.join_scorer.second_threshold = 1.0;
+      // Angle refusals' second chances have their own net (angle_refusal_test.cpp).
+      o.join_scorer.angle_refusal_threshold = 1.0;
       // The default net judges the band of every drawing without screentone.
       o.join_scorer.retrained_shaded = false;
       o.join_scorer.ensemble_threshold = 0.05;

@@ -296,8 +296,9 @@ struct JoinScorerOptions {
   // `angle_join_scorer` alone (trained on such candidates, with inputs
   // saying which tangents were used and how much outline backs them) and
   // joined at p >= angle_refusal_threshold, after every other candidate
-  // under the limit. 1 turns it off.
-  double angle_refusal_threshold = 1.0;
+  // under the limit. 1 turns it off. On at 0.9 since session 35 (lead's
+  // held and fresh sets, both relations: +133 right / 0 wrong pairs).
+  double angle_refusal_threshold = 0.9;
   // Whether it also tries the readings that turn an edge's outline round
   // (its own tangents reversed, the direction its opposite ends dropped);
   // candidates recorded with the scorer off always do (the net's training
