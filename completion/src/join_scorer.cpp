@@ -310,21 +310,37 @@ std::string float_literal(float v) {
   return out + "f";
 }
 
+// The first `count` values (all of them by default).
 template <class Values>
-std::string float_row(const Values& values) {
+std::string float_row(const Values& values, std::size_t count = static_cast<std::size_t>(-1)) {
   std::string out = "{";
-  for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + float_literal(values[i]);
+  for (std::size_t i = 0; i < std::min(count, values.size()); ++i)
+    out += (i ? ", " : "") + float_literal(values[i]);
   return out + "}";
+}
+
+// How many inputs the net reads: past the last one with a mean, a scale or
+// a weight, the initialiser leaves them out and they are zero-filled, so a
+// net trained before inputs were added (session 35's 44-53) is printed as
+// it was written then.
+int inputs_used(const JoinScorerNet& net) {
+  int used = kJoinFeatures;
+  auto zero = [](float v) { return v == 0.0f; };
+  while (used > 0 && zero(net.mean[used - 1]) && zero(net.inv_std[used - 1]) &&
+         std::all_of(net.w1[used - 1].begin(), net.w1[used - 1].end(), zero))
+    --used;
+  return used;
 }
 
 // The braced initialiser of one net, its lines led by `indent`.
 std::string net_initialiser(const JoinScorerNet& net, const std::string& indent) {
+  const int used = inputs_used(net);
   std::ostringstream s;
   s << "{\n"
-    << indent << float_row(net.mean) << ",\n"
-    << indent << float_row(net.inv_std) << ",\n"
+    << indent << float_row(net.mean, used) << ",\n"
+    << indent << float_row(net.inv_std, used) << ",\n"
     << indent << "{{\n";
-  for (int k = 0; k < kJoinFeatures; ++k) s << indent << "    " << float_row(net.w1[k]) << ",\n";
+  for (int k = 0; k < used; ++k) s << indent << "    " << float_row(net.w1[k]) << ",\n";
   s << indent << "}},\n"
     << indent << float_row(net.b1) << ",\n"
     << indent << float_row(net.w2) << ",\n"
