@@ -37,6 +37,8 @@ using completion::JoinFeatures;
 using completion::kJoinFeatures;
 // The input saying a row is an angle refusal's second chance (session 35).
 constexpr int kRetried = 44;
+// The input saying a row is a cover refusal's second chance (session 36).
+constexpr int kCoverRetried = 54;
 
 struct Row {
   std::string set;
@@ -266,6 +268,12 @@ int main(int argc, char** argv) {
   train->add_flag("--angle-only", angle_only,
                   "Only angle refusals' second chances (input `retried`; "
                   "JoinScorerOptions::angle_refusal_threshold); without it they are left out");
+  // Session 36: the second chances of cover refusals (JoinScorerOptions::
+  // cover_refusal_threshold) likewise.
+  bool cover_only = false;
+  train->add_flag("--cover-only", cover_only,
+                  "Only cover refusals' second chances (input `cover_retried`; "
+                  "JoinScorerOptions::cover_refusal_threshold); without it they are left out");
   bool baseline = false;
   // Session 23: the same report for the committed net, so a retrained one
   // is compared with it on the same rows.
@@ -291,6 +299,10 @@ int main(int argc, char** argv) {
     if (baseline && !drop.empty()) throw std::runtime_error("--baseline with --drop");
     if (std::string(completion::join_feature_name(kRetried)) != "retried")
       throw std::runtime_error("input 44 is not `retried`");
+    if (std::string(completion::join_feature_name(kCoverRetried)) != "cover_retried")
+      throw std::runtime_error("input 54 is not `cover_retried`");
+    if (cover_only && (wide_only || angle_only))
+      throw std::runtime_error("--cover-only with --wide-only or --angle-only");
     if (wide_only && angle_only) throw std::runtime_error("--wide-only with --angle-only");
     std::vector<int> dropped;
     for (const std::string& name : drop) {
@@ -302,7 +314,9 @@ int main(int argc, char** argv) {
     auto rows_of = [&](const std::string& path) {
       std::vector<Row> rows = read_rows(path);
       if (wide_only) std::erase_if(rows, [](const Row& r) { return !(r.f[1] > 1.0f); });
-      std::erase_if(rows, [&](const Row& r) { return (r.f[kRetried] > 0.5f) != angle_only; });
+      std::erase_if(rows, [&](const Row& r) { return (r.f[kCoverRetried] > 0.5f) != cover_only; });
+      if (!cover_only)
+        std::erase_if(rows, [&](const Row& r) { return (r.f[kRetried] > 0.5f) != angle_only; });
       for (Row& r : rows)
         for (int k : dropped) r.f[k] = 0;
       return rows;
@@ -310,7 +324,7 @@ int main(int argc, char** argv) {
     if (*probs) {
       std::printf(
           "set,case,a,b,label,hand_cost,default,retrained,screentone,shaded,ensemble,paint,"
-          "angle\n");
+          "angle,cover\n");
       std::ifstream in(probs_csv);
       if (!in) throw std::runtime_error("cannot read " + probs_csv);
       for (std::string line; std::getline(in, line);) {
@@ -322,7 +336,7 @@ int main(int argc, char** argv) {
                                    " cells; must be " + std::to_string(7 + kJoinFeatures));
         JoinFeatures f{};
         for (int k = 0; k < kJoinFeatures; ++k) f[k] = std::stof(cells[7 + k]);
-        std::printf("%s,%s,%s,%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", cells[0].c_str(),
+        std::printf("%s,%s,%s,%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", cells[0].c_str(),
                     cells[1].c_str(), cells[2].c_str(), cells[3].c_str(), cells[4].c_str(),
                     cells[5].c_str(),
                     completion::join_probability(completion::default_join_scorer(), f),
@@ -331,7 +345,8 @@ int main(int argc, char** argv) {
                     completion::join_probability(completion::shaded_join_scorer(), f),
                     completion::join_probability(completion::ensemble_join_scorers(), f),
                     completion::join_probability(completion::paint_ensemble_join_scorers(), f),
-                    completion::join_probability(completion::angle_join_scorer(), f));
+                    completion::join_probability(completion::angle_join_scorer(), f),
+                    completion::join_probability(completion::cover_join_scorer(), f));
       }
       return 0;
     }
@@ -442,6 +457,7 @@ int main(int argc, char** argv) {
           report("  committed net: " + path + " " + name, rows,
                  {wide_only    ? completion::wide_join_scorer()
                   : angle_only ? completion::angle_join_scorer()
+                  : cover_only ? completion::cover_join_scorer()
                                : completion::default_join_scorer()},
                  low, high, limit, threshold);
         if (baseline && !wide_only)
@@ -460,6 +476,7 @@ int main(int argc, char** argv) {
       std::ofstream file(out);
       if (wide_only) comment << "\nOnly candidates over the angle limit (--wide-only).";
       if (angle_only) comment << "\nOnly angle refusals' second chances (--angle-only).";
+      if (cover_only) comment << "\nOnly cover refusals' second chances (--cover-only).";
       file << completion::join_scorer_source(t.net, comment.str(),
                                              function.empty() ? "default_join_scorer" : function);
       if (!file) throw std::runtime_error("cannot write " + out);

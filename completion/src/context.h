@@ -189,6 +189,9 @@ struct Join {
   // Session 35: a side-tangent candidate made by the second chance of
   // JoinScorerOptions::angle_refusal_threshold, judged by its own net.
   bool angle_retry = false;
+  // Session 36: under min_join_coverage, kept as the second chance of
+  // JoinScorerOptions::cover_refusal_threshold, judged by its own net.
+  bool cover_retry = false;
   // Under min_join_coverage, let in by a corridor under the occluders
   // (Options::corridor_width): joins only at the retrained net's
   // corridor_min_probability.

@@ -190,6 +190,19 @@ JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, con
     f[52] = t.retried_turned ? 1.0f : 0.0f;
     f[53] = static_cast<float>(std::clamp(t.sliver, 0.0, 4.0));
   }
+  // Session 36: a cover refusal's second chance (zero for the others).
+  if (t.cover_retried) {
+    f[54] = 1.0f;
+    f[55] = static_cast<float>(t.miss_paper);
+    f[56] = static_cast<float>(t.miss_face);
+    f[57] = static_cast<float>(t.miss_ink);
+    f[58] = static_cast<float>(t.miss_below);
+    f[59] = static_cast<float>(t.miss_sibling);
+    f[60] = static_cast<float>(t.miss_other);
+    f[61] = static_cast<float>(std::clamp(t.shape_cover, 0.0, 1.0));
+    f[62] = static_cast<float>(std::log1p(std::min(t.miss_per_width, 50.0)));
+    f[63] = static_cast<float>(t.miss_at_cuts);
+  }
   return f;
 }
 

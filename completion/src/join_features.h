@@ -48,6 +48,19 @@ struct JoinTerms {
   bool retried_either_end = false, retried_reversed = false, retried_side = false,
        retried_turned = false;
   double sliver = 0;
+  // Session 36: a cover refusal's second chance (Join::cover_retry): the
+  // patch's pixels outside both pieces that no occluder covers, by what
+  // lies there, as shares of those pixels (paper or background, the face,
+  // ink, a region under a piece, a region under a piece's occluder, any
+  // other hair region); the cover of the best patch of joins68's arm
+  // shares; the uncovered pixels over the wider cut's width squared; the
+  // share of them beside the two cuts. All 0 for any other candidate.
+  bool cover_retried = false;
+  double miss_paper = 0, miss_face = 0, miss_ink = 0;
+  double miss_below = 0, miss_sibling = 0, miss_other = 0;
+  double shape_cover = 0;
+  double miss_per_width = 0;
+  double miss_at_cuts = 0;
 };
 
 // Every input but the rivals' (indices 27–30, filled by `add_rival_features`).

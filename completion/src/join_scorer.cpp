@@ -67,7 +67,17 @@ constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
                                                "retried_reversed",
                                                "retried_side",
                                                "retried_turned",
-                                               "sliver"};
+                                               "sliver",
+                                               "cover_retried",
+                                               "miss_paper",
+                                               "miss_face",
+                                               "miss_ink",
+                                               "miss_below",
+                                               "miss_sibling",
+                                               "miss_other",
+                                               "shape_cover",
+                                               "miss_per_width",
+                                               "miss_at_cuts"};
 
 std::string num(double v) {
   std::ostringstream s;
@@ -175,6 +185,9 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("second_threshold = " + num(second_threshold) + "; must be in (0, 1]");
   if (!(angle_refusal_threshold > 0 && angle_refusal_threshold <= 1))
     return fail("angle_refusal_threshold = " + num(angle_refusal_threshold) +
+                "; must be in (0, 1]");
+  if (!(cover_refusal_threshold > 0 && cover_refusal_threshold <= 1))
+    return fail("cover_refusal_threshold = " + num(cover_refusal_threshold) +
                 "; must be in (0, 1]");
   if (!(crop_size >= 0 && crop_size <= 512))
     return fail("crop_size = " + std::to_string(crop_size) + "; must be in [0, 512]");

@@ -82,15 +82,30 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   // the band.
   auto apart = [&](std::size_t k) {
     const Join& j = (*candidates)[which[k]];
-    return j.wide || j.side_tangent;
+    return j.wide || j.side_tangent || j.cover_retry;
   };
   for (std::size_t k = 0; k < which.size(); ++k)
     if (apart(k)) inner[k] = std::numeric_limits<double>::infinity(), any_wide = true;
+  // Session 36: a cover refusal's second chance is no rival of the other
+  // candidates kept apart either (their features stay as without it); its
+  // own rivals are all of them.
+  auto cover_retry = [&](std::size_t k) { return (*candidates)[which[k]].cover_retry; };
   if (any_wide) {
-    std::vector<JoinFeatures> all = features;
-    add_rival_features(costs, ends, std::max(s.band_high, s.wide_band_high), &all);
+    std::vector<double> outer = costs;
+    bool any_cover = false;
     for (std::size_t k = 0; k < which.size(); ++k)
-      if (apart(k)) features[k] = all[k];
+      if (cover_retry(k)) outer[k] = std::numeric_limits<double>::infinity(), any_cover = true;
+    const double rivals_high = std::max(s.band_high, s.wide_band_high);
+    std::vector<JoinFeatures> all = features;
+    add_rival_features(outer, ends, rivals_high, &all);
+    for (std::size_t k = 0; k < which.size(); ++k)
+      if (apart(k) && !cover_retry(k)) features[k] = all[k];
+    if (any_cover) {
+      all = features;
+      add_rival_features(costs, ends, rivals_high, &all);
+      for (std::size_t k = 0; k < which.size(); ++k)
+        if (cover_retry(k)) features[k] = all[k];
+    }
   }
   {
     std::vector<JoinFeatures> own = features;
@@ -141,7 +156,16 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
-    if (j.angle_retry) {
+    if (j.cover_retry) {
+      // Session 36: a cover refusal's second chance joins only by the net
+      // trained on such candidates, after every other candidate under the
+      // limit, as the angle refusals' do.
+      if (s.enabled && s.cover_refusal_threshold < 1)
+        p = join_probability(cover_join_scorer(), features[k]);
+      j.cost = p >= s.cover_refusal_threshold
+                   ? o.max_join_cost - kWideRankSpan * (p - s.cover_refusal_threshold)
+                   : std::numeric_limits<double>::infinity();
+    } else if (j.angle_retry) {
       // Session 35: an angle refusal's second chance joins only by the net
       // trained on such candidates, after every other candidate under the
       // limit (a right one must not take a surer join's edge, as joins73's

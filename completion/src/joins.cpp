@@ -10,6 +10,7 @@
 
 #include "angle_retry.h"
 #include "bank_crossings.h"
+#include "cover_retry.h"
 #include "context.h"
 #include "hair25d/completion/bezier.h"
 #include "join_corridor.h"
@@ -440,6 +441,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   // the option off, the candidates are main's.
   const bool retries =
       scorer.enabled ? scorer.angle_refusal_threshold < 1 : ctx.join_log != nullptr;
+  // Session 36: cover refusals' second chances, likewise.
+  const bool cover_retries =
+      scorer.enabled ? scorer.cover_refusal_threshold < 1 : ctx.join_log != nullptr;
   std::vector<Edge> side_edges;
   std::vector<int> side_origin;
   for (std::size_t i = 0; i < edges.size(); ++i)
@@ -575,6 +579,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       join.edge_b = static_cast<int>(j);
       double cost = std::numeric_limits<double>::infinity();
       std::optional<JoinTerms> terms;
+      // Session 36 (JoinScorerOptions::cover_refusal_threshold): refused
+      // only by the cover, kept for its own net.
+      bool cover_retry = false;
       const PaintStep step = paint_step(a, b, paints[i], paints[j], region_paint_of(a.region),
                                         region_paint_of(b.region), shadow);
       // Two pieces of flat paint stepping more than kMaxFlatStrandStep, one
@@ -708,8 +715,14 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
             why = JoinStage::kCover;
           else if (over_other_back)
             why = JoinStage::kOtherBack;
-          cost = uncovered || over_other_back ? std::numeric_limits<double>::infinity()
-                                              : cost + kUncoveredCost * (1.0 - cover);
+          // Session 36: a candidate with its own tangents within the
+          // angle limit, refused by the cover alone, its hand cost before
+          // the cover term in the band.
+          cover_retry = cover_retries && uncovered && !over_other_back && strand_like && !side &&
+                        cost <= scorer.band_high;
+          cost = (uncovered && !cover_retry) || over_other_back
+                     ? std::numeric_limits<double>::infinity()
+                     : cost + kUncoveredCost * (1.0 - cover);
           if (scoring && std::isfinite(cost)) {
             terms = JoinTerms{mean_angle / max_angle,
                               worst_angle / max_angle,
@@ -732,6 +745,16 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
             add_scorer_terms(tones, a.region, b.region, under_by, &*terms);
             if (retried.found)
               add_retry_terms(ea, eb, retried, own_worst / max_angle, o.fit_length, &*terms);
+            if (cover_retry) {
+              // The cover of joins68's best arm shares, measured here
+              // whatever the guards of Options::join_arm_shares say.
+              double shape_cover = cover;
+              if (!o.join_arm_shares.empty())
+                shape_cover = std::max(
+                    shape_cover,
+                    best_join_shape(ctx, a, b, cover_face, ink, o.join_arm_shares).cover);
+              add_cover_terms(ctx, join.patch, a, b, face, cover_face, ink, shape_cover, &*terms);
+            }
           }
         }
       }
@@ -746,8 +769,12 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       if (bank.window && (!front.count(a.region) || !front.count(b.region)) &&
           step.step > kMaxBackWindowStep)
         bank.share = 0.0;
-      if (bank.share >= kMinBankShare && (bank_cost < cost || wide_angle)) {
+      // A cover refusal's second chance yields to the bank join as the
+      // refusal itself would.
+      const double strand_cost = cover_retry ? std::numeric_limits<double>::infinity() : cost;
+      if (bank.share >= kMinBankShare && (bank_cost < strand_cost || wide_angle)) {
         cost = bank_cost;
+        cover_retry = false;
         join.patch.clear();
         join.behind_face = false;
         join.corridor = false;
@@ -770,7 +797,10 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
         side_origin.push_back(static_cast<int>(i));
         side_origin.push_back(static_cast<int>(j));
       }
-      if (cost > (join.wide ? wide_limit : limit)) {
+      // A cover refusal's second chance is scored whatever its hand cost
+      // with the cover term (its net alone decides).
+      join.cover_retry = cover_retry && terms.has_value();
+      if (cost > (join.wide ? wide_limit : limit) && !join.cover_retry) {
         drop(why);
         continue;
       }
@@ -802,7 +832,8 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       if (x.cost <= o.max_join_cost) continue;
       // Asked under the band: vetoed; over it: not rescued (the hand cost).
       const bool asked = x.probability >= 0;
-      t.stage = x.wide                                     ? JoinStage::kWideRefused
+      t.stage = x.cover_retry                              ? JoinStage::kCover
+                : x.wide                                   ? JoinStage::kWideRefused
                 : x.uneven_gradient && asked               ? JoinStage::kUnevenRefused
                 : asked && t.hand_cost < scorer.band_low   ? JoinStage::kVetoed
                 : asked && t.hand_cost <= scorer.band_high ? JoinStage::kBandRefused

@@ -364,6 +364,14 @@ TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
   expect_committed(angle_join_scorer(), "angle_join_scorer",
                    "join_scorer_angle_weights.cpp");  // angle refusals (session 35)
   EXPECT_NE(angle_join_scorer().w1[0][0], wide_join_scorer().w1[0][0]);
+  expect_committed(cover_join_scorer(), "cover_join_scorer",
+                   "join_scorer_cover_weights.cpp");  // cover refusals (session 36)
+  EXPECT_NE(cover_join_scorer().w1[0][0], angle_join_scorer().w1[0][0]);
+  // The nets trained before session 36's inputs have no weights there.
+  for (int k = 54; k < kJoinFeatures; ++k) {
+    EXPECT_EQ(angle_join_scorer().inv_std[k], 0.0f) << k;
+    for (int h = 0; h < kJoinHidden; ++h) EXPECT_EQ(angle_join_scorer().w1[k][h], 0.0f) << k;
+  }
   // The nets trained before session 35's inputs have no weights there.
   for (int k = 44; k < kJoinFeatures; ++k)
     for (const JoinScorerNet* net :

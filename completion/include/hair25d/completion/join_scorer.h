@@ -16,7 +16,11 @@ namespace hair25d::completion {
 // Session 35: inputs 44-53 describe an angle refusal's second chance
 // (JoinScorerOptions::angle_refusal_threshold) and are 0 for every other
 // candidate; the nets trained before them have zero weights there.
-inline constexpr int kJoinFeatures = 54;
+// Session 36: inputs 54-63 describe a cover refusal's second chance
+// (JoinScorerOptions::cover_refusal_threshold), 0 for every other
+// candidate; the nets trained before them have zero weights there (their
+// files leave those inputs out).
+inline constexpr int kJoinFeatures = 64;
 inline constexpr int kJoinHidden = 12;
 using JoinFeatures = std::array<float, kJoinFeatures>;
 
@@ -72,6 +76,10 @@ const JoinScorerNet& shaded_join_scorer();
 // (JoinScorerOptions::angle_refusal_threshold; both relations, four
 // shadings; generated file join_scorer_angle_weights.cpp).
 const JoinScorerNet& angle_join_scorer();
+// Session 36: the net for cover refusals' second chances only
+// (JoinScorerOptions::cover_refusal_threshold; both relations, four
+// shadings; generated file join_scorer_cover_weights.cpp).
+const JoinScorerNet& cover_join_scorer();
 // The mean of the nets' probabilities (one net's alone when there is one):
 // a wrong candidate that one training seed happens to trust is refused
 // when the others do not. Throws hair25d::Error for no nets or a feature
@@ -304,6 +312,15 @@ struct JoinScorerOptions {
   // candidates recorded with the scorer off always do (the net's training
   // data).
   bool angle_refusal_turned = false;
+  // Session 36: a strand-join candidate refused only because its patch
+  // lies under min_join_coverage (not over another back paint, no corridor,
+  // within the angle limit with its own tangents, hand cost before the
+  // cover term up to band_high) is asked of `cover_join_scorer` alone
+  // (trained on such candidates, with inputs saying what lies where the
+  // patch is uncovered) and joined at p >= cover_refusal_threshold, after
+  // every other candidate under the limit, as the angle refusals' second
+  // chances are. 1 turns it off.
+  double cover_refusal_threshold = 1.0;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;

@@ -1,0 +1,116 @@
+// Session 36 (JoinScorerOptions::cover_refusal_threshold): a strand-join
+// candidate refused only because its patch lies under min_join_coverage is
+// kept as a second chance and judged by a net trained on such candidates
+// alone (`cover_join_scorer`), with inputs saying what lies where the patch
+// is uncovered (cover_retry.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "annotated_eval.h"
+#include "generated_case.h"
+#include "hair25d/completion/completion.h"
+#include "hair25d/completion/join_scorer.h"
+#include "hair25d/generator/generator.h"
+#include "invalid_options.h"
+#include "joins_only.h"
+
+namespace hair25d::completion {
+namespace {
+
+constexpr int kCoverRetried = 54;  // join_feature_name: "cover_retried"
+constexpr int kRetried = 44;       // "retried" (session 35)
+
+int feature(const char* name) {
+  for (int k = 0; k < kJoinFeatures; ++k)
+    if (std::string(join_feature_name(k)) == name) return k;
+  ADD_FAILURE() << name;
+  return 0;
+}
+
+Result run(const AnnotatedCase& c, double threshold) {
+  Options o = test::joins_only();
+  o.trace_joins = true;
+  o.join_scorer.cover_refusal_threshold = threshold;
+  return complete_strands(test::input_from_case(c), o);
+}
+
+std::set<std::pair<int, int>> traced(const Result& r, JoinStage stage) {
+  std::set<std::pair<int, int>> out;
+  for (const JoinTrace& t : r.join_trace)
+    if (t.stage == stage) out.insert({t.region_a, t.region_b});
+  return out;
+}
+
+// With a bar any candidate passes, two-tone drawings gain joins
+// of pairs the cover refused, each with a patch under min_join_coverage.
+TEST(CoverRefusals, JoinedOnlyWhenOn) {
+  int gained = 0;
+  const double min_cover = Options{}.min_join_coverage;
+  for (const std::uint64_t seed : {2000u, 2001u, 2002u, 2003u}) {
+    const AnnotatedCase c = test::generated_case(seed, generator::Shading::kTwoTone);
+    const Result off = run(c, 1.0), on = run(c, 1e-6);
+    const auto refused = traced(off, JoinStage::kCover), before = traced(off, JoinStage::kChosen);
+    for (const JoinTrace& t : on.join_trace) {
+      if (t.stage != JoinStage::kChosen) continue;
+      const std::pair<int, int> pair{t.region_a, t.region_b};
+      if (!before.count(pair) && refused.count(pair) && t.cover < min_cover) ++gained;
+    }
+  }
+  EXPECT_GT(gained, 0);
+}
+
+// Recorded (the net's training data) as rows of their own: `cover_retried`
+// set, the cover under min_join_coverage, the uncovered shares summing to
+// what the cover leaves (the same raster, off screentone), never chosen;
+// every other row has the second chance's inputs at 0 (the nets trained
+// before them see what they were trained on).
+TEST(CoverRefusals, RecordedAsRowsOfTheirOwn) {
+  Options o = test::joins_only();
+  o.join_scorer.enabled = false;
+  o.join_scorer.record = true;
+  const AnnotatedCase c = test::generated_case(2002, generator::Shading::kTwoTone);
+  const Result r = complete_strands(test::input_from_case(c), o);
+  const int uncovered = feature("uncovered");  // 1 − the cover
+  int retried = 0;
+  for (const JoinCandidate& j : r.join_candidates) {
+    if (j.features[kCoverRetried] > 0.5f) {
+      ++retried;
+      EXPECT_GT(j.features[uncovered], 1.0 - o.min_join_coverage - 1e-6);
+      double missed = 0;
+      for (int k = 55; k <= 60; ++k) {
+        EXPECT_GE(j.features[k], 0.0f) << k;
+        missed += j.features[k];
+      }
+      EXPECT_NEAR(missed, j.features[uncovered], 1e-4);
+      EXPECT_GE(j.features[61], 1.0f - j.features[uncovered] - 1e-5f);  // the best shape's cover
+      EXPECT_GE(j.features[63], 0.0f);
+      EXPECT_LE(j.features[63], 1.0f);
+      EXPECT_GT(j.features[62], 0.0f);
+      for (int k = kRetried; k < kCoverRetried; ++k) EXPECT_EQ(j.features[k], 0.0f) << k;
+      EXPECT_FALSE(j.chosen);
+      continue;
+    }
+    for (int k = kCoverRetried; k < kJoinFeatures; ++k) EXPECT_EQ(j.features[k], 0.0f) << k;
+  }
+  EXPECT_GT(retried, 0);
+}
+
+TEST(CoverRefusals, BadThresholdIsRefused) {
+  Options o;
+  for (double t : {0.0, 1.5, -0.2, std::nan("")}) {
+    o.join_scorer.cover_refusal_threshold = t;
+    test::expect_invalid(o, "cover_refusal_threshold");
+  }
+}
+
+TEST(CoverRefusals, CoverRetriedIsInput54) {
+  EXPECT_STREQ(join_feature_name(kCoverRetried), "cover_retried");
+  EXPECT_STREQ(join_feature_name(kJoinFeatures - 1), "miss_at_cuts");
+}
+
+}  // namespace
+}  // namespace hair25d::completion
