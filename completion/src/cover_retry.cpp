@@ -76,12 +76,17 @@ void add_cover_terms(const Context& ctx, const Polyline& patch, const Edge& a, c
       ++total;
       if (inside && above.hides(l, gx, gy, cover_face, ink)) continue;
       ++missed;
+      // Label 0 is no hair region: the face, a drawn line, or the paper
+      // (the background); a hair region's pixel that was outline in the
+      // map as given is ink assigned to it.
       if (!inside)
         ++paper;
+      else if (l == 0 && !face.empty() && face.at<std::uint8_t>(gy, gx))
+        ++on_face;
+      else if (l == 0)
+        ++(luma(ctx.image->at(gx, gy)) < ctx.options->dark_luma ? on_ink : paper);
       else if (ctx.original->at(gx, gy) == 0)
         ++on_ink;
-      else if (l == 0)
-        ++(!face.empty() && face.at<std::uint8_t>(gy, gx) ? on_face : paper);
       else
         switch (kind_of(l)) {
           case Kind::kBelow: ++below; break;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -97,6 +98,28 @@ TEST(CoverRefusals, RecordedAsRowsOfTheirOwn) {
     for (int k = kCoverRetried; k < kJoinFeatures; ++k) EXPECT_EQ(j.features[k], 0.0f) << k;
   }
   EXPECT_GT(retried, 0);
+}
+
+// Dev two-tone 2036 (+10 right pairs at 0.9 with the annotation's
+// relations): at the bar of session 36 the net joins pairs the cover
+// refused, each of one strand in the annotation, with p over the bar.
+TEST(CoverRefusals, RightJoinsAtTheBar) {
+  const AnnotatedCase c = test::generated_case(2036, generator::Shading::kTwoTone);
+  std::map<int, int> strand;
+  for (const AnnotatedRegion& r : c.region_list) strand[r.id] = r.strand;
+  const Result off = run(c, 1.0), on = run(c, 0.9);
+  const auto refused = traced(off, JoinStage::kCover), before = traced(off, JoinStage::kChosen);
+  int gained = 0;
+  for (const JoinTrace& t : on.join_trace) {
+    const std::pair<int, int> pair{t.region_a, t.region_b};
+    if (t.stage != JoinStage::kChosen || before.count(pair) || !refused.count(pair) ||
+        t.cover >= Options{}.min_join_coverage)
+      continue;
+    ++gained;
+    EXPECT_GE(t.probability, 0.9);
+    EXPECT_EQ(strand.at(t.region_a), strand.at(t.region_b)) << t.region_a << "-" << t.region_b;
+  }
+  EXPECT_GT(gained, 0);
 }
 
 TEST(CoverRefusals, BadThresholdIsRefused) {
