@@ -359,6 +359,10 @@ int main(int argc, char** argv) {
                  options.join_scorer.cover_refusal_threshold,
                  "JoinScorerOptions::cover_refusal_threshold: cover refusals' second chances, "
                  "joined at this probability of their own net (1: off)");
+  app.add_flag("--scorer-cover-refusal-all-shadings",
+               options.join_scorer.cover_refusal_all_shadings,
+               "JoinScorerOptions::cover_refusal_all_shadings: also on flat and screentone "
+               "drawings");
   app.add_option("--scorer-angle-refusal-threshold", options.join_scorer.angle_refusal_threshold,
                  "JoinScorerOptions::angle_refusal_threshold: angle refusals' second chances, "
                  "judged by their own net (1 = off)");

@@ -32,10 +32,11 @@ int feature(const char* name) {
   return 0;
 }
 
-Result run(const AnnotatedCase& c, double threshold) {
+Result run(const AnnotatedCase& c, double threshold, bool all_shadings = false) {
   Options o = test::joins_only();
   o.trace_joins = true;
   o.join_scorer.cover_refusal_threshold = threshold;
+  o.join_scorer.cover_refusal_all_shadings = all_shadings;
   return complete_strands(test::input_from_case(c), o);
 }
 
@@ -120,6 +121,28 @@ TEST(CoverRefusals, RightJoinsAtTheBar) {
     EXPECT_EQ(strand.at(t.region_a), strand.at(t.region_b)) << t.region_a << "-" << t.region_b;
   }
   EXPECT_GT(gained, 0);
+}
+
+// On screentone drawings (no shaded paint) only with
+// cover_refusal_all_shadings: without it no pair the cover refused is
+// joined, with it some are at a bar any candidate passes.
+TEST(CoverRefusals, ScreentoneOnlyWithAllShadings) {
+  int without = 0, with = 0;
+  for (const std::uint64_t seed : {2000u, 2001u, 2002u, 2003u}) {
+    const AnnotatedCase c = test::generated_case(seed, generator::Shading::kScreentone);
+    const Result off = run(c, 1.0);
+    const auto refused = traced(off, JoinStage::kCover), before = traced(off, JoinStage::kChosen);
+    auto gained = [&](const Result& r) {
+      int n = 0;
+      for (const auto& pair : traced(r, JoinStage::kChosen))
+        n += !before.count(pair) && refused.count(pair);
+      return n;
+    };
+    without += gained(run(c, 1e-6));
+    with += gained(run(c, 1e-6, true));
+  }
+  EXPECT_EQ(without, 0);
+  EXPECT_GT(with, 0);
 }
 
 TEST(CoverRefusals, BadThresholdIsRefused) {
