@@ -659,9 +659,11 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           // hand cost 2.38 (+6 wrong pairs with the layering's relations),
           // and with the screentone net's veto (session 30) the shapes there
           // still bought 32 right and 18 wrong pairs over six dev runs.
+          double reshaped_cover = -1.0;  // the best shape's cover, once measured
           if (cover < o.min_join_coverage && cover >= kMinCoverToReshape &&
               !o.join_arm_shares.empty() && !tones.screentone() && cost <= o.max_join_cost) {
             const JoinShape shape = best_join_shape(ctx, a, b, cover_face, ink, o.join_arm_shares);
+            reshaped_cover = shape.cover;
             if (shape.cover >= o.min_join_coverage &&
                 cost + kUncoveredCost * (1.0 - shape.cover) <= o.max_join_cost) {
               join.patch = join_patch(a, b, shape.share_a, shape.share_b);
@@ -755,7 +757,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
               if (!o.join_arm_shares.empty())
                 shape_cover = std::max(
                     shape_cover,
-                    best_join_shape(ctx, a, b, cover_face, ink, o.join_arm_shares).cover);
+                    reshaped_cover >= 0
+                        ? reshaped_cover
+                        : best_join_shape(ctx, a, b, cover_face, ink, o.join_arm_shares).cover);
               add_cover_terms(ctx, join.patch, a, b, face, cover_face, ink, shape_cover, &*terms);
             }
           }

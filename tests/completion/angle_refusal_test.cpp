@@ -27,6 +27,9 @@ Result run(const AnnotatedCase& c, double threshold) {
   Options o = test::joins_only();
   o.trace_joins = true;
   o.join_scorer.angle_refusal_threshold = threshold;
+  // Cover refusals' second chances have their own net
+  // (cover_refusal_test.cpp); on two-tone 2002 it joins 2-19 too.
+  o.join_scorer.cover_refusal_threshold = 1.0;
   return complete_strands(test::input_from_case(c), o);
 }
 

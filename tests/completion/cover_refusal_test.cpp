@@ -123,6 +123,18 @@ TEST(CoverRefusals, RightJoinsAtTheBar) {
   EXPECT_GT(gained, 0);
 }
 
+// The default options join at the bar of session 36: the same joins as
+// the bar set to 0.9, and more than with the second chances off.
+TEST(CoverRefusals, JoinedAtTheDefaultBar) {
+  const AnnotatedCase c = test::generated_case(2036, generator::Shading::kTwoTone);
+  Options o = test::joins_only();
+  o.trace_joins = true;
+  const Result by_default = complete_strands(test::input_from_case(c), o);
+  const auto chosen = traced(by_default, JoinStage::kChosen);
+  EXPECT_EQ(chosen, traced(run(c, 0.9), JoinStage::kChosen));
+  EXPECT_GT(chosen.size(), traced(run(c, 1.0), JoinStage::kChosen).size());
+}
+
 // On screentone drawings (no shaded paint) only with
 // cover_refusal_all_shadings: without it no pair the cover refused is
 // joined, with it some are at a bar any candidate passes.

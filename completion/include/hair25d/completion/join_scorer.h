@@ -319,8 +319,11 @@ struct JoinScorerOptions {
   // (trained on such candidates, with inputs saying what lies where the
   // patch is uncovered) and joined at p >= cover_refusal_threshold, after
   // every other candidate under the limit, as the angle refusals' second
-  // chances are. 1 turns it off.
-  double cover_refusal_threshold = 1.0;
+  // chances are. 1 turns it off. On at 0.9 since session 36 (held and
+  // fresh sets +127 right / +2 wrong pairs, the six real cases unchanged;
+  // completion-record.md, "Session 36: cover refusals' second chances on
+  // by default").
+  double cover_refusal_threshold = 0.9;
   // Whether it also acts off two-tone and gradient drawings (flat and
   // screentone ones; `shaded_drawing`). Off: there the dev sets lost
   // precision (flat, mixed and screentone 2000 with the annotation's
