@@ -355,8 +355,7 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::wide_threshold");
   app.add_option("--scorer-side-threshold", options.join_scorer.side_threshold,
                  "JoinScorerOptions::side_threshold: side-tangent candidates (1 = off)");
-  app.add_option("--scorer-cover-refusal-threshold",
-                 options.join_scorer.cover_refusal_threshold,
+  app.add_option("--scorer-cover-refusal-threshold", options.join_scorer.cover_refusal_threshold,
                  "JoinScorerOptions::cover_refusal_threshold: cover refusals' second chances, "
                  "joined at this probability of their own net (1: off)");
   app.add_flag("--scorer-cover-refusal-all-shadings",

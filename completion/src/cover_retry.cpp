@@ -89,9 +89,15 @@ void add_cover_terms(const Context& ctx, const Polyline& patch, const Edge& a, c
         ++on_ink;
       else
         switch (kind_of(l)) {
-          case Kind::kBelow: ++below; break;
-          case Kind::kSibling: ++sibling; break;
-          case Kind::kOther: ++other; break;
+          case Kind::kBelow:
+            ++below;
+            break;
+          case Kind::kSibling:
+            ++sibling;
+            break;
+          case Kind::kOther:
+            ++other;
+            break;
         }
       const Vec2 c(gx + 0.5, gy + 0.5);
       if (std::min(segment_distance(c, a.p, a.q), segment_distance(c, b.p, b.q)) <= reach)

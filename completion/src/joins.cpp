@@ -10,8 +10,8 @@
 
 #include "angle_retry.h"
 #include "bank_crossings.h"
-#include "cover_retry.h"
 #include "context.h"
+#include "cover_retry.h"
 #include "hair25d/completion/bezier.h"
 #include "join_corridor.h"
 #include "join_features.h"
@@ -443,10 +443,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
       scorer.enabled ? scorer.angle_refusal_threshold < 1 : ctx.join_log != nullptr;
   // Session 36: cover refusals' second chances, likewise; by default only
   // on two-tone and gradient drawings (cover_refusal_all_shadings).
-  const bool cover_retries =
-      scorer.enabled ? scorer.cover_refusal_threshold < 1 &&
-                           (shaded || scorer.cover_refusal_all_shadings)
-                     : ctx.join_log != nullptr;
+  const bool cover_retries = scorer.enabled ? scorer.cover_refusal_threshold < 1 &&
+                                                  (shaded || scorer.cover_refusal_all_shadings)
+                                            : ctx.join_log != nullptr;
   std::vector<Edge> side_edges;
   std::vector<int> side_origin;
   for (std::size_t i = 0; i < edges.size(); ++i)
