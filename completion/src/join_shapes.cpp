@@ -1,6 +1,7 @@
 #include "join_shapes.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <utility>
@@ -27,29 +28,33 @@ Polyline join_patch(const Edge& a, const Edge& b, double share_a, double share_b
 JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, const cv::Mat& face,
                           bool ink, const std::vector<double>& shares) {
   JoinShape best;
-  std::vector<std::pair<std::pair<double, double>, Polyline>> patches;
-  double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
+  struct Shape {
+    double share_a, share_b;
+    Polyline patch;
+    cv::Rect box;  // polygon_box
+  };
+  std::vector<Shape> patches;
+  int x0 = INT_MAX, y0 = INT_MAX, x1 = INT_MIN, y1 = INT_MIN;  // the boxes' union
   for (double sa : shares)
     for (double sb : shares) {
-      patches.push_back({{sa, sb}, join_patch(a, b, sa, sb)});
-      for (const Vec2& p : patches.back().second) {
-        x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
-        x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
-      }
+      Polyline patch = join_patch(a, b, sa, sb);
+      const cv::Rect box = polygon_box(patch);
+      if (box.empty()) return best;
+      x0 = std::min(x0, box.x), y0 = std::min(y0, box.y);
+      x1 = std::max(x1, box.x + box.width), y1 = std::max(y1, box.y + box.height);
+      patches.push_back({sa, sb, std::move(patch), box});
     }
   if (patches.empty()) return best;
-  const cv::Point origin(static_cast<int>(std::floor(x0)) - 1,
-                         static_cast<int>(std::floor(y0)) - 1);
-  const int w = static_cast<int>(std::ceil(x1)) - origin.x + 2;
-  const int h = static_cast<int>(std::ceil(y1)) - origin.y + 2;
-  if (w <= 0 || h <= 0 || static_cast<double>(w) * h > 4e6) return best;
+  const cv::Point origin(x0, y0);
+  const int w = x1 - x0, h = y1 - y0;
+  if (static_cast<double>(w) * h > kMaxPolygonBoxPixels) return best;
   // counted: a pixel outside both pieces; under: one of those under cover.
   // What the relations say of a label is asked once (a box holds few).
   // Only pixels some patch covers are asked: the box of long slanted
   // patches is mostly outside them (session 36: the cover refusals' inputs
   // ask this for every such candidate).
   cv::Mat any(h, w, CV_8U, cv::Scalar(0));
-  for (const auto& shape : patches) fill_polygon(any, shape.second, origin, 255);
+  for (const Shape& shape : patches) fill_polygon(any, shape.patch, origin, 255);
   cv::Mat counted(h, w, CV_8U, cv::Scalar(0)), under(h, w, CV_8U, cv::Scalar(0));
   AboveEither above(ctx, a.region, b.region);
   for (int y = 0; y < h; ++y) {
@@ -69,21 +74,11 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
       if (above.hides(l, gx, gy, face, ink)) u[x] = 255;
     }
   }
-  // Each patch is counted within its own box (a pixel's margin for the
-  // fill's rounding), not the union's.
+  // Each patch is counted within its own box, not the union's.
   cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
-  for (const auto& [arms, patch] : patches) {
-    double px0 = 1e18, py0 = 1e18, px1 = -1e18, py1 = -1e18;
-    for (const Vec2& p : patch) {
-      px0 = std::min(px0, p.x()), py0 = std::min(py0, p.y());
-      px1 = std::max(px1, p.x()), py1 = std::max(py1, p.y());
-    }
-    const int bx0 = std::max(0, static_cast<int>(std::floor(px0)) - origin.x - 1);
-    const int by0 = std::max(0, static_cast<int>(std::floor(py0)) - origin.y - 1);
-    const int bx1 = std::min(w - 1, static_cast<int>(std::ceil(px1)) - origin.x + 1);
-    const int by1 = std::min(h - 1, static_cast<int>(std::ceil(py1)) - origin.y + 1);
-    const cv::Rect box(bx0, by0, bx1 - bx0 + 1, by1 - by0 + 1);
-    fill_polygon(mask, patch, origin, 255);
+  for (const Shape& shape : patches) {
+    const cv::Rect box = shape.box - origin;
+    fill_polygon(mask, shape.patch, origin, 255);
     cv::Mat m = mask(box), both;
     cv::bitwise_and(m, counted(box), both);
     const int total = cv::countNonZero(both);
@@ -91,7 +86,7 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
     const int hidden = cv::countNonZero(both);
     m.setTo(0);  // cleared for the next patch
     const double cover = total > 0 ? static_cast<double>(hidden) / total : 1.0;
-    if (cover > best.cover) best = {arms.first, arms.second, cover};
+    if (cover > best.cover) best = {shape.share_a, shape.share_b, cover};
   }
   return best;
 }

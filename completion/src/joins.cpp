@@ -242,16 +242,10 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
                 std::map<int, int>* under_by = nullptr, JoinTrace* trace = nullptr,
                 bool fringe = false) {
   const LabelMap& labels = fringe ? ctx.cover_map() : ctx.labels;
-  double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
-  for (const Vec2& p : patch) {
-    x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
-    x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
-  }
-  const cv::Point origin(static_cast<int>(std::floor(x0)) - 1,
-                         static_cast<int>(std::floor(y0)) - 1);
-  const int w = static_cast<int>(std::ceil(x1)) - origin.x + 2;
-  const int h = static_cast<int>(std::ceil(y1)) - origin.y + 2;
-  if (w <= 0 || h <= 0 || static_cast<double>(w) * h > 4e6) return 0.0;
+  const cv::Rect box = polygon_box(patch);
+  if (box.empty()) return 0.0;
+  const cv::Point origin = box.tl();
+  const int w = box.width, h = box.height;
   cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
   fill_polygon(mask, patch, origin, 255);
   // A patch crosses few labels, each over many pixels: what the relations

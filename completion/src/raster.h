@@ -85,6 +85,12 @@ inline Vec2 principal_axis(const Polyline& points, const Vec2& towards) {
 // with `value`, offset by -origin.
 void fill_polygon(cv::Mat& mask, const Polyline& polygon, const cv::Point& origin, int value);
 
+// The pixels `fill_polygon` may set for `polygon` (its bounding box with a
+// pixel's margin), or an empty rect for no polygon or one over
+// kMaxPolygonBoxPixels (a patch that long is no join's).
+inline constexpr double kMaxPolygonBoxPixels = 4e6;
+cv::Rect polygon_box(const Polyline& polygon);
+
 // Contour points (pixel centres) of the outer boundaries of a binary mask,
 // largest first. Orientation: as OpenCV returns them (all the same way).
 std::vector<std::vector<cv::Point>> outer_contours(const cv::Mat& mask8);

@@ -33,13 +33,6 @@ Result run(const AnnotatedCase& c, double threshold) {
   return complete_strands(test::input_from_case(c), o);
 }
 
-std::set<std::pair<int, int>> traced(const Result& r, JoinStage stage) {
-  std::set<std::pair<int, int>> out;
-  for (const JoinTrace& t : r.join_trace)
-    if (t.stage == stage) out.insert({t.region_a, t.region_b});
-  return out;
-}
-
 // Off (1) no second chance is made; with a bar any candidate passes,
 // screentone drawings (where no side tangent is tried) gain joins of pairs
 // the angle refused.
@@ -48,8 +41,9 @@ TEST(AngleRefusals, JoinedOnlyWhenOn) {
   for (const std::uint64_t seed : {2000u, 2001u, 2002u, 2003u}) {
     const AnnotatedCase c = test::generated_case(seed, generator::Shading::kScreentone);
     const Result off = run(c, 1.0), on = run(c, 0.01);
-    const auto refused = traced(off, JoinStage::kAngle), before = traced(off, JoinStage::kChosen);
-    for (const auto& pair : traced(on, JoinStage::kChosen))
+    const auto refused = test::traced_pairs(off, JoinStage::kAngle),
+               before = test::traced_pairs(off, JoinStage::kChosen);
+    for (const auto& pair : test::traced_pairs(on, JoinStage::kChosen))
       if (!before.count(pair) && refused.count(pair)) ++gained;
   }
   EXPECT_GT(gained, 0);

@@ -18,6 +18,7 @@
 #include "hair25d/generator/generator.h"
 #include "invalid_options.h"
 #include "joins_only.h"
+#include "trace_of.h"
 
 namespace hair25d::completion {
 namespace {
@@ -40,13 +41,6 @@ Result run(const AnnotatedCase& c, double threshold, bool all_shadings = false) 
   return complete_strands(test::input_from_case(c), o);
 }
 
-std::set<std::pair<int, int>> traced(const Result& r, JoinStage stage) {
-  std::set<std::pair<int, int>> out;
-  for (const JoinTrace& t : r.join_trace)
-    if (t.stage == stage) out.insert({t.region_a, t.region_b});
-  return out;
-}
-
 // With a bar any candidate passes, two-tone drawings gain joins
 // of pairs the cover refused, each with a patch under min_join_coverage.
 TEST(CoverRefusals, JoinedOnlyWhenOn) {
@@ -55,7 +49,8 @@ TEST(CoverRefusals, JoinedOnlyWhenOn) {
   for (const std::uint64_t seed : {2000u, 2001u, 2002u, 2003u}) {
     const AnnotatedCase c = test::generated_case(seed, generator::Shading::kTwoTone);
     const Result off = run(c, 1.0), on = run(c, 1e-6);
-    const auto refused = traced(off, JoinStage::kCover), before = traced(off, JoinStage::kChosen);
+    const auto refused = test::traced_pairs(off, JoinStage::kCover),
+               before = test::traced_pairs(off, JoinStage::kChosen);
     for (const JoinTrace& t : on.join_trace) {
       if (t.stage != JoinStage::kChosen) continue;
       const std::pair<int, int> pair{t.region_a, t.region_b};
@@ -109,7 +104,8 @@ TEST(CoverRefusals, RightJoinsAtTheBar) {
   std::map<int, int> strand;
   for (const AnnotatedRegion& r : c.region_list) strand[r.id] = r.strand;
   const Result off = run(c, 1.0), on = run(c, 0.9);
-  const auto refused = traced(off, JoinStage::kCover), before = traced(off, JoinStage::kChosen);
+  const auto refused = test::traced_pairs(off, JoinStage::kCover),
+             before = test::traced_pairs(off, JoinStage::kChosen);
   int gained = 0;
   for (const JoinTrace& t : on.join_trace) {
     const std::pair<int, int> pair{t.region_a, t.region_b};
@@ -130,9 +126,9 @@ TEST(CoverRefusals, JoinedAtTheDefaultBar) {
   Options o = test::joins_only();
   o.trace_joins = true;
   const Result by_default = complete_strands(test::input_from_case(c), o);
-  const auto chosen = traced(by_default, JoinStage::kChosen);
-  EXPECT_EQ(chosen, traced(run(c, 0.9), JoinStage::kChosen));
-  EXPECT_GT(chosen.size(), traced(run(c, 1.0), JoinStage::kChosen).size());
+  const auto chosen = test::traced_pairs(by_default, JoinStage::kChosen);
+  EXPECT_EQ(chosen, test::traced_pairs(run(c, 0.9), JoinStage::kChosen));
+  EXPECT_GT(chosen.size(), test::traced_pairs(run(c, 1.0), JoinStage::kChosen).size());
 }
 
 // On screentone drawings (no shaded paint) only with
@@ -143,10 +139,11 @@ TEST(CoverRefusals, ScreentoneOnlyWithAllShadings) {
   for (const std::uint64_t seed : {2000u, 2001u, 2002u, 2003u}) {
     const AnnotatedCase c = test::generated_case(seed, generator::Shading::kScreentone);
     const Result off = run(c, 1.0);
-    const auto refused = traced(off, JoinStage::kCover), before = traced(off, JoinStage::kChosen);
+    const auto refused = test::traced_pairs(off, JoinStage::kCover),
+               before = test::traced_pairs(off, JoinStage::kChosen);
     auto gained = [&](const Result& r) {
       int n = 0;
-      for (const auto& pair : traced(r, JoinStage::kChosen))
+      for (const auto& pair : test::traced_pairs(r, JoinStage::kChosen))
         n += !before.count(pair) && refused.count(pair);
       return n;
     };

@@ -3,6 +3,9 @@
 // edges), for the tests that ask how far a candidate got.
 #pragma once
 
+#include <set>
+#include <utility>
+
 #include "hair25d/completion/completion.h"
 
 namespace hair25d::completion::test {
@@ -13,6 +16,15 @@ inline const JoinTrace* trace_of(const Result& r, int a, int b, JoinStage stage)
         t.stage == stage)
       return &t;
   return nullptr;
+}
+
+// The pairs of pieces (as traced, a then b) with an edge pair that reached
+// `stage`.
+inline std::set<std::pair<int, int>> traced_pairs(const Result& r, JoinStage stage) {
+  std::set<std::pair<int, int>> out;
+  for (const JoinTrace& t : r.join_trace)
+    if (t.stage == stage) out.insert({t.region_a, t.region_b});
+  return out;
 }
 
 }  // namespace hair25d::completion::test
