@@ -32,6 +32,7 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
     double share_a, share_b;
     Polyline patch;
     cv::Rect box;  // polygon_box
+    cv::Mat mask;  // the patch filled in its box, once
   };
   std::vector<Shape> patches;
   int x0 = INT_MAX, y0 = INT_MAX, x1 = INT_MIN, y1 = INT_MIN;  // the boxes' union
@@ -54,7 +55,12 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
   // patches is mostly outside them (session 36: the cover refusals' inputs
   // ask this for every such candidate).
   cv::Mat any(h, w, CV_8U, cv::Scalar(0));
-  for (const Shape& shape : patches) fill_polygon(any, shape.patch, origin, 255);
+  for (Shape& shape : patches) {
+    shape.mask = cv::Mat(shape.box.size(), CV_8U, cv::Scalar(0));
+    fill_polygon(shape.mask, shape.patch, shape.box.tl(), 255);
+    cv::Mat in_union = any(shape.box - origin);
+    cv::bitwise_or(in_union, shape.mask, in_union);
+  }
   cv::Mat counted(h, w, CV_8U, cv::Scalar(0)), under(h, w, CV_8U, cv::Scalar(0));
   AboveEither above(ctx, a.region, b.region);
   for (int y = 0; y < h; ++y) {
@@ -75,16 +81,13 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
     }
   }
   // Each patch is counted within its own box, not the union's.
-  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
   for (const Shape& shape : patches) {
     const cv::Rect box = shape.box - origin;
-    fill_polygon(mask, shape.patch, origin, 255);
-    cv::Mat m = mask(box), both;
-    cv::bitwise_and(m, counted(box), both);
+    cv::Mat both;
+    cv::bitwise_and(shape.mask, counted(box), both);
     const int total = cv::countNonZero(both);
-    cv::bitwise_and(m, under(box), both);
+    cv::bitwise_and(shape.mask, under(box), both);
     const int hidden = cv::countNonZero(both);
-    m.setTo(0);  // cleared for the next patch
     const double cover = total > 0 ? static_cast<double>(hidden) / total : 1.0;
     if (cover > best.cover) best = {shape.share_a, shape.share_b, cover};
   }
