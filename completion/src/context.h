@@ -147,6 +147,20 @@ class AboveEither {
   std::vector<std::pair<int, bool>> seen_;
 };
 
+// What a hair region `l` (not 0) left uncovered by a join patch of pieces
+// ra and rb is: a region under a piece, a sibling (under a region lying
+// above a piece), or any other (the trace's holes, Options::trace_joins,
+// and the cover refusals' inputs, cover_retry.h).
+enum class HoleKind { kBelow, kSibling, kOther };
+inline HoleKind hole_kind(const Context& ctx, int ra, int rb, int l) {
+  if (ctx.is_above(ra, l) || ctx.is_above(rb, l)) return HoleKind::kBelow;
+  for (int r : {ra, rb})
+    if (const auto it = ctx.above.find(r); it != ctx.above.end())
+      for (int up : it->second)
+        if (ctx.is_above(up, l)) return HoleKind::kSibling;
+  return HoleKind::kOther;
+}
+
 // Region facts and occluding edges (occluding_edges.cpp).
 void describe_regions(Context& ctx);
 // Maximal boundary runs under one occluder each ("atoms"), ids from `first_id`.

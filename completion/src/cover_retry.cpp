@@ -40,21 +40,12 @@ void add_cover_terms(const Context& ctx, const Polyline& patch, const Edge& a, c
   const double reach = std::max(kMinCutReach, kCutReachShare * wide);
   AboveEither above(ctx, ra, rb);
   // A region's class, asked once per label: a patch crosses few of them.
-  enum class Kind { kBelow, kSibling, kOther };
-  std::vector<std::pair<int, Kind>> kinds;
+  std::vector<std::pair<int, HoleKind>> kinds;
   auto kind_of = [&](int l) {
     for (const auto& [label, k] : kinds)
       if (label == l) return k;
-    Kind k = Kind::kOther;
-    if (ctx.is_above(ra, l) || ctx.is_above(rb, l))
-      k = Kind::kBelow;
-    else
-      for (int r : {ra, rb})  // under a region lying above a piece
-        if (const auto it = ctx.above.find(r); it != ctx.above.end())
-          for (int up : it->second)
-            if (ctx.is_above(up, l)) k = Kind::kSibling;
-    kinds.push_back({l, k});
-    return k;
+    kinds.push_back({l, hole_kind(ctx, ra, rb, l)});
+    return kinds.back().second;
   };
   int total = 0, missed = 0, at_cuts = 0;
   double paper = 0, on_face = 0, on_ink = 0, below = 0, sibling = 0, other = 0;
@@ -82,13 +73,13 @@ void add_cover_terms(const Context& ctx, const Polyline& patch, const Edge& a, c
         ++on_ink;
       else
         switch (kind_of(l)) {
-          case Kind::kBelow:
+          case HoleKind::kBelow:
             ++below;
             break;
-          case Kind::kSibling:
+          case HoleKind::kSibling:
             ++sibling;
             break;
-          case Kind::kOther:
+          case HoleKind::kOther:
             ++other;
             break;
         }

@@ -296,16 +296,18 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
     if (!trace || c.pixels == c.under) continue;
     // Options::trace_joins: what the uncovered pixels are, a label at a time.
     const int l = c.label;
-    double* hole = &trace->hole_other;
-    if (l == 0)
-      hole = &trace->hole_background;
-    else if (ctx.is_above(ra, l) || ctx.is_above(rb, l))
-      hole = &trace->hole_below;
-    else
-      for (int r : {ra, rb})  // under a region lying above a piece
-        if (const auto it = ctx.above.find(r); it != ctx.above.end())
-          for (int up : it->second)
-            if (ctx.is_above(up, l)) hole = &trace->hole_sibling;
+    double* hole = &trace->hole_background;
+    if (l != 0) switch (hole_kind(ctx, ra, rb, l)) {
+        case HoleKind::kBelow:
+          hole = &trace->hole_below;
+          break;
+        case HoleKind::kSibling:
+          hole = &trace->hole_sibling;
+          break;
+        case HoleKind::kOther:
+          hole = &trace->hole_other;
+          break;
+      }
     *hole += c.pixels - c.under;
   }
   *hidden = total;
