@@ -235,13 +235,16 @@ std::map<int, int> paint_sharing(const std::map<int, RegionPaint>& paints) {
 // of either piece: the hidden part may only be where the drawing shows hair
 // in front (§5 "completed part lies under the occluders").
 // `lowest`, when given, receives the pixels of every other region lying
-// above no region (not in `front`) that the patch covers.
+// above no region (not in `front`) that the patch covers. `misses`, when
+// given (not with `fringe`), counts what lies where the patch is not
+// covered, for a cover refusal's second chance.
 double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const cv::Mat& face,
                 int* hidden, const std::set<int>* front = nullptr,
                 std::map<int, int>* lowest = nullptr, bool ink = false,
                 std::map<int, int>* under_by = nullptr, JoinTrace* trace = nullptr,
-                bool fringe = false) {
+                bool fringe = false, CoverMisses* misses = nullptr) {
   const LabelMap& labels = fringe ? ctx.cover_map() : ctx.labels;
+  if (misses) misses->clear();
   const cv::Rect box = polygon_box(patch);
   if (box.empty()) return 0.0;
   const cv::Point origin = box.tl();
@@ -256,6 +259,7 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
     int label;
     bool above, back;  // above a or b; another region above no region
     int pixels = 0, under = 0;
+    int missed = 0;  // uncovered pixels left to class by the label (`misses`)
   };
   std::vector<LabelCount> seen;
   std::size_t last = 0;
@@ -276,6 +280,7 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       if (!labels.contains(gx, gy)) {
         ++total;
         if (trace) trace->hole_background += 1;
+        if (misses) misses->add_pixel(ctx, false, 0, gx, gy);
         continue;
       }
       const int l = labels.at(gx, gy);
@@ -287,12 +292,16 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       if (hidden_pixel(ctx, c.above, l, gx, gy, face, ink)) {
         ++under;
         ++c.under;  // the face and the ink count as 0
+      } else if (misses && !misses->add_pixel(ctx, true, l, gx, gy)) {
+        ++c.missed;
       }
     }
   }
+  if (misses) misses->total = total;
   for (const LabelCount& c : seen) {
     if (c.back) (*lowest)[c.label] += c.pixels;
     if (under_by && c.under > 0) (*under_by)[c.label] += c.under;
+    if (c.missed > 0) misses->add_region(ctx, c.label, c.missed);
     if (!trace || c.pixels == c.under) continue;
     // Options::trace_joins: what the uncovered pixels are, a label at a time.
     const int l = c.label;
@@ -640,10 +649,15 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
           join.behind_face = !face.empty() && !front.count(a.region) && !front.count(b.region);
           std::map<int, int> lowest, under_by;
           const cv::Mat& cover_face = join.behind_face ? face : no_face;
+          // What the patch leaves uncovered, counted in the same pass where
+          // the candidate may become a cover refusal's second chance.
+          CoverMisses misses{&a, &b, &face};
+          CoverMisses* may_retry =
+              cover_retries && strand_like && !side && cost <= scorer.band_high ? &misses : nullptr;
           double cover =
               coverage(ctx, join.patch, a.region, b.region, cover_face, &hidden, &front,
                        join.behind_face ? &lowest : nullptr, ink, scoring ? &under_by : nullptr,
-                       traced >= 0 ? &(*ctx.join_trace)[traced] : nullptr);
+                       traced >= 0 ? &(*ctx.join_trace)[traced] : nullptr, false, may_retry);
           // Options::join_arm_shares: the hidden strand may take any smooth
           // path under the occluders, the patch of a third's arms is one
           // guess. Another shape lets a candidate in only at a hand cost
@@ -668,7 +682,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
               if (t) t->hole_background = t->hole_below = t->hole_sibling = t->hole_other = 0.0;
               cover = coverage(ctx, join.patch, a.region, b.region, cover_face, &hidden, &front,
                                join.behind_face ? &lowest : nullptr, ink,
-                               scoring ? &under_by : nullptr, t);
+                               scoring ? &under_by : nullptr, t, false, may_retry);
             }
           }
           // Options::cover_fringe: on screentone the outlines' light fringe
@@ -755,7 +769,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                     reshaped_cover >= 0
                         ? reshaped_cover
                         : best_join_shape(ctx, a, b, cover_face, ink, o.join_arm_shares).cover);
-              add_cover_terms(ctx, join.patch, a, b, face, cover_face, ink, shape_cover, &*terms);
+              add_cover_terms(misses, shape_cover, &*terms);
             }
           }
         }
