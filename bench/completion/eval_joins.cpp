@@ -362,6 +362,13 @@ int main(int argc, char** argv) {
                options.join_scorer.cover_refusal_all_shadings,
                "JoinScorerOptions::cover_refusal_all_shadings: also on flat and screentone "
                "drawings");
+  app.add_option("--scorer-cover-flat-threshold", options.join_scorer.cover_flat_threshold,
+                 "JoinScorerOptions::cover_flat_threshold: cover refusals' second chances on "
+                 "flat drawings, joined at this probability of cover_plain_join_scorer (1: off)");
+  app.add_option("--scorer-cover-screentone-threshold",
+                 options.join_scorer.cover_screentone_threshold,
+                 "JoinScorerOptions::cover_screentone_threshold: likewise on screentone "
+                 "drawings (1: off)");
   app.add_option("--scorer-angle-refusal-threshold", options.join_scorer.angle_refusal_threshold,
                  "JoinScorerOptions::angle_refusal_threshold: angle refusals' second chances, "
                  "judged by their own net (1 = off)");

@@ -324,7 +324,7 @@ int main(int argc, char** argv) {
     if (*probs) {
       std::printf(
           "set,case,a,b,label,hand_cost,default,retrained,screentone,shaded,ensemble,paint,"
-          "angle,cover\n");
+          "angle,cover,cover_plain\n");
       std::ifstream in(probs_csv);
       if (!in) throw std::runtime_error("cannot read " + probs_csv);
       for (std::string line; std::getline(in, line);) {
@@ -336,7 +336,8 @@ int main(int argc, char** argv) {
                                    " cells; must be " + std::to_string(7 + kJoinFeatures));
         JoinFeatures f{};
         for (int k = 0; k < kJoinFeatures; ++k) f[k] = std::stof(cells[7 + k]);
-        std::printf("%s,%s,%s,%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", cells[0].c_str(),
+        std::printf("%s,%s,%s,%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n",
+                    cells[0].c_str(),
                     cells[1].c_str(), cells[2].c_str(), cells[3].c_str(), cells[4].c_str(),
                     cells[5].c_str(),
                     completion::join_probability(completion::default_join_scorer(), f),
@@ -346,7 +347,8 @@ int main(int argc, char** argv) {
                     completion::join_probability(completion::ensemble_join_scorers(), f),
                     completion::join_probability(completion::paint_ensemble_join_scorers(), f),
                     completion::join_probability(completion::angle_join_scorer(), f),
-                    completion::join_probability(completion::cover_join_scorer(), f));
+                    completion::join_probability(completion::cover_join_scorer(), f),
+                    completion::join_probability(completion::cover_plain_join_scorer(), f));
       }
       return 0;
     }

@@ -189,6 +189,11 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
   if (!(cover_refusal_threshold > 0 && cover_refusal_threshold <= 1))
     return fail("cover_refusal_threshold = " + num(cover_refusal_threshold) +
                 "; must be in (0, 1]");
+  if (!(cover_flat_threshold > 0 && cover_flat_threshold <= 1))
+    return fail("cover_flat_threshold = " + num(cover_flat_threshold) + "; must be in (0, 1]");
+  if (!(cover_screentone_threshold > 0 && cover_screentone_threshold <= 1))
+    return fail("cover_screentone_threshold = " + num(cover_screentone_threshold) +
+                "; must be in (0, 1]");
   if (!(crop_size >= 0 && crop_size <= 512))
     return fail("crop_size = " + std::to_string(crop_size) + "; must be in [0, 512]");
   return true;

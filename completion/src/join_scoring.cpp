@@ -160,11 +160,15 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       // Session 36: a cover refusal's second chance joins only by the net
       // trained on such candidates, after every other candidate under the
       // limit, as the angle refusals' do.
-      if (s.enabled && s.cover_refusal_threshold < 1)
-        p = join_probability(cover_join_scorer(), features[k]);
-      j.cost = p >= s.cover_refusal_threshold
-                   ? o.max_join_cost - kWideRankSpan * (p - s.cover_refusal_threshold)
-                   : std::numeric_limits<double>::infinity();
+      // Session 37: on flat and screentone drawings by their own net and
+      // bars (cover_refusal_bar).
+      const double bar = cover_refusal_bar(s, screentone, shaded);
+      if (s.enabled && bar < 1)
+        p = join_probability(
+            cover_by_plain_net(s, shaded) ? cover_plain_join_scorer() : cover_join_scorer(),
+            features[k]);
+      j.cost = p >= bar ? o.max_join_cost - kWideRankSpan * (p - bar)
+                        : std::numeric_limits<double>::infinity();
     } else if (j.angle_retry) {
       // Session 35: an angle refusal's second chance joins only by the net
       // trained on such candidates, after every other candidate under the

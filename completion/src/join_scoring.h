@@ -29,6 +29,19 @@ inline double rescue_threshold_for(const JoinScorerOptions& s, bool screentone, 
                               : s.rescue_threshold;
 }
 
+// The bar a cover refusal's second chance must reach (1 or more: none is
+// kept): session 36's net and bar on shaded drawings (or on every drawing
+// with cover_refusal_all_shadings); session 37's flat and screentone net
+// and its bar of the drawing's shading elsewhere (cover_by_plain_net).
+inline bool cover_by_plain_net(const JoinScorerOptions& s, bool shaded) {
+  return !shaded && !s.cover_refusal_all_shadings;
+}
+inline double cover_refusal_bar(const JoinScorerOptions& s, bool screentone, bool shaded) {
+  return !cover_by_plain_net(s, shaded) ? s.cover_refusal_threshold
+         : screentone                   ? s.cover_screentone_threshold
+                                        : s.cover_flat_threshold;
+}
+
 // Whether a drawing without screentone is shaded (session 31): a cel shadow
 // band (`shadow`, join_paint.h shadow_ratio, not zero) or paint that is not
 // cel (RegionCels::cel_drawing false: gradients). Told from the drawing's

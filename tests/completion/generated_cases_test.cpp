@@ -285,6 +285,8 @@ TEST(GeneratedCases, ScreentoneDrawingsRescueJoinsAtTheirOwnThreshold) {
     o.join_scorer.second_threshold = 1.0;
     // Angle refusals' second chances have their own net (angle_refusal_test.cpp).
     o.join_scorer.angle_refusal_threshold = 1.0;
+    // So have flat drawings' cover refusals' (cover_plain_test.cpp).
+    o.join_scorer.cover_flat_threshold = 1.0;
     return complete_strands(test::input_from_case(c), o);
   };
   const JoinScorerOptions s;
@@ -346,6 +348,8 @@ TEST(GeneratedCases, ScreentoneVetoReachesLower) {
     o.trace_joins = true;
     // Angle refusals' second chances have their own net (angle_refusal_test.cpp).
     o.join_scorer.angle_refusal_threshold = 1.0;
+    // So have flat drawings' cover refusals' (cover_plain_test.cpp).
+    o.join_scorer.cover_flat_threshold = 1.0;
     int between = 0, vetoed = 0;
     for (int seed : {2000, 2001, 2004}) {
       const Result r =
@@ -395,6 +399,8 @@ TEST(GeneratedCases, RetrainedNetJudgesTheBandsEdges) {
     o.join_scorer.ensemble = JoinScorerOptions::Ensemble::kNone;
     // Angle refusals' second chances have their own net (angle_refusal_test.cpp).
     o.join_scorer.angle_refusal_threshold = 1.0;
+    // So have flat drawings' cover refusals' (cover_plain_test.cpp).
+    o.join_scorer.cover_flat_threshold = 1.0;
     o.join_scorer.veto_low = 0.0;
     o.join_scorer.screentone_veto_low = 0.0;
     o.join_scorer.rescue_high = 5.0;

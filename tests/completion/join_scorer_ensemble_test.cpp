@@ -97,6 +97,7 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
       o.join_scorer.angle_refusal_threshold = 1.0;
       // So have cover refusals' (cover_refusal_test.cpp).
       o.join_scorer.cover_refusal_threshold = 1.0;
+      o.join_scorer.cover_flat_threshold = 1.0;
       // The default net judges the band of every drawing without screentone.
       o.join_scorer.retrained_shaded = false;
       o.join_scorer.ensemble_threshold = 0.05;

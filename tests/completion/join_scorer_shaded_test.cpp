@@ -33,6 +33,7 @@ Result run(const AnnotatedCase& c, bool shaded, double shaded_threshold, double 
   o.join_scorer.angle_refusal_threshold = 1.0;
   // So have cover refusals' (cover_refusal_test.cpp).
   o.join_scorer.cover_refusal_threshold = 1.0;
+  o.join_scorer.cover_flat_threshold = 1.0;
   o.join_scorer.shaded = shaded;
   o.join_scorer.shaded_threshold = shaded_threshold;
   o.join_scorer.shaded_veto_below = veto_below;

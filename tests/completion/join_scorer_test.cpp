@@ -367,6 +367,9 @@ TEST(JoinScorer, TrainingAndWeightsFileAreReproducible) {
   expect_committed(cover_join_scorer(), "cover_join_scorer",
                    "join_scorer_cover_weights.cpp");  // cover refusals (session 36)
   EXPECT_NE(cover_join_scorer().w1[0][0], angle_join_scorer().w1[0][0]);
+  expect_committed(cover_plain_join_scorer(), "cover_plain_join_scorer",
+                   "join_scorer_cover_plain_weights.cpp");  // flat, screentone (session 37)
+  EXPECT_NE(cover_plain_join_scorer().w1[0][0], cover_join_scorer().w1[0][0]);
   // The nets trained before session 36's inputs have no weights there.
   for (int k = 54; k < kJoinFeatures; ++k) {
     EXPECT_EQ(angle_join_scorer().inv_std[k], 0.0f) << k;

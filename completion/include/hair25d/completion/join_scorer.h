@@ -80,6 +80,11 @@ const JoinScorerNet& angle_join_scorer();
 // (JoinScorerOptions::cover_refusal_threshold; both relations, four
 // shadings; generated file join_scorer_cover_weights.cpp).
 const JoinScorerNet& cover_join_scorer();
+// Session 37: the net for cover refusals' second chances on flat and
+// screentone drawings (JoinScorerOptions::cover_flat_threshold,
+// cover_screentone_threshold; both relations, those two shadings only;
+// generated file join_scorer_cover_plain_weights.cpp).
+const JoinScorerNet& cover_plain_join_scorer();
 // The mean of the nets' probabilities (one net's alone when there is one):
 // a wrong candidate that one training seed happens to trust is refused
 // when the others do not. Throws hair25d::Error for no nets or a feature
@@ -330,6 +335,18 @@ struct JoinScorerOptions {
   // relations: +19 right / +40 wrong pairs at 0.9, a wrong join each of
   // a few drawings); candidates recorded with the scorer off always are.
   bool cover_refusal_all_shadings = false;
+  // Session 37: on flat drawings (neither screentone nor `shaded_drawing`)
+  // and on screentone ones, the cover refusals' second chances are asked
+  // of `cover_plain_join_scorer` instead (trained on those two shadings'
+  // second chances alone) and joined at p >= these bars, each 1 = off.
+  // cover_refusal_all_shadings, when set, keeps session 36's net there.
+  // Flat on at 0.95 (dev flat 2000 and 3000, both relations: +43 right /
+  // 0 wrong pairs); screentone off: there the net trusts wrong joins of
+  // long patches across the drawing (dev +56 / +20 at 0.95, +29 / +8 at
+  // 0.99; completion-record.md, "Session 37: cover refusals' second
+  // chances on flat and screentone drawings").
+  double cover_flat_threshold = 0.95;
+  double cover_screentone_threshold = 1.0;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
