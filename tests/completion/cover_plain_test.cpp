@@ -66,9 +66,9 @@ TEST(CoverPlain, EachBarOnItsOwnShading) {
 }
 
 // Dev flat 2057 (+5 right pairs at 0.95 with the annotation's relations):
-// at the flat bar the net joins pairs the cover refused, each of one
-// strand in the annotation, with p over the bar. An untrained net or the
-// bar not read on flat drawings fails it.
+// at the default flat bar the net joins pairs the cover refused, each of
+// one strand in the annotation, with p over the bar. An untrained net or
+// the bar not read on flat drawings fails it.
 TEST(CoverPlain, RightFlatJoinsAtTheBar) {
   const AnnotatedCase c = test::generated_case(2057, generator::Shading::kFlat);
   std::map<int, int> strand;
@@ -77,7 +77,8 @@ TEST(CoverPlain, RightFlatJoinsAtTheBar) {
   o.trace_joins = true;
   o.join_scorer.cover_flat_threshold = 1.0;
   const Result off = complete_strands(test::input_from_case(c), o);
-  o.join_scorer.cover_flat_threshold = 0.95;
+  const double bar = JoinScorerOptions{}.cover_flat_threshold;
+  o.join_scorer.cover_flat_threshold = bar;
   const Result on = complete_strands(test::input_from_case(c), o);
   const auto refused = test::traced_pairs(off, JoinStage::kCover),
              before = test::traced_pairs(off, JoinStage::kChosen);
@@ -88,7 +89,7 @@ TEST(CoverPlain, RightFlatJoinsAtTheBar) {
         t.cover >= Options{}.min_join_coverage)
       continue;
     ++gained;
-    EXPECT_GE(t.probability, 0.95);
+    EXPECT_GE(t.probability, bar);
     EXPECT_EQ(strand.at(t.region_a), strand.at(t.region_b)) << t.region_a << "-" << t.region_b;
   }
   EXPECT_GT(gained, 0);
