@@ -355,6 +355,16 @@ int main(int argc, char** argv) {
                  "JoinScorerOptions::wide_threshold");
   app.add_option("--scorer-side-threshold", options.join_scorer.side_threshold,
                  "JoinScorerOptions::side_threshold: side-tangent candidates (1 = off)");
+  app.add_option("--scorer-second-partner-threshold", options.join_scorer.second_partner_threshold,
+                 "JoinScorerOptions::second_partner_threshold: a cut's second partners judged "
+                 "by their own net at this p (1 = off)");
+  app.add_option("--scorer-second-partner-last", options.join_scorer.second_partner_last,
+                 "JoinScorerOptions::second_partner_last: the net's second partners join after "
+                 "every other candidate (1) or at their own place in the matching (0)");
+  app.add_flag("--scorer-second-partner-all-shadings",
+               options.join_scorer.second_partner_all_shadings,
+               "JoinScorerOptions::second_partner_all_shadings: also on flat and screentone "
+               "drawings");
   app.add_option("--scorer-cover-refusal-threshold", options.join_scorer.cover_refusal_threshold,
                  "JoinScorerOptions::cover_refusal_threshold: cover refusals' second chances, "
                  "joined at this probability of their own net (1: off)");

@@ -39,6 +39,8 @@ using completion::kJoinFeatures;
 constexpr int kRetried = 44;
 // The input saying a row is a cover refusal's second chance (session 36).
 constexpr int kCoverRetried = 54;
+// The input saying a row is a cut's second partner (session 37).
+constexpr int kSecondCut = 64;
 
 struct Row {
   std::string set;
@@ -57,19 +59,23 @@ struct CropFiles {
 };
 
 void collect_case(const AnnotatedCase& c, const std::string& set, bool predicted, double band_high,
-                  double rescue_high, double max_angle, std::FILE* out, int* rows,
+                  double rescue_high, double max_angle, bool scorer_on, std::FILE* out, int* rows,
                   const CropFiles& crop_files = {}) {
   completion::Options o;
   o.inpaint_strands = false;
   o.inpaint_background = false;
-  o.join_scorer.enabled = false;
+  // Session 37: with `scorer_on`, the model's own matching (a cut's second
+  // partners exist only there), the scorer at its defaults.
+  o.join_scorer.enabled = scorer_on;
   o.join_scorer.record = true;
-  o.join_scorer.band_high = band_high;
-  // Candidates over band_high are recorded with `retrained` (the scorer
-  // is off here, so it decides nothing).
-  o.join_scorer.rescue_high = rescue_high;
-  o.join_scorer.retrained = rescue_high > band_high;
-  o.join_scorer.max_angle_deg = max_angle;
+  if (!scorer_on) {
+    o.join_scorer.band_high = band_high;
+    // Candidates over band_high are recorded with `retrained` (the scorer
+    // is off here, so it decides nothing).
+    o.join_scorer.rescue_high = rescue_high;
+    o.join_scorer.retrained = rescue_high > band_high;
+    o.join_scorer.max_angle_deg = max_angle;
+  }
   o.join_scorer.crop_size = crop_files.size;
   completion::Input in = completion::test::input_from_case(c);
   if (predicted) {
@@ -233,6 +239,11 @@ int main(int argc, char** argv) {
                       "Folder to append rows.csv (the CSV's rows with the committed net's "
                       "probability after `chosen`) and crops.u8 (JoinCandidate::crop) to");
   collect->add_option("--crop-size", crop_size, "Crop side, pixels")->check(CLI::Range(8, 512));
+  bool scorer_on = false;
+  collect->add_flag("--scorer-on", scorer_on,
+                    "Record with the scorer on at its defaults (the model's matching; "
+                    "--band-high, --rescue-high and --max-angle ignored): a cut's second "
+                    "partners are recorded only so");
   collect->add_option("--seed-step", seed_step, "Seeds seed, seed + step, ... (count of them)")
       ->check(CLI::Range(1, 1000));
 
@@ -274,6 +285,12 @@ int main(int argc, char** argv) {
   train->add_flag("--cover-only", cover_only,
                   "Only cover refusals' second chances (input `cover_retried`; "
                   "JoinScorerOptions::cover_refusal_threshold); without it they are left out");
+  // Session 37: a cut's second partners (JoinScorerOptions::
+  // second_partner_threshold), recorded with --scorer-on, likewise.
+  bool second_only = false;
+  train->add_flag("--second-only", second_only,
+                  "Only a cut's second partners (input `second_cut`; "
+                  "JoinScorerOptions::second_partner_threshold); without it they are left out");
   bool baseline = false;
   // Session 23: the same report for the committed net, so a retrained one
   // is compared with it on the same rows.
@@ -301,6 +318,10 @@ int main(int argc, char** argv) {
       throw std::runtime_error("input 44 is not `retried`");
     if (std::string(completion::join_feature_name(kCoverRetried)) != "cover_retried")
       throw std::runtime_error("input 54 is not `cover_retried`");
+    if (std::string(completion::join_feature_name(kSecondCut)) != "second_cut")
+      throw std::runtime_error("input 64 is not `second_cut`");
+    if (second_only && (wide_only || angle_only || cover_only))
+      throw std::runtime_error("--second-only with --wide-only, --angle-only or --cover-only");
     if (cover_only && (wide_only || angle_only))
       throw std::runtime_error("--cover-only with --wide-only or --angle-only");
     if (wide_only && angle_only) throw std::runtime_error("--wide-only with --angle-only");
@@ -313,9 +334,12 @@ int main(int argc, char** argv) {
     }
     auto rows_of = [&](const std::string& path) {
       std::vector<Row> rows = read_rows(path);
+      std::erase_if(rows, [&](const Row& r) { return (r.f[kSecondCut] > 0.5f) != second_only; });
       if (wide_only) std::erase_if(rows, [](const Row& r) { return !(r.f[1] > 1.0f); });
-      std::erase_if(rows, [&](const Row& r) { return (r.f[kCoverRetried] > 0.5f) != cover_only; });
-      if (!cover_only)
+      if (!second_only)
+        std::erase_if(rows,
+                      [&](const Row& r) { return (r.f[kCoverRetried] > 0.5f) != cover_only; });
+      if (!cover_only && !second_only)
         std::erase_if(rows, [&](const Row& r) { return (r.f[kRetried] > 0.5f) != angle_only; });
       for (Row& r : rows)
         for (int k : dropped) r.f[k] = 0;
@@ -324,7 +348,7 @@ int main(int argc, char** argv) {
     if (*probs) {
       std::printf(
           "set,case,a,b,label,hand_cost,default,retrained,screentone,shaded,ensemble,paint,"
-          "angle,cover,cover_plain\n");
+          "angle,cover,cover_plain,second\n");
       std::ifstream in(probs_csv);
       if (!in) throw std::runtime_error("cannot read " + probs_csv);
       for (std::string line; std::getline(in, line);) {
@@ -336,10 +360,9 @@ int main(int argc, char** argv) {
                                    " cells; must be " + std::to_string(7 + kJoinFeatures));
         JoinFeatures f{};
         for (int k = 0; k < kJoinFeatures; ++k) f[k] = std::stof(cells[7 + k]);
-        std::printf("%s,%s,%s,%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n",
-                    cells[0].c_str(),
-                    cells[1].c_str(), cells[2].c_str(), cells[3].c_str(), cells[4].c_str(),
-                    cells[5].c_str(),
+        std::printf("%s,%s,%s,%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n",
+                    cells[0].c_str(), cells[1].c_str(), cells[2].c_str(), cells[3].c_str(),
+                    cells[4].c_str(), cells[5].c_str(),
                     completion::join_probability(completion::default_join_scorer(), f),
                     completion::join_probability(completion::retrained_join_scorer(), f),
                     completion::join_probability(completion::screentone_join_scorer(), f),
@@ -348,7 +371,8 @@ int main(int argc, char** argv) {
                     completion::join_probability(completion::paint_ensemble_join_scorers(), f),
                     completion::join_probability(completion::angle_join_scorer(), f),
                     completion::join_probability(completion::cover_join_scorer(), f),
-                    completion::join_probability(completion::cover_plain_join_scorer(), f));
+                    completion::join_probability(completion::cover_plain_join_scorer(), f),
+                    completion::join_probability(completion::second_partner_join_scorer(), f));
       }
       return 0;
     }
@@ -367,7 +391,7 @@ int main(int argc, char** argv) {
       if (!annotated.empty()) {
         for (const auto& folder : find_annotated_cases(annotated))
           collect_case(read_annotated_case(folder), set, relations == "predicted", record_high,
-                       rescue_high, record_angle, f, &rows, crop_files);
+                       rescue_high, record_angle, scorer_on, f, &rows, crop_files);
       } else {
         const generator::Shading kinds[] = {generator::Shading::kFlat, generator::Shading::kTwoTone,
                                             generator::Shading::kGradient,
@@ -388,7 +412,7 @@ int main(int argc, char** argv) {
             AnnotatedCase c = generator::generate_case(g);
             c.name = std::string(names[s]) + "-" + std::to_string(case_seed);
             collect_case(c, set, relations == "predicted", record_high, rescue_high, record_angle,
-                         f, &rows, crop_files);
+                         scorer_on, f, &rows, crop_files);
           }
       }
       std::fclose(f);
@@ -457,10 +481,11 @@ int main(int argc, char** argv) {
         report(path + " " + name, rows, {t.net}, low, high, limit, threshold);
         if (baseline)
           report("  committed net: " + path + " " + name, rows,
-                 {wide_only    ? completion::wide_join_scorer()
-                  : angle_only ? completion::angle_join_scorer()
-                  : cover_only ? completion::cover_join_scorer()
-                               : completion::default_join_scorer()},
+                 {wide_only     ? completion::wide_join_scorer()
+                  : angle_only  ? completion::angle_join_scorer()
+                  : cover_only  ? completion::cover_join_scorer()
+                  : second_only ? completion::second_partner_join_scorer()
+                                : completion::default_join_scorer()},
                  low, high, limit, threshold);
         if (baseline && !wide_only)
           report("  retrained net: " + path + " " + name, rows,
@@ -479,6 +504,7 @@ int main(int argc, char** argv) {
       if (wide_only) comment << "\nOnly candidates over the angle limit (--wide-only).";
       if (angle_only) comment << "\nOnly angle refusals' second chances (--angle-only).";
       if (cover_only) comment << "\nOnly cover refusals' second chances (--cover-only).";
+      if (second_only) comment << "\nOnly a cut's second partners (--second-only).";
       file << completion::join_scorer_source(t.net, comment.str(),
                                              function.empty() ? "default_join_scorer" : function);
       if (!file) throw std::runtime_error("cannot write " + out);

@@ -507,7 +507,8 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
   // seen on opposite sides of it.
   const detail::Face face = options.face_joins ? drawn_face : detail::Face{};
   const std::vector<detail::Join> joins =
-      detail::match_edges(ctx, candidates, face.mask, tones, fields, try_join);
+      detail::match_edges(ctx, candidates, face.mask, tones, fields, try_join,
+                          [&](int a, int b) { return strands.find(a) == strands.find(b); });
   std::set<int> joined_atoms;
   for (const detail::Join& j : joins) {
     const detail::Edge& a = candidates[j.edge_a];

@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -210,6 +211,9 @@ struct Join {
   // (Options::corridor_width): joins only at the retrained net's
   // corridor_min_probability.
   bool corridor = false;
+  // The scorer's inputs for it, when it was scored (session 37: the second
+  // partner's net reads them with inputs of its own added).
+  std::optional<JoinFeatures> features;
 };
 // Greedy one-to-one matching, cheapest first; `try_join(a, b)` accepts (and
 // records) or refuses joining the strands of regions a and b. `face` (CV_8U,
@@ -220,9 +224,13 @@ struct Join {
 // masses and pieces' linear fields are measured once.
 class RegionTones;
 class RegionFields;
+// `joined(a, b)` (may be empty) says whether regions a and b are one
+// strand already: a cut's second partner (session 37) between them would add
+// nothing, and is neither asked of its net nor recorded.
 std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges,
                               const cv::Mat& face, RegionTones& tones, RegionFields& fields,
-                              const std::function<bool(int, int)>& try_join);
+                              const std::function<bool(int, int)>& try_join,
+                              const std::function<bool(int, int)>& joined = {});
 
 // Cases 2 and 3 (grow.cpp): the completed area of an unmatched edge, or an
 // empty polygon when nothing could be grown.

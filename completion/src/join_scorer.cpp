@@ -77,7 +77,18 @@ constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
                                                "miss_other",
                                                "shape_cover",
                                                "miss_per_width",
-                                               "miss_at_cuts"};
+                                               "miss_at_cuts",
+                                               "second_cut",
+                                               "second_p",
+                                               "first_p",
+                                               "first_cost_step",
+                                               "faced_gap",
+                                               "faced_overlap",
+                                               "cut_width_share",
+                                               "partner_widths",
+                                               "partners_gap",
+                                               "partners_side",
+                                               "first_partners"};
 
 std::string num(double v) {
   std::ostringstream s;
@@ -193,6 +204,9 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     return fail("cover_flat_threshold = " + num(cover_flat_threshold) + "; must be in (0, 1]");
   if (!(cover_screentone_threshold > 0 && cover_screentone_threshold <= 1))
     return fail("cover_screentone_threshold = " + num(cover_screentone_threshold) +
+                "; must be in (0, 1]");
+  if (!(second_partner_threshold > 0 && second_partner_threshold <= 1))
+    return fail("second_partner_threshold = " + num(second_partner_threshold) +
                 "; must be in (0, 1]");
   if (!(crop_size >= 0 && crop_size <= 512))
     return fail("crop_size = " + std::to_string(crop_size) + "; must be in [0, 512]");

@@ -244,6 +244,7 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       if (p < 0) p = q;
     }
     j.probability = p;
+    j.features = features[k];
     if (ctx.join_log == nullptr) continue;
     JoinCandidate c;
     c.region_a = edges[j.edge_a].region;

@@ -164,7 +164,7 @@ TEST(CoverRefusals, BadThresholdIsRefused) {
 
 TEST(CoverRefusals, CoverRetriedIsInput54) {
   EXPECT_STREQ(join_feature_name(kCoverRetried), "cover_retried");
-  EXPECT_STREQ(join_feature_name(kJoinFeatures - 1), "miss_at_cuts");
+  EXPECT_STREQ(join_feature_name(63), "miss_at_cuts");
 }
 
 }  // namespace

@@ -20,7 +20,11 @@ namespace hair25d::completion {
 // (JoinScorerOptions::cover_refusal_threshold), 0 for every other
 // candidate; the nets trained before them have zero weights there (their
 // files leave those inputs out).
-inline constexpr int kJoinFeatures = 64;
+// Session 37: inputs 64-74 describe a cut's second partner
+// (JoinScorerOptions::second_partner_threshold: a candidate whose cut an
+// earlier join took), 0 for every other candidate; likewise left out of
+// the older nets' files.
+inline constexpr int kJoinFeatures = 75;
 inline constexpr int kJoinHidden = 12;
 using JoinFeatures = std::array<float, kJoinFeatures>;
 
@@ -85,6 +89,11 @@ const JoinScorerNet& cover_join_scorer();
 // cover_screentone_threshold; both relations, those two shadings only;
 // generated file join_scorer_cover_plain_weights.cpp).
 const JoinScorerNet& cover_plain_join_scorer();
+// Session 37: the net for a cut's second partners only
+// (JoinScorerOptions::second_partner_threshold; both relations, four
+// shadings, recorded inside the matching with the scorer on; generated
+// file join_scorer_second_weights.cpp).
+const JoinScorerNet& second_partner_join_scorer();
 // The mean of the nets' probabilities (one net's alone when there is one):
 // a wrong candidate that one training seed happens to trust is refused
 // when the others do not. Throws hair25d::Error for no nets or a feature
@@ -349,6 +358,26 @@ struct JoinScorerOptions {
   // "Session 37: the flat cover second chances' bar").
   double cover_flat_threshold = 0.97;
   double cover_screentone_threshold = 1.0;
+  // Session 37: a candidate the greedy matching refuses because an earlier
+  // join took the atoms of one of its edges (each of its cuts may join
+  // once, a second time at Options::second_partner_p) is asked of
+  // `second_partner_join_scorer` (trained on such candidates, with inputs
+  // saying how sure the scorer was of it and of the first join, and how
+  // the two partners lie along the cut) and joined there, at its place in
+  // the matching, at p >= second_partner_threshold. 1 turns it off. On at
+  // 0.9 since session 37 (joins88: dev two-tone, gradient and mixed 2000
+  // and 3000, both relations, +90 right / 0 wrong pairs; fresh 31100-31299
+  // +66 / +5; the six real cases unchanged).
+  double second_partner_threshold = 0.9;
+  // Whether it also acts off two-tone and gradient drawings
+  // (`shaded_drawing`): flat and screentone ones.
+  bool second_partner_all_shadings = false;
+  // Whether the second partners the net accepts wait until every other
+  // candidate is matched, then join the surest first, each asked again
+  // (as the angle and cover refusals' second chances rank last: they take
+  // only cuts no other join wants); false: each joins at its own place in
+  // the matching.
+  bool second_partner_last = true;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
