@@ -451,9 +451,9 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
   // Session 36: cover refusals' second chances, likewise; by default only
   // on two-tone and gradient drawings (cover_refusal_all_shadings); session
   // 37: on flat and screentone ones by their own net and bars.
-  const bool cover_retries =
-      scorer.enabled ? cover_refusal_bar(scorer, tones.screentone(), shaded) < 1
-                     : ctx.join_log != nullptr;
+  const bool cover_retries = scorer.enabled
+                                 ? cover_refusal_bar(scorer, tones.screentone(), shaded) < 1
+                                 : ctx.join_log != nullptr;
   std::vector<Edge> side_edges;
   std::vector<int> side_origin;
   for (std::size_t i = 0; i < edges.size(); ++i)
