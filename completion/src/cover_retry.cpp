@@ -15,13 +15,6 @@ namespace {
 constexpr double kCutReachShare = 0.15;
 constexpr double kMinCutReach = 3.0;
 
-double segment_distance(const Vec2& x, const Vec2& p, const Vec2& q) {
-  const Vec2 d = q - p;
-  const double n = d.squaredNorm();
-  const double s = n > 0 ? std::clamp((x - p).dot(d) / n, 0.0, 1.0) : 0.0;
-  return (x - (p + s * d)).norm();
-}
-
 double wider_cut(const CoverMisses& m) { return std::max({m.a->width, m.b->width, 1.0}); }
 
 }  // namespace

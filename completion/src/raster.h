@@ -50,6 +50,14 @@ inline double angle(const Vec2& a, const Vec2& b) {
   return std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0));
 }
 
+// Distance from `x` to the segment p q (to p when they coincide).
+inline double segment_distance(const Vec2& x, const Vec2& p, const Vec2& q) {
+  const Vec2 d = q - p;
+  const double n = d.squaredNorm();
+  const double t = n > 0 ? std::clamp((x - p).dot(d) / n, 0.0, 1.0) : 0.0;
+  return (x - (p + t * d)).norm();
+}
+
 // A contour point's pixel centre.
 inline Vec2 centre(const cv::Point& p) { return {p.x + 0.5, p.y + 0.5}; }
 

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "hair25d/core/error.h"
+#include "raster.h"
 
 namespace hair25d::completion::detail {
 namespace {
@@ -13,18 +14,11 @@ namespace {
 // same stretch of the cut (one above the other, or one of them wrong).
 constexpr double kOverlapPx = 2.0;
 
-double distance_to_segment(const Vec2& x, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double n = d.squaredNorm();
-  const double t = n > 0 ? std::clamp((x - a).dot(d) / n, 0.0, 1.0) : 0.0;
-  return (x - (a + t * d)).norm();
-}
-
 // Distance between the chords p q of two edges (0 when they cross is not
 // told apart from touching: either way the pieces lie side by side).
 double chord_gap(const Edge& u, const Edge& v) {
-  return std::min({distance_to_segment(u.p, v.p, v.q), distance_to_segment(u.q, v.p, v.q),
-                   distance_to_segment(v.p, u.p, u.q), distance_to_segment(v.q, u.p, u.q)});
+  return std::min({segment_distance(u.p, v.p, v.q), segment_distance(u.q, v.p, v.q),
+                   segment_distance(v.p, u.p, u.q), segment_distance(v.q, u.p, u.q)});
 }
 
 float clamped(double v, double lo, double hi) {

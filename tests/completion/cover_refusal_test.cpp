@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "annotated_eval.h"
+#include "feature_index.h"
 #include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
@@ -25,13 +26,6 @@ namespace {
 
 constexpr int kCoverRetried = 54;  // join_feature_name: "cover_retried"
 constexpr int kRetried = 44;       // "retried" (session 35)
-
-int feature(const char* name) {
-  for (int k = 0; k < kJoinFeatures; ++k)
-    if (std::string(join_feature_name(k)) == name) return k;
-  ADD_FAILURE() << name;
-  return 0;
-}
 
 Result run(const AnnotatedCase& c, double threshold, bool all_shadings = false) {
   Options o = test::joins_only();
@@ -71,7 +65,7 @@ TEST(CoverRefusals, RecordedAsRowsOfTheirOwn) {
   o.join_scorer.record = true;
   const AnnotatedCase c = test::generated_case(2002, generator::Shading::kTwoTone);
   const Result r = complete_strands(test::input_from_case(c), o);
-  const int uncovered = feature("uncovered");  // 1 − the cover
+  const int uncovered = test::feature_index("uncovered");  // 1 − the cover
   int retried = 0;
   for (const JoinCandidate& j : r.join_candidates) {
     if (j.features[kCoverRetried] > 0.5f) {

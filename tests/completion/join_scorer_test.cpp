@@ -2,6 +2,7 @@
 // hand-made case, their behaviour under mirroring and transposition, the
 // trainer on planted rules, the generated weights file and bad input.
 #include "hair25d/completion/join_scorer.h"
+#include "feature_index.h"
 
 #include <gtest/gtest.h>
 
@@ -20,13 +21,6 @@ namespace {
 
 // The shared synthetic drawings and helpers (synthetic.h).
 using namespace test;
-
-int feature(const char* name) {
-  for (int i = 0; i < kJoinFeatures; ++i)
-    if (std::string(join_feature_name(i)) == name) return i;
-  ADD_FAILURE() << "no feature " << name;
-  return 0;
-}
 
 // A horizontal band split by a vertical occluder; the band is two-toned
 // across its width (light upper half), and `flipped` paints the right piece
@@ -89,24 +83,24 @@ TEST(JoinScorer, FeaturesOfAStraightBandUnderAnOccluder) {
   EXPECT_EQ(r.joins, 1);
   const JoinFeatures& f = c->features;
   // Straight: the tangents run along the chord.
-  EXPECT_LT(f[feature("mean_angle")], 0.1);
-  EXPECT_LT(f[feature("bulge")], 0.1);
-  EXPECT_EQ(f[feature("no_common_occluder")], 0.0f);
-  EXPECT_LT(f[feature("uncovered")], 0.05);
+  EXPECT_LT(f[test::feature_index("mean_angle")], 0.1);
+  EXPECT_LT(f[test::feature_index("bulge")], 0.1);
+  EXPECT_EQ(f[test::feature_index("no_common_occluder")], 0.0f);
+  EXPECT_LT(f[test::feature_index("uncovered")], 0.05);
   // The same bands at the same places across both pieces.
-  EXPECT_LT(f[feature("profile_luma")], 0.05);
-  EXPECT_GT(f[feature("profile_corr")], 0.9);
-  EXPECT_GT(f[feature("profile_spread")], 0.05);
+  EXPECT_LT(f[test::feature_index("profile_luma")], 0.05);
+  EXPECT_GT(f[test::feature_index("profile_corr")], 0.9);
+  EXPECT_GT(f[test::feature_index("profile_spread")], 0.05);
   // The middle of the join lies under region 3, above both pieces.
-  EXPECT_GT(f[feature("mid_above_both")], 0.8);
-  EXPECT_EQ(f[feature("mid_above_one")], 0.0f);
+  EXPECT_GT(f[test::feature_index("mid_above_both")], 0.8);
+  EXPECT_EQ(f[test::feature_index("mid_above_one")], 0.0f);
   // Both pieces lie above nothing; each has one occluded edge; no rival.
-  EXPECT_EQ(f[feature("back_pieces")], 1.0f);
-  EXPECT_EQ(f[feature("edges_max")], 0.25f);
-  EXPECT_EQ(f[feature("rivals_max")], 0.0f);
+  EXPECT_EQ(f[test::feature_index("back_pieces")], 1.0f);
+  EXPECT_EQ(f[test::feature_index("edges_max")], 0.25f);
+  EXPECT_EQ(f[test::feature_index("rivals_max")], 0.0f);
   // Horizontal join, head straight below: across the radial direction.
-  EXPECT_LT(f[feature("radial")], 0.2);
-  EXPECT_FLOAT_EQ(f[feature("hand_cost")], static_cast<float>(c->hand_cost));
+  EXPECT_LT(f[test::feature_index("radial")], 0.2);
+  EXPECT_FLOAT_EQ(f[test::feature_index("hand_cost")], static_cast<float>(c->hand_cost));
   EXPECT_EQ(c->probability, -1.0);  // the scorer was not asked
 }
 
@@ -118,9 +112,11 @@ TEST(JoinScorer, ProfileTellsABandFlippedAcrossTheStrand) {
   ASSERT_NE(s, nullptr);
   ASSERT_NE(f, nullptr);
   // The windows' mean colours are alike, the profiles are not.
-  EXPECT_LT(std::abs(f->features[feature("colour")] - s->features[feature("colour")]), 0.1);
-  EXPECT_GT(f->features[feature("profile_luma")], 0.15);
-  EXPECT_LT(f->features[feature("profile_corr")], -0.9);
+  EXPECT_LT(std::abs(f->features[test::feature_index("colour")] -
+                     s->features[test::feature_index("colour")]),
+            0.1);
+  EXPECT_GT(f->features[test::feature_index("profile_luma")], 0.15);
+  EXPECT_LT(f->features[test::feature_index("profile_corr")], -0.9);
 }
 
 // A horizontal strand (y 80..110) lying on a wide back region 4, cut by a
@@ -168,19 +164,19 @@ TEST(JoinScorer, FeaturesReadThePaintTermsOfTheHandCost) {
   ASSERT_NE(o, nullptr);
   ASSERT_NE(h, nullptr);
   for (const JoinCandidate* c : {s, o, h}) {
-    EXPECT_EQ(c->features[feature("flat_paint")], 1.0f);
-    EXPECT_EQ(c->features[feature("shading_continues")], 0.0f);
-    EXPECT_EQ(c->features[feature("tone_cost")], 0.0f);
-    EXPECT_EQ(c->features[feature("one_sided")], 0.0f);
+    EXPECT_EQ(c->features[test::feature_index("flat_paint")], 1.0f);
+    EXPECT_EQ(c->features[test::feature_index("shading_continues")], 0.0f);
+    EXPECT_EQ(c->features[test::feature_index("tone_cost")], 0.0f);
+    EXPECT_EQ(c->features[test::feature_index("one_sided")], 0.0f);
   }
   // One paint steps 0; 1 RGB off steps 1 RGB (/ 30).
-  EXPECT_NEAR(s->features[feature("paint_step")], 0.0, 0.005);
-  EXPECT_NEAR(o->features[feature("paint_step")], 1.0 / 30.0, 0.005);
+  EXPECT_NEAR(s->features[test::feature_index("paint_step")], 0.0, 0.005);
+  EXPECT_NEAR(o->features[test::feature_index("paint_step")], 1.0 / 30.0, 0.005);
   // The pieces' paint is theirs alone (rare) unless three squares share it;
   // rarity is worth kRarePaintBonus (1.5) of the hand cost, nothing else
   // about the pair changes.
-  EXPECT_EQ(s->features[feature("rare_paint")], 1.0f);
-  EXPECT_EQ(h->features[feature("rare_paint")], 0.0f);
+  EXPECT_EQ(s->features[test::feature_index("rare_paint")], 1.0f);
+  EXPECT_EQ(h->features[test::feature_index("rare_paint")], 0.0f);
   EXPECT_NEAR(h->hand_cost - s->hand_cost, 1.5, 1e-6);
 }
 
@@ -199,16 +195,16 @@ TEST(JoinScorer, FeaturesCountTheOccludersOverTheGap) {
   const JoinCandidate* c2 = candidate(two, 1, 2);
   ASSERT_NE(c1, nullptr);
   ASSERT_NE(c2, nullptr);
-  EXPECT_FLOAT_EQ(c1->features[feature("top_occluder")], 1.0f);
-  EXPECT_FLOAT_EQ(c1->features[feature("patch_occluders")], 0.25f);
-  EXPECT_NEAR(c2->features[feature("top_occluder")], 0.5, 0.1);
-  EXPECT_FLOAT_EQ(c2->features[feature("patch_occluders")], 0.5f);
+  EXPECT_FLOAT_EQ(c1->features[test::feature_index("top_occluder")], 1.0f);
+  EXPECT_FLOAT_EQ(c1->features[test::feature_index("patch_occluders")], 0.25f);
+  EXPECT_NEAR(c2->features[test::feature_index("top_occluder")], 0.5, 0.1);
+  EXPECT_FLOAT_EQ(c2->features[test::feature_index("patch_occluders")], 0.5f);
   // No screentone: the dots' inputs say unknown.
   for (const JoinCandidate* c : {c1, c2}) {
-    EXPECT_EQ(c->features[feature("tone_same")], 0.0f);
-    EXPECT_EQ(c->features[feature("tone_other")], 0.0f);
-    EXPECT_FLOAT_EQ(c->features[feature("mass_step")], 0.6f);
-    EXPECT_EQ(c->features[feature("dark_step")], 0.0f);
+    EXPECT_EQ(c->features[test::feature_index("tone_same")], 0.0f);
+    EXPECT_EQ(c->features[test::feature_index("tone_other")], 0.0f);
+    EXPECT_FLOAT_EQ(c->features[test::feature_index("mass_step")], 0.6f);
+    EXPECT_EQ(c->features[test::feature_index("dark_step")], 0.0f);
   }
 }
 
@@ -291,12 +287,14 @@ void planted(int n, std::uint64_t seed, std::vector<JoinFeatures>* x, std::vecto
     // Noise on the inputs of every candidate up to session 36's; a cut's
     // second partner's (64 on, session 37) are 0 on every other row, as
     // here (eleven more noise inputs left 913 of 1000 held-out rows right).
-    for (int k = 0; k < feature("second_cut"); ++k) f[k] = u(rng) * 2.0f;
-    f[feature("profile_luma")] = u(rng);
-    f[feature("radial")] = u(rng);
+    for (int k = 0; k < test::feature_index("second_cut"); ++k) f[k] = u(rng) * 2.0f;
+    f[test::feature_index("profile_luma")] = u(rng);
+    f[test::feature_index("radial")] = u(rng);
     x->push_back(f);
-    y->push_back(f[feature("gap_per_width")] + 2 * f[feature("profile_luma")] < 1.2f &&
-                 f[feature("radial")] > 0.3f);
+    y->push_back(f[test::feature_index("gap_per_width")] +
+                         2 * f[test::feature_index("profile_luma")] <
+                     1.2f &&
+                 f[test::feature_index("radial")] > 0.3f);
   }
 }
 
@@ -441,7 +439,7 @@ TEST(JoinScorer, WideNetDecidesCandidatesOverTheAngleLimit) {
   const Result r = run(kWide, defaults.wide_threshold);
   const JoinCandidate* c = candidate(r, 1, 2);
   ASSERT_NE(c, nullptr);
-  EXPECT_GT(c->features[feature("worst_angle")], 1.0f);
+  EXPECT_GT(c->features[test::feature_index("worst_angle")], 1.0f);
   EXPECT_GT(c->hand_cost, 2.4);
   const double p = c->probability;
   EXPECT_EQ(p, join_probability(wide_join_scorer(), c->features));

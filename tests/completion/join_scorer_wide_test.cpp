@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "annotated_eval.h"
+#include "feature_index.h"
 #include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
@@ -21,13 +22,6 @@
 
 namespace hair25d::completion {
 namespace {
-
-int feature(const char* name) {
-  for (int k = 0; k < kJoinFeatures; ++k)
-    if (std::string(join_feature_name(k)) == name) return k;
-  ADD_FAILURE() << "no feature " << name;
-  return 0;
-}
 
 // Area under the ROC curve of `score` (higher = one strand), ties half.
 double auc(const std::vector<double>& score, const std::vector<int>& label) {
@@ -50,7 +44,7 @@ double auc(const std::vector<double>& score, const std::vector<int>& label) {
 // every wide candidate (worst tangent angle over max_join_angle_deg) as the
 // training data records it, the scorer off so that nothing is rescued.
 TEST(JoinScorerWide, NetSeparatesCandidatesOverTheAngleLimit) {
-  const int worst = feature("worst_angle");
+  const int worst = test::feature_index("worst_angle");
   std::vector<double> net, hand;
   std::vector<int> label;
   for (const std::uint64_t seed : {5000u, 5001u})
@@ -123,7 +117,7 @@ TEST(JoinScorerWide, NoWideJoinsOnScreentone) {
   EXPECT_EQ(on.joins, off.joins);
   EXPECT_EQ(strands_of(on), strands_of(off));
   const Result recorded = run(screentone, 120.0, true);
-  const int worst = feature("worst_angle");
+  const int worst = test::feature_index("worst_angle");
   int wide = 0;
   for (const JoinCandidate& j : recorded.join_candidates) {
     if (!(j.features[worst] > 1.0f)) continue;

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "annotated_eval.h"
+#include "feature_index.h"
 #include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/completion/join_scorer.h"
@@ -27,13 +28,6 @@ namespace {
 
 constexpr int kSecondCut = 64;     // join_feature_name: "second_cut"
 constexpr int kCoverRetried = 54;  // "cover_retried" (session 36)
-
-int feature(const char* name) {
-  for (int k = 0; k < kJoinFeatures; ++k)
-    if (std::string(join_feature_name(k)) == name) return k;
-  ADD_FAILURE() << name;
-  return 0;
-}
 
 Result run(const AnnotatedCase& c, double threshold, bool all_shadings = false) {
   Options o = test::joins_only();
@@ -66,13 +60,13 @@ TEST(SecondPartnerNet, RecordedAsRowsOfTheirOwn) {
       ++seconds;
       EXPECT_TRUE(ordinary.count({j.region_a, j.region_b})) << j.region_a << "-" << j.region_b;
       EXPECT_FALSE(j.chosen);  // the net is off
-      EXPECT_GE(j.features[feature("faced_gap")], 0.0f);
-      EXPECT_GE(j.features[feature("faced_overlap")], 0.0f);
-      EXPECT_LE(j.features[feature("faced_overlap")], 1.0f);
-      EXPECT_GT(j.features[feature("cut_width_share")], 0.0f);
-      EXPECT_GE(j.features[feature("partners_side")], -1.0f - 1e-5f);
-      EXPECT_LE(j.features[feature("partners_side")], 1.0f + 1e-5f);
-      EXPECT_GE(j.features[feature("first_partners")], 1.0f);
+      EXPECT_GE(j.features[test::feature_index("faced_gap")], 0.0f);
+      EXPECT_GE(j.features[test::feature_index("faced_overlap")], 0.0f);
+      EXPECT_LE(j.features[test::feature_index("faced_overlap")], 1.0f);
+      EXPECT_GT(j.features[test::feature_index("cut_width_share")], 0.0f);
+      EXPECT_GE(j.features[test::feature_index("partners_side")], -1.0f - 1e-5f);
+      EXPECT_LE(j.features[test::feature_index("partners_side")], 1.0f + 1e-5f);
+      EXPECT_GE(j.features[test::feature_index("first_partners")], 1.0f);
     }
   }
   EXPECT_GT(seconds, 0);
