@@ -80,19 +80,12 @@ TEST(CoverPlain, RightFlatJoinsAtTheBar) {
   const double bar = JoinScorerOptions{}.cover_flat_threshold;
   o.join_scorer.cover_flat_threshold = bar;
   const Result on = complete_strands(test::input_from_case(c), o);
-  const auto refused = test::traced_pairs(off, JoinStage::kCover),
-             before = test::traced_pairs(off, JoinStage::kChosen);
-  int gained = 0;
-  for (const JoinTrace& t : on.join_trace) {
-    const std::pair<int, int> pair{t.region_a, t.region_b};
-    if (t.stage != JoinStage::kChosen || before.count(pair) || !refused.count(pair) ||
-        t.cover >= Options{}.min_join_coverage)
-      continue;
-    ++gained;
+  const std::vector<JoinTrace> gained = test::cover_gains(off, on);
+  for (const JoinTrace& t : gained) {
     EXPECT_GE(t.probability, bar);
     EXPECT_EQ(strand.at(t.region_a), strand.at(t.region_b)) << t.region_a << "-" << t.region_b;
   }
-  EXPECT_GT(gained, 0);
+  EXPECT_FALSE(gained.empty());
 }
 
 // Two-tone and gradient drawings are session 36's whatever the two bars.

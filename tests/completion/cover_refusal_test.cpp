@@ -38,20 +38,12 @@ Result run(const AnnotatedCase& c, double threshold, bool all_shadings = false) 
 // With a bar any candidate passes, two-tone drawings gain joins
 // of pairs the cover refused, each with a patch under min_join_coverage.
 TEST(CoverRefusals, JoinedOnlyWhenOn) {
-  int gained = 0;
-  const double min_cover = Options{}.min_join_coverage;
+  std::size_t gained = 0;
   for (const std::uint64_t seed : {2000u, 2001u, 2002u, 2003u}) {
     const AnnotatedCase c = test::generated_case(seed, generator::Shading::kTwoTone);
-    const Result off = run(c, 1.0), on = run(c, 1e-6);
-    const auto refused = test::traced_pairs(off, JoinStage::kCover),
-               before = test::traced_pairs(off, JoinStage::kChosen);
-    for (const JoinTrace& t : on.join_trace) {
-      if (t.stage != JoinStage::kChosen) continue;
-      const std::pair<int, int> pair{t.region_a, t.region_b};
-      if (!before.count(pair) && refused.count(pair) && t.cover < min_cover) ++gained;
-    }
+    gained += test::cover_gains(run(c, 1.0), run(c, 1e-6)).size();
   }
-  EXPECT_GT(gained, 0);
+  EXPECT_GT(gained, 0u);
 }
 
 // Recorded (the net's training data) as rows of their own: `cover_retried`
@@ -97,20 +89,12 @@ TEST(CoverRefusals, RightJoinsAtTheBar) {
   const AnnotatedCase c = test::generated_case(2036, generator::Shading::kTwoTone);
   std::map<int, int> strand;
   for (const AnnotatedRegion& r : c.region_list) strand[r.id] = r.strand;
-  const Result off = run(c, 1.0), on = run(c, 0.9);
-  const auto refused = test::traced_pairs(off, JoinStage::kCover),
-             before = test::traced_pairs(off, JoinStage::kChosen);
-  int gained = 0;
-  for (const JoinTrace& t : on.join_trace) {
-    const std::pair<int, int> pair{t.region_a, t.region_b};
-    if (t.stage != JoinStage::kChosen || before.count(pair) || !refused.count(pair) ||
-        t.cover >= Options{}.min_join_coverage)
-      continue;
-    ++gained;
+  const std::vector<JoinTrace> gained = test::cover_gains(run(c, 1.0), run(c, 0.9));
+  for (const JoinTrace& t : gained) {
     EXPECT_GE(t.probability, 0.9);
     EXPECT_EQ(strand.at(t.region_a), strand.at(t.region_b)) << t.region_a << "-" << t.region_b;
   }
-  EXPECT_GT(gained, 0);
+  EXPECT_FALSE(gained.empty());
 }
 
 // The default options join at the bar of session 36: the same joins as

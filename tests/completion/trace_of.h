@@ -5,6 +5,7 @@
 
 #include <set>
 #include <utility>
+#include <vector>
 
 #include "hair25d/completion/completion.h"
 
@@ -24,6 +25,22 @@ inline std::set<std::pair<int, int>> traced_pairs(const Result& r, JoinStage sta
   std::set<std::pair<int, int>> out;
   for (const JoinTrace& t : r.join_trace)
     if (t.stage == stage) out.insert({t.region_a, t.region_b});
+  return out;
+}
+
+// The joins of `on` a cover second chance added: chosen there, refused by
+// the cover in `off` and not chosen there, the patch under
+// min_join_coverage.
+inline std::vector<JoinTrace> cover_gains(const Result& off, const Result& on) {
+  const auto refused = traced_pairs(off, JoinStage::kCover),
+             before = traced_pairs(off, JoinStage::kChosen);
+  std::vector<JoinTrace> out;
+  for (const JoinTrace& t : on.join_trace) {
+    const std::pair<int, int> pair{t.region_a, t.region_b};
+    if (t.stage == JoinStage::kChosen && !before.count(pair) && refused.count(pair) &&
+        t.cover < Options{}.min_join_coverage)
+      out.push_back(t);
+  }
   return out;
 }
 
