@@ -15,18 +15,13 @@ namespace hair25d::completion::detail {
 namespace {
 
 // Options::second_partner_p: a candidate the scorer is sure of whose atoms
-// are taken on one of its edges only, each by one join.
+// are taken on one of its edges only (taken_edge), each by one join.
 bool second_partner(const Join& j, const std::vector<Edge>& edges, const std::set<int>& used,
                     const std::set<int>& twice, double bar) {
   if (bar <= 0 || j.probability < bar) return false;
-  int taken = -1;
-  for (int e : {j.edge_a, j.edge_b})
-    for (int atom : edges[e].atoms) {
-      if (!used.count(atom)) continue;
-      if (twice.count(atom) || (taken >= 0 && taken != e)) return false;
-      taken = e;
-    }
-  return taken >= 0;
+  const int taken = taken_edge(j, edges, used);
+  return taken >= 0 &&
+         std::ranges::none_of(edges[taken].atoms, [&](int atom) { return twice.count(atom) > 0; });
 }
 
 }  // namespace
