@@ -22,6 +22,9 @@ bool Options::is_valid(std::string* error) const {
                 "; must be in [0, 100]");
   if (!(face_piece_mass_step >= 0 && face_piece_mass_step <= 1))
     return fail("face_piece_mass_step = " + num(face_piece_mass_step) + "; must be in [0, 1]");
+  if (!(tone_path_landing_share >= 0 && tone_path_landing_share <= 10))
+    return fail("tone_path_landing_share = " + num(tone_path_landing_share) +
+                "; must be in [0, 10]");
   if (occluder_reach < 0 || occluder_reach > 16)
     return fail("occluder_reach = " + std::to_string(occluder_reach) + "; must be in [0, 16]");
   if (!(merge_gap >= 0)) return fail("merge_gap = " + num(merge_gap) + "; must be >= 0");

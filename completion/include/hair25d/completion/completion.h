@@ -50,6 +50,18 @@ struct Options {
   // 1 wrong over the lead's fresh 10200 runs (back pieces split from the
   // back hair in 10254 and 10279): off (docs/completion-record.md).
   double face_piece_mass_step = 0.0;
+  // Screentone: a tone path join of two front pieces (mass_paths.cpp) needs
+  // at least this many landings (distinct pixels of one piece reached by
+  // the paths under the common occluders) per square root of the smaller
+  // piece's pixels. A strand passing under an occluder lands across its
+  // whole width; two strands side by side, or a tip reaching past a
+  // neighbour's end, meet on a few pixels. 0: no such test (only the
+  // path joins' fixed three landings). Session 38 (joins92): at 0.3 dev
+  // screentone and mixed 2000 and 3000 (both relations) lost 11 wrong
+  // pairs and no right one, fresh screentone and mixed 31400-31599 10
+  // wrong and no right one; at 0.5 dev lost 13 wrong and 3 right, at
+  // 0.65 17 wrong and 5 right (docs/completion-record.md).
+  double tone_path_landing_share = 0.3;
   // A region's boundary pixel is occluded when an occluder pixel lies within
   // this many pixels; occluding runs closer than `merge_gap` are merged.
   int occluder_reach = 2;
