@@ -313,7 +313,7 @@ int main(int argc, char** argv) {
   app.add_option("--tone-path-landing-share", options.tone_path_landing_share,
                  "completion::Options::tone_path_landing_share: on screentone, tone path joins "
                  "of two front pieces need this many landings per square root of the smaller "
-                 "piece's pixels (0: off; default 0.3)");
+                 "piece's pixels (0: off, the default)");
   app.add_option("--join-arm-shares", options.join_arm_shares,
                  "completion::Options::join_arm_shares: tangent arms (shares of the chord) tried "
                  "where the join patch lies under min_join_coverage, e.g. 0.2 0.33 0.5 0.7")

@@ -60,8 +60,12 @@ struct Options {
   // screentone and mixed 2000 and 3000 (both relations) lost 11 wrong
   // pairs and no right one, fresh screentone and mixed 31400-31599 10
   // wrong and no right one; at 0.5 dev lost 13 wrong and 3 right, at
-  // 0.65 17 wrong and 5 right (docs/completion-record.md).
-  double tone_path_landing_share = 0.3;
+  // 0.65 17 wrong and 5 right. Off (lead, session 38): at 0.3 the lead's
+  // held and fresh sets lost 39 right pairs and 12 wrong ones, most of the
+  // right ones in long strands whose one tone path link carries 4-6 pairs
+  // (fresh screentone 31600 -24 / -4, 10200 -9 / -4, mixed 31000 -6 / 0;
+  // docs/completion-record.md).
+  double tone_path_landing_share = 0.0;
   // A region's boundary pixel is occluded when an occluder pixel lies within
   // this many pixels; occluding runs closer than `merge_gap` are merged.
   int occluder_reach = 2;
