@@ -96,6 +96,43 @@ std::string num(double v) {
   return s.str();
 }
 
+// The ranges most of JoinScorerOptions' fields lie in: a probability bar
+// (0, 1), a bar where 1 turns a second chance off (0, 1], a probability
+// floor [0, 1) or [0, 1], and a hand cost [0, 100).
+enum class Range { kOpenUnit, kBarOrOff, kLowUnit, kUnit, kCost };
+
+bool in_range(double v, Range r) {
+  switch (r) {
+    case Range::kOpenUnit:
+      return v > 0 && v < 1;
+    case Range::kBarOrOff:
+      return v > 0 && v <= 1;
+    case Range::kLowUnit:
+      return v >= 0 && v < 1;
+    case Range::kUnit:
+      return v >= 0 && v <= 1;
+    case Range::kCost:
+      return v >= 0 && v < 100;
+  }
+  return false;
+}
+
+const char* range_text(Range r) {
+  switch (r) {
+    case Range::kOpenUnit:
+      return "(0, 1)";
+    case Range::kBarOrOff:
+      return "(0, 1]";
+    case Range::kLowUnit:
+      return "[0, 1)";
+    case Range::kUnit:
+      return "[0, 1]";
+    case Range::kCost:
+      return "[0, 100)";
+  }
+  return "";
+}
+
 void check_finite(const JoinFeatures& f, const char* what) {
   for (int i = 0; i < kJoinFeatures; ++i)
     if (!std::isfinite(f[i]))
@@ -137,77 +174,49 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
     if (error != nullptr) *error = "JoinScorerOptions::" + m;
     return false;
   };
+  auto check = [&](const char* name, double v, Range r) {
+    return in_range(v, r) ||
+           fail(std::string(name) + " = " + num(v) + "; must be in " + range_text(r));
+  };
   if (!(band_low >= 0)) return fail("band_low = " + num(band_low) + "; must be >= 0");
   if (!(band_high > band_low))
     return fail("band_high = " + num(band_high) + "; must be > band_low (" + num(band_low) + ")");
   if (!(band_high < 100)) return fail("band_high = " + num(band_high) + "; must be < 100");
-  if (!(threshold > 0 && threshold < 1))
-    return fail("threshold = " + num(threshold) + "; must be in (0, 1)");
-  if (!(screentone_threshold > 0 && screentone_threshold < 1))
-    return fail("screentone_threshold = " + num(screentone_threshold) + "; must be in (0, 1)");
-  if (!(ensemble_threshold > 0 && ensemble_threshold < 1))
-    return fail("ensemble_threshold = " + num(ensemble_threshold) + "; must be in (0, 1)");
-  if (!(paint_ensemble_threshold > 0 && paint_ensemble_threshold < 1))
-    return fail("paint_ensemble_threshold = " + num(paint_ensemble_threshold) +
-                "; must be in (0, 1)");
-  if (!(cel_ensemble_threshold > 0 && cel_ensemble_threshold < 1))
-    return fail("cel_ensemble_threshold = " + num(cel_ensemble_threshold) + "; must be in (0, 1)");
-  if (!(retrained_threshold > 0 && retrained_threshold < 1))
-    return fail("retrained_threshold = " + num(retrained_threshold) + "; must be in (0, 1)");
-  if (!(retrained_shaded_threshold > 0 && retrained_shaded_threshold < 1))
-    return fail("retrained_shaded_threshold = " + num(retrained_shaded_threshold) +
-                "; must be in (0, 1)");
+  if (!check("threshold", threshold, Range::kOpenUnit)) return false;
+  if (!check("screentone_threshold", screentone_threshold, Range::kOpenUnit)) return false;
+  if (!check("ensemble_threshold", ensemble_threshold, Range::kOpenUnit)) return false;
+  if (!check("paint_ensemble_threshold", paint_ensemble_threshold, Range::kOpenUnit)) return false;
+  if (!check("cel_ensemble_threshold", cel_ensemble_threshold, Range::kOpenUnit)) return false;
+  if (!check("retrained_threshold", retrained_threshold, Range::kOpenUnit)) return false;
+  if (!check("retrained_shaded_threshold", retrained_shaded_threshold, Range::kOpenUnit))
+    return false;
   if (!(refuse_below >= 0 && refuse_below <= threshold))
     return fail("refuse_below = " + num(refuse_below) + "; must be in [0, threshold (" +
                 num(threshold) + ")]");
-  if (!(veto_low >= 0 && veto_low < 100))
-    return fail("veto_low = " + num(veto_low) + "; must be in [0, 100)");
-  if (!(screentone_veto_low >= 0 && screentone_veto_low < 100))
-    return fail("screentone_veto_low = " + num(screentone_veto_low) + "; must be in [0, 100)");
-  if (!(veto_below >= 0 && veto_below < 1))
-    return fail("veto_below = " + num(veto_below) + "; must be in [0, 1)");
-  if (!(rescue_high >= 0 && rescue_high < 100))
-    return fail("rescue_high = " + num(rescue_high) + "; must be in [0, 100)");
-  if (!(rescue_threshold > 0 && rescue_threshold < 1))
-    return fail("rescue_threshold = " + num(rescue_threshold) + "; must be in (0, 1)");
-  if (!(screentone_veto_below >= 0 && screentone_veto_below < 1))
-    return fail("screentone_veto_below = " + num(screentone_veto_below) + "; must be in [0, 1)");
-  if (!(screentone_rescue_threshold > 0 && screentone_rescue_threshold <= 1))
-    return fail("screentone_rescue_threshold = " + num(screentone_rescue_threshold) +
-                "; must be in (0, 1]");
-  if (!(shaded_threshold > 0 && shaded_threshold < 1))
-    return fail("shaded_threshold = " + num(shaded_threshold) + "; must be in (0, 1)");
-  if (!(shaded_veto_below >= 0 && shaded_veto_below < 1))
-    return fail("shaded_veto_below = " + num(shaded_veto_below) + "; must be in [0, 1)");
-  if (!(shaded_rescue_threshold > 0 && shaded_rescue_threshold <= 1))
-    return fail("shaded_rescue_threshold = " + num(shaded_rescue_threshold) +
-                "; must be in (0, 1]");
+  if (!check("veto_low", veto_low, Range::kCost)) return false;
+  if (!check("screentone_veto_low", screentone_veto_low, Range::kCost)) return false;
+  if (!check("veto_below", veto_below, Range::kLowUnit)) return false;
+  if (!check("rescue_high", rescue_high, Range::kCost)) return false;
+  if (!check("rescue_threshold", rescue_threshold, Range::kOpenUnit)) return false;
+  if (!check("screentone_veto_below", screentone_veto_below, Range::kLowUnit)) return false;
+  if (!check("screentone_rescue_threshold", screentone_rescue_threshold, Range::kBarOrOff))
+    return false;
+  if (!check("shaded_threshold", shaded_threshold, Range::kOpenUnit)) return false;
+  if (!check("shaded_veto_below", shaded_veto_below, Range::kLowUnit)) return false;
+  if (!check("shaded_rescue_threshold", shaded_rescue_threshold, Range::kBarOrOff)) return false;
   if (!(max_angle_deg >= 0 && max_angle_deg <= 180))
     return fail("max_angle_deg = " + num(max_angle_deg) + "; must be in [0, 180]");
-  if (!(wide_band_high >= 0 && wide_band_high < 100))
-    return fail("wide_band_high = " + num(wide_band_high) + "; must be in [0, 100)");
-  if (!(wide_threshold > 0 && wide_threshold < 1))
-    return fail("wide_threshold = " + num(wide_threshold) + "; must be in (0, 1)");
-  if (!(side_threshold > 0 && side_threshold <= 1))
-    return fail("side_threshold = " + num(side_threshold) + "; must be in (0, 1]");
-  if (!(second_low >= 0 && second_low <= 1))
-    return fail("second_low = " + num(second_low) + "; must be in [0, 1]");
-  if (!(second_threshold > 0 && second_threshold <= 1))
-    return fail("second_threshold = " + num(second_threshold) + "; must be in (0, 1]");
-  if (!(angle_refusal_threshold > 0 && angle_refusal_threshold <= 1))
-    return fail("angle_refusal_threshold = " + num(angle_refusal_threshold) +
-                "; must be in (0, 1]");
-  if (!(cover_refusal_threshold > 0 && cover_refusal_threshold <= 1))
-    return fail("cover_refusal_threshold = " + num(cover_refusal_threshold) +
-                "; must be in (0, 1]");
-  if (!(cover_flat_threshold > 0 && cover_flat_threshold <= 1))
-    return fail("cover_flat_threshold = " + num(cover_flat_threshold) + "; must be in (0, 1]");
-  if (!(cover_screentone_threshold > 0 && cover_screentone_threshold <= 1))
-    return fail("cover_screentone_threshold = " + num(cover_screentone_threshold) +
-                "; must be in (0, 1]");
-  if (!(second_partner_threshold > 0 && second_partner_threshold <= 1))
-    return fail("second_partner_threshold = " + num(second_partner_threshold) +
-                "; must be in (0, 1]");
+  if (!check("wide_band_high", wide_band_high, Range::kCost)) return false;
+  if (!check("wide_threshold", wide_threshold, Range::kOpenUnit)) return false;
+  if (!check("side_threshold", side_threshold, Range::kBarOrOff)) return false;
+  if (!check("second_low", second_low, Range::kUnit)) return false;
+  if (!check("second_threshold", second_threshold, Range::kBarOrOff)) return false;
+  if (!check("angle_refusal_threshold", angle_refusal_threshold, Range::kBarOrOff)) return false;
+  if (!check("cover_refusal_threshold", cover_refusal_threshold, Range::kBarOrOff)) return false;
+  if (!check("cover_flat_threshold", cover_flat_threshold, Range::kBarOrOff)) return false;
+  if (!check("cover_screentone_threshold", cover_screentone_threshold, Range::kBarOrOff))
+    return false;
+  if (!check("second_partner_threshold", second_partner_threshold, Range::kBarOrOff)) return false;
   if (!(crop_size >= 0 && crop_size <= 512))
     return fail("crop_size = " + std::to_string(crop_size) + "; must be in [0, 512]");
   return true;

@@ -12,6 +12,7 @@
 #include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
+#include "invalid_options.h"
 #include "joins_only.h"
 #include "same_joins.h"
 #include "strand_of.h"
@@ -61,11 +62,9 @@ TEST(FacePiece, NotOffScreentone) {
 TEST(FacePiece, BadLimitIsRefused) {
   Options o;
   o.face_piece_mass_step = -0.1;
-  std::string why;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("face_piece_mass_step"), std::string::npos) << why;
+  test::expect_invalid(o, "face_piece_mass_step = -0.1");
   o.face_piece_mass_step = std::nan("");
-  EXPECT_FALSE(o.is_valid(&why));
+  test::expect_invalid(o, "face_piece_mass_step");
   const AnnotatedCase c = test::generated_case(2009, generator::Shading::kScreentone);
   EXPECT_THROW(complete_strands(test::input_from_case(c), o), Error);
 }

@@ -13,6 +13,7 @@
 #include "generated_case.h"
 #include "hair25d/completion/completion.h"
 #include "hair25d/core/error.h"
+#include "invalid_options.h"
 #include "joins_only.h"
 #include "same_joins.h"
 #include "strand_of.h"
@@ -56,11 +57,9 @@ TEST(ToneLanding, NotOffScreentone) {
 TEST(ToneLanding, BadShareIsRefused) {
   Options o;
   o.tone_path_landing_share = -0.1;
-  std::string why;
-  EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_NE(why.find("tone_path_landing_share"), std::string::npos) << why;
+  test::expect_invalid(o, "tone_path_landing_share = -0.1");
   o.tone_path_landing_share = std::nan("");
-  EXPECT_FALSE(o.is_valid(&why));
+  test::expect_invalid(o, "tone_path_landing_share");
   const AnnotatedCase c = test::generated_case(2013, generator::Shading::kScreentone);
   EXPECT_THROW(complete_strands(test::input_from_case(c), o), Error);
 }
