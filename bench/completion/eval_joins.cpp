@@ -362,6 +362,15 @@ int main(int argc, char** argv) {
   app.add_option("--scorer-second-partner-threshold", options.join_scorer.second_partner_threshold,
                  "JoinScorerOptions::second_partner_threshold: a cut's second partners judged "
                  "by their own net at this p (1 = off)");
+  app.add_option("--scorer-field-cross-max", options.join_scorer.field_cross_max,
+                 "JoinScorerOptions::field_cross_max: on gradient drawings a refused candidate "
+                 "whose pieces' colour fields predict each other's paint at the cuts within this "
+                 "RGB joins last (0 = off)");
+  app.add_option("--scorer-field-cross-larger-max", options.join_scorer.field_cross_larger_max,
+                 "JoinScorerOptions::field_cross_larger_max: or the larger piece's field alone "
+                 "within this RGB (0 = not)");
+  app.add_option("--scorer-field-cross-low", options.join_scorer.field_cross_low,
+                 "JoinScorerOptions::field_cross_low: the least p of its net for that");
   app.add_option("--scorer-second-partner-last", options.join_scorer.second_partner_last,
                  "JoinScorerOptions::second_partner_last: the net's second partners join after "
                  "every other candidate (1) or at their own place in the matching (0)");

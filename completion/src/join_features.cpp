@@ -203,6 +203,13 @@ JoinFeatures join_features(const Context& ctx, const Edge& a, const Edge& b, con
     f[62] = static_cast<float>(std::log1p(std::min(t.miss_per_width, 50.0)));
     f[63] = static_cast<float>(t.miss_at_cuts);
   }
+  // Session 39: the pieces' fields across the gap, every candidate (no
+  // net trained before reads them: their weights there are zero).
+  const auto rgb = [](double v) {
+    return v < 0 ? -1.0f : static_cast<float>(std::min(v, 60.0) / 30.0);
+  };
+  f[75] = rgb(t.field_cross_max);
+  f[76] = rgb(t.field_cross_larger);
   return f;
 }
 

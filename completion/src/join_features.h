@@ -61,6 +61,11 @@ struct JoinTerms {
   double shape_cover = 0;
   double miss_per_width = 0;
   double miss_at_cuts = 0;
+  // Session 39: each piece's own colour field (RegionFields::cross_miss)
+  // predicting the other piece's paint at its cut, RGB: the worse way
+  // round, and the larger piece's way; −1 when not measured (too small, not linear, or not
+  // a shaded drawing). Inputs 75, 76.
+  double field_cross_max = -1, field_cross_larger = -1;
 };
 
 // Every input but the rivals' (indices 27–30, filled by `add_rival_features`).

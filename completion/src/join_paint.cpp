@@ -418,6 +418,27 @@ double RegionFields::step(int a, int b) {
   return excess(sa) + excess(sb);
 }
 
+std::pair<double, double> RegionFields::cross_miss(int a, const Vec2& at_a, int b,
+                                                   const Vec2& at_b) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const Sums sa = sums(a), sb = sums(b);
+  if (sa.n < kMinFieldPixels || sb.n < kMinFieldPixels) return {kInf, kInf};
+  const Eigen::Matrix3d fa = fit(sa), fb = fit(sb);
+  if (std::sqrt(mean_square(sa, fa)) > kMaxFieldResidual ||
+      std::sqrt(mean_square(sb, fb)) > kMaxFieldResidual)
+    return {kInf, kInf};
+  const Vec2 o(0.5 * ctx_->image->width(), 0.5 * ctx_->image->height());
+  const auto at = [&](const Eigen::Matrix3d& beta, const Vec2& v) -> Eigen::Vector3d {
+    const Eigen::Vector3d d(1.0, (v.x() - o.x()) / kFieldScale, (v.y() - o.y()) / kFieldScale);
+    return beta.transpose() * d;
+  };
+  const double into_b = (at(fa, at_b) - at(fb, at_b)).norm();
+  const double into_a = (at(fb, at_a) - at(fa, at_a)).norm();
+  // The larger piece's field is the better measured one (a sliver's slope
+  // across it is pulled to none).
+  return {std::max(into_a, into_b), sa.n >= sb.n ? into_b : into_a};
+}
+
 }  // namespace hair25d::completion::detail
 
 namespace hair25d::completion::detail {

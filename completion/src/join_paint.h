@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <map>
 #include <opencv2/core.hpp>
+#include <utility>
 #include <vector>
 
 #include "context.h"
@@ -157,6 +158,13 @@ class RegionFields {
   // The step of the drawing's kind of paint: the cel step on a drawing of
   // cel paint, else the field's.
   double paint_step(int a, int b) { return cels_.cel_drawing() ? cels_.step(a, b) : step(a, b); }
+  // Session 39: how each piece's own field predicts the other piece's
+  // paint where that piece is cut: |f_a(at_b) − f_b(at_b)| and
+  // |f_b(at_a) − f_a(at_a)| (RGB, each piece's own fit standing for its
+  // paint at its cut): the larger of the two, then the larger piece's
+  // (more pixels) into the other's cut. Infinity for both when either
+  // piece has too few pixels or is not linear itself.
+  std::pair<double, double> cross_miss(int a, const Vec2& at_a, int b, const Vec2& at_b);
   // The pieces' cel paint (measured once for the mass and path joins).
   RegionCels& cels() { return cels_; }
 

@@ -88,7 +88,9 @@ constexpr const char* kNames[kJoinFeatures] = {"mean_angle",
                                                "partner_widths",
                                                "partners_gap",
                                                "partners_side",
-                                               "first_partners"};
+                                               "first_partners",
+                                               "field_cross_max",
+                                               "field_cross_larger"};
 
 std::string num(double v) {
   std::ostringstream s;
@@ -217,6 +219,11 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
   if (!check("cover_screentone_threshold", cover_screentone_threshold, Range::kBarOrOff))
     return false;
   if (!check("second_partner_threshold", second_partner_threshold, Range::kBarOrOff)) return false;
+  if (!(field_cross_max >= 0 && field_cross_max <= 60))
+    return fail("field_cross_max = " + num(field_cross_max) + "; must be in [0, 60]");
+  if (!(field_cross_larger_max >= 0 && field_cross_larger_max <= 60))
+    return fail("field_cross_larger_max = " + num(field_cross_larger_max) + "; must be in [0, 60]");
+  if (!check("field_cross_low", field_cross_low, Range::kUnit)) return false;
   if (!(crop_size >= 0 && crop_size <= 512))
     return fail("crop_size = " + std::to_string(crop_size) + "; must be in [0, 512]");
   return true;

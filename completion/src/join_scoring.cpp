@@ -17,6 +17,14 @@ namespace {
 // how far p lies over JoinScorerOptions::wide_threshold: last of all
 // candidates under the limit, the surest first.
 constexpr double kWideRankSpan = 1e-6;
+// Session 39: candidates let in by their pieces' colour fields cost
+// max_join_cost less at most this (after every other candidate under the
+// limit but the cover refusals' and angle refusals' second chances that
+// lie within it of the limit, the surest first).
+constexpr double kFieldRankSpan = 1e-8;
+// Input 75 (field_cross_max) in RGB over this scale (join_features.cpp).
+constexpr int kFieldCrossInput = 75;
+constexpr double kFieldCrossScale = 30.0;
 
 }  // namespace
 
@@ -153,6 +161,19 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
   // refusals").
   const bool second =
       s.second_threshold < 1 && &net == &default_join_scorer() && !screentone && !shaded;
+  // Session 39 (JoinScorerOptions::field_cross_max): on a shaded drawing
+  // painted by colour fields, a candidate its net refuses joins last when
+  // each piece's own field predicts the other's paint at its cut (input
+  // 75, the worse way round; −1 where not measured).
+  const bool field_cross = s.enabled && s.field_cross_max > 0 && shaded && !screentone;
+  auto fields_agree = [&](std::size_t k, double p) {
+    const double worse = features[k][kFieldCrossInput];
+    const double larger = features[k][kFieldCrossInput + 1];
+    return field_cross && p >= s.field_cross_low && worse >= 0 &&
+           (kFieldCrossScale * worse <= s.field_cross_max ||
+            kFieldCrossScale * larger <= s.field_cross_larger_max);
+  };
+  const double field_last = o.max_join_cost - kFieldRankSpan;
   for (std::size_t k = 0; k < which.size(); ++k) {
     Join& j = (*candidates)[which[k]];
     double p = -1.0;
@@ -178,7 +199,8 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
         p = join_probability(angle_join_scorer(), features[k]);
       j.cost = p >= s.angle_refusal_threshold
                    ? o.max_join_cost - kWideRankSpan * (p - s.angle_refusal_threshold)
-                   : std::numeric_limits<double>::infinity();
+               : fields_agree(k, p) ? field_last + kFieldRankSpan * (1.0 - p)
+                                    : std::numeric_limits<double>::infinity();
     } else if (j.side_tangent) {
       // Session 31: an angle refusal undone by a side tangent joins only by
       // the band's net at side_threshold, within the band's top, ranked as
@@ -221,6 +243,8 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
         // After every candidate under the limit, the surest first by the
         // band's net: it only takes edges no other join wants.
         j.cost = o.max_join_cost - kWideRankSpan * p;
+      else if (fields_agree(k, p))
+        j.cost = field_last + kFieldRankSpan * (1.0 - p);
       else if (p < s.refuse_below)
         j.cost = std::numeric_limits<double>::infinity();
     } else if (s.enabled && rescue_threshold < 1 && !j.uneven_gradient && j.cost > s.band_high &&
@@ -230,6 +254,8 @@ void score_candidates(const Context& ctx, const std::vector<Edge>& edges,
       p = join_probability(edge_net, features[k]);
       if (p >= rescue_threshold)
         j.cost = o.max_join_cost + (rescue_threshold - p) * (s.band_high - s.band_low);
+      else if (fields_agree(k, p))
+        j.cost = field_last + kFieldRankSpan * (1.0 - p);
     } else if (s.enabled && veto_below > 0 && j.cost >= veto_low && j.cost < s.band_low) {
       // Under the limit (session 29): the edges' net may refuse it,
       // whichever net judges the band.

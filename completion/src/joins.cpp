@@ -744,6 +744,16 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
                               tone_cost,
                               one_sided.has_value()};
             add_scorer_terms(tones, a.region, b.region, under_by, &*terms);
+            // Session 39: the pieces' own fields across the gap, on shaded
+            // drawings painted by fields (not cel paint).
+            if (shaded && !step.flat && !fields.cels().cel_drawing()) {
+              const auto [most, larger] =
+                  fields.cross_miss(a.region, 0.5 * (a.p + a.q), b.region, 0.5 * (b.p + b.q));
+              if (std::isfinite(most)) {
+                terms->field_cross_max = most;
+                terms->field_cross_larger = larger;
+              }
+            }
             if (retried.found)
               add_retry_terms(ea, eb, retried, own_worst / max_angle, o.fit_length, &*terms);
             if (cover_retry) {

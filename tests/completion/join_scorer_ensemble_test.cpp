@@ -98,6 +98,8 @@ TEST(JoinScorerEnsemble, RescuesOnTheDrawingsItIsAskedFor) {
       // So have cover refusals' (cover_refusal_test.cpp).
       o.join_scorer.cover_refusal_threshold = 1.0;
       o.join_scorer.cover_flat_threshold = 1.0;
+      // So has the gradient pieces' fields' rule (field_cross_test.cpp).
+      o.join_scorer.field_cross_max = 0.0;
       // The default net judges the band of every drawing without screentone.
       o.join_scorer.retrained_shaded = false;
       o.join_scorer.ensemble_threshold = 0.05;

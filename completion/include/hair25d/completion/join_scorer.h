@@ -24,7 +24,10 @@ namespace hair25d::completion {
 // (JoinScorerOptions::second_partner_threshold: a candidate whose cut an
 // earlier join took), 0 for every other candidate; likewise left out of
 // the older nets' files.
-inline constexpr int kJoinFeatures = 75;
+// Session 39: inputs 75-76 say how each piece's own colour field predicts
+// the other piece's paint at its cut (RegionFields::cross_miss), on shaded
+// drawings painted by fields; −1 elsewhere. No committed net reads them.
+inline constexpr int kJoinFeatures = 77;
 inline constexpr int kJoinHidden = 12;
 using JoinFeatures = std::array<float, kJoinFeatures>;
 
@@ -378,6 +381,24 @@ struct JoinScorerOptions {
   // only cuts no other join wants); false: each joins at its own place in
   // the matching.
   bool second_partner_last = true;
+  // Session 39: on shaded drawings painted by colour fields (gradient), a
+  // candidate its net refuses — a band candidate, one over the band, an
+  // angle refusal's second chance — joins when each piece's own field
+  // predicts the other piece's paint at its cut within field_cross_max
+  // RGB (inputs 75-76, RegionFields::cross_miss) and its net gives it at
+  // least field_cross_low; after every other candidate under the limit,
+  // the surest first. 0 turns it off. Session 39 (joins94) at 3 / 1.5 /
+  // 0.3: dev gradient and mixed 2000, 3000, both relations, +65 right / +1
+  // wrong pairs; fresh 31700 +23 / 0; flat, two-tone, screentone and the
+  // six real cases unchanged (completion-record.md, "Session 39: the
+  // pieces' colour fields across the gap"). On the lead's held and fresh
+  // sets 0.3 let in a wrong pair in eight (p 0.32-0.50), so the bar is 0.5:
+  // +80 right / +4 wrong there, dev and fresh 31700 +49 / +1 ("Session 39:
+  // the fields' rule on the lead's sets").
+  double field_cross_max = 3.0;
+  double field_cross_low = 0.5;
+  // Or the larger piece's field (input 76) alone within this RGB (0: not).
+  double field_cross_larger_max = 1.5;
   // Record every strand-join candidate with hand cost ≤ band_high in
   // Result::join_candidates (training data; changes no join).
   bool record = false;
