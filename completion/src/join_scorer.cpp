@@ -100,8 +100,9 @@ std::string num(double v) {
 
 // The ranges most of JoinScorerOptions' fields lie in: a probability bar
 // (0, 1), a bar where 1 turns a second chance off (0, 1], a probability
-// floor [0, 1) or [0, 1], and a hand cost [0, 100).
-enum class Range { kOpenUnit, kBarOrOff, kLowUnit, kUnit, kCost };
+// floor [0, 1) or [0, 1], a hand cost [0, 100), and an RGB distance
+// [0, 60] where 0 turns a rule off.
+enum class Range { kOpenUnit, kBarOrOff, kLowUnit, kUnit, kCost, kRgb };
 
 bool in_range(double v, Range r) {
   switch (r) {
@@ -115,6 +116,8 @@ bool in_range(double v, Range r) {
       return v >= 0 && v <= 1;
     case Range::kCost:
       return v >= 0 && v < 100;
+    case Range::kRgb:
+      return v >= 0 && v <= 60;
   }
   return false;
 }
@@ -131,6 +134,8 @@ const char* range_text(Range r) {
       return "[0, 1]";
     case Range::kCost:
       return "[0, 100)";
+    case Range::kRgb:
+      return "[0, 60]";
   }
   return "";
 }
@@ -219,10 +224,8 @@ bool JoinScorerOptions::is_valid(std::string* error) const {
   if (!check("cover_screentone_threshold", cover_screentone_threshold, Range::kBarOrOff))
     return false;
   if (!check("second_partner_threshold", second_partner_threshold, Range::kBarOrOff)) return false;
-  if (!(field_cross_max >= 0 && field_cross_max <= 60))
-    return fail("field_cross_max = " + num(field_cross_max) + "; must be in [0, 60]");
-  if (!(field_cross_larger_max >= 0 && field_cross_larger_max <= 60))
-    return fail("field_cross_larger_max = " + num(field_cross_larger_max) + "; must be in [0, 60]");
+  if (!check("field_cross_max", field_cross_max, Range::kRgb)) return false;
+  if (!check("field_cross_larger_max", field_cross_larger_max, Range::kRgb)) return false;
   if (!check("field_cross_low", field_cross_low, Range::kUnit)) return false;
   if (!(crop_size >= 0 && crop_size <= 512))
     return fail("crop_size = " + std::to_string(crop_size) + "; must be in [0, 512]");
