@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <unordered_map>
 
 #include "raster.h"
@@ -347,6 +348,18 @@ double mean_square(const Sums& s, const Eigen::Matrix3d& beta) {
   return std::max(0.0, sq / s.n);
 }
 
+// Each piece's own field, when both pieces have pixels enough and each is
+// linear itself: what RegionFields::step and cross_miss both ask first.
+std::optional<std::pair<Eigen::Matrix3d, Eigen::Matrix3d>> own_fields(const Sums& sa,
+                                                                      const Sums& sb) {
+  if (sa.n < kMinFieldPixels || sb.n < kMinFieldPixels) return std::nullopt;
+  Eigen::Matrix3d fa = fit(sa), fb = fit(sb);
+  if (std::sqrt(mean_square(sa, fa)) > kMaxFieldResidual ||
+      std::sqrt(mean_square(sb, fb)) > kMaxFieldResidual)
+    return std::nullopt;
+  return std::pair{fa, fb};
+}
+
 }  // namespace
 
 const Sums& RegionFields::sums(int region) {
@@ -391,16 +404,14 @@ const Sums& RegionFields::sums(int region) {
 
 double RegionFields::step(int a, int b) {
   const Sums sa = sums(a), sb = sums(b);
-  if (sa.n < kMinFieldPixels || sb.n < kMinFieldPixels)
-    return std::numeric_limits<double>::infinity();
+  const auto own = own_fields(sa, sb);
+  if (!own) return std::numeric_limits<double>::infinity();
+  const auto& [fa, fb] = *own;
   Sums both;
   both.n = sa.n + sb.n;
   both.xx = sa.xx + sb.xx;
   both.xc = sa.xc + sb.xc;
   both.cc = sa.cc + sb.cc;
-  if (std::sqrt(mean_square(sa, fit(sa))) > kMaxFieldResidual ||
-      std::sqrt(mean_square(sb, fit(sb))) > kMaxFieldResidual)
-    return std::numeric_limits<double>::infinity();
   const Eigen::Matrix3d joint = fit(both);
   // Rows 1, 2 of the fit: RGB per kFieldScale px along x and y.
   const Eigen::Matrix<double, 2, 3> slope = joint.bottomRows<2>() / kFieldScale;
@@ -408,25 +419,25 @@ double RegionFields::step(int a, int b) {
                                    (sb.xx(0, 2) / sb.n - sa.xx(0, 2) / sa.n) * kFieldScale);
   // The gradient must be seen inside a piece: between two flat pieces of
   // slightly different colours the joint fit itself slopes.
-  const auto own_slope = [](const Sums& s) { return fit(s).bottomRows<2>().norm() / kFieldScale; };
-  if (slope.norm() < kMinFieldSlope || std::max(own_slope(sa), own_slope(sb)) < kMinFieldSlope ||
+  const auto own_slope = [](const Eigen::Matrix3d& f) {
+    return f.bottomRows<2>().norm() / kFieldScale;
+  };
+  if (slope.norm() < kMinFieldSlope || std::max(own_slope(fa), own_slope(fb)) < kMinFieldSlope ||
       (between * slope).norm() < kMinFieldChange)
     return std::numeric_limits<double>::infinity();
-  const auto excess = [&](const Sums& s) {
-    return std::sqrt(std::max(0.0, mean_square(s, joint) - mean_square(s, fit(s))));
+  const auto excess = [&](const Sums& s, const Eigen::Matrix3d& f) {
+    return std::sqrt(std::max(0.0, mean_square(s, joint) - mean_square(s, f)));
   };
-  return excess(sa) + excess(sb);
+  return excess(sa, fa) + excess(sb, fb);
 }
 
 std::pair<double, double> RegionFields::cross_miss(int a, const Vec2& at_a, int b,
                                                    const Vec2& at_b) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const Sums sa = sums(a), sb = sums(b);
-  if (sa.n < kMinFieldPixels || sb.n < kMinFieldPixels) return {kInf, kInf};
-  const Eigen::Matrix3d fa = fit(sa), fb = fit(sb);
-  if (std::sqrt(mean_square(sa, fa)) > kMaxFieldResidual ||
-      std::sqrt(mean_square(sb, fb)) > kMaxFieldResidual)
-    return {kInf, kInf};
+  const auto own = own_fields(sa, sb);
+  if (!own) return {kInf, kInf};
+  const auto& [fa, fb] = *own;
   const Vec2 o(0.5 * ctx_->image->width(), 0.5 * ctx_->image->height());
   const auto at = [&](const Eigen::Matrix3d& beta, const Vec2& v) -> Eigen::Vector3d {
     const Eigen::Vector3d d(1.0, (v.x() - o.x()) / kFieldScale, (v.y() - o.y()) / kFieldScale);
