@@ -13,19 +13,21 @@
 
 namespace hair25d::bench {
 
-// A 1024 × 1024 generated drawing with `strands` strands and no strand masks,
-// made once per strand count.
-inline const AnnotatedCase& generated_case(int strands) {
-  static std::map<int, AnnotatedCase> cache;
-  auto it = cache.find(strands);
+// A 1024 × 1024 generated drawing with `strands` strands painted with
+// `shading` and no strand masks, made once per strand count and shading.
+inline const AnnotatedCase& generated_case(int strands,
+                                           generator::Shading shading = generator::Shading::kFlat) {
+  static std::map<std::pair<int, generator::Shading>, AnnotatedCase> cache;
+  auto it = cache.find({strands, shading});
   if (it == cache.end()) {
     generator::Options o;
     o.width = 1024;
     o.height = 1024;
     o.strand_count = strands;
     o.seed = 7;
+    o.shading = shading;
     o.strand_masks = false;
-    it = cache.emplace(strands, generator::generate_case(o)).first;
+    it = cache.emplace(std::make_pair(strands, shading), generator::generate_case(o)).first;
   }
   return it->second;
 }

@@ -22,11 +22,11 @@ double wider_cut(const CoverMisses& m) { return std::max({m.a->width, m.b->width
 void CoverMisses::clear() {
   total = missed = at_cuts = 0;
   paper = on_face = on_ink = below = sibling = other = 0;
+  reach = std::max(kMinCutReach, kCutReachShare * wider_cut(*this));
 }
 
 bool CoverMisses::add_pixel(const Context& ctx, bool inside, int l, int x, int y) {
   ++missed;
-  const double reach = std::max(kMinCutReach, kCutReachShare * wider_cut(*this));
   const Vec2 c(x + 0.5, y + 0.5);
   if (std::min(segment_distance(c, a->p, a->q), segment_distance(c, b->p, b->q)) <= reach)
     ++at_cuts;

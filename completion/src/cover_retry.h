@@ -31,7 +31,10 @@ struct CoverMisses {
   int total = 0, missed = 0, at_cuts = 0;
   double paper = 0, on_face = 0, on_ink = 0, below = 0, sibling = 0, other = 0;
 
-  // Back to no pixel counted (a new patch).
+  // Within this of a cut (px) a miss is at the cut; set by `clear`.
+  double reach = 0.0;
+
+  // Back to no pixel counted (a new patch), the cuts' reach measured.
   void clear();
   // One uncovered pixel at (x, y), of label `l` (`inside` false: off the
   // map). False when it is a hair region's, which `add_region` counts by

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <opencv2/core.hpp>
 #include <utility>
+#include <vector>
 
 #include "hair25d/completion/bezier.h"
 #include "raster.h"
@@ -36,6 +38,7 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
   };
   std::vector<Shape> patches;
   int x0 = INT_MAX, y0 = INT_MAX, x1 = INT_MIN, y1 = INT_MIN;  // the boxes' union
+  std::size_t mask_bytes = 0;
   for (double sa : shares)
     for (double sb : shares) {
       Polyline patch = join_patch(a, b, sa, sb);
@@ -43,51 +46,94 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
       if (box.empty()) return best;
       x0 = std::min(x0, box.x), y0 = std::min(y0, box.y);
       x1 = std::max(x1, box.x + box.width), y1 = std::max(y1, box.y + box.height);
-      patches.push_back({sa, sb, std::move(patch), box});
+      mask_bytes += static_cast<std::size_t>(box.area());
+      patches.push_back({sa, sb, std::move(patch), box, cv::Mat()});
     }
   if (patches.empty()) return best;
   const cv::Point origin(x0, y0);
   const int w = x1 - x0, h = y1 - y0;
   if (static_cast<double>(w) * h > kMaxPolygonBoxPixels) return best;
-  // counted: a pixel outside both pieces; under: one of those under cover.
-  // What the relations say of a label is asked once (a box holds few).
-  // Only pixels some patch covers are asked: the box of long slanted
-  // patches is mostly outside them (session 36: the cover refusals' inputs
-  // ask this for every such candidate).
-  cv::Mat any(h, w, CV_8U, cv::Scalar(0));
+  // The masks and the union's classes live in one buffer per thread, kept
+  // from call to call: allocated afresh, the large patches' megabytes came
+  // back from the kernel a page fault at a time (session 40).
+  thread_local std::vector<std::uint8_t> scratch;
+  const std::size_t union_bytes = static_cast<std::size_t>(w) * h;
+  scratch.assign(mask_bytes + 2 * union_bytes, 0);
+  std::uint8_t* next = scratch.data();
+  cv::Mat any(h, w, CV_8U, next);
+  next += union_bytes;
+  // Per pixel of the union outside both pieces: 1 counted, 3 counted and
+  // under cover (0: a piece's or no patch's).
+  cv::Mat classes(h, w, CV_8U, next);
+  next += union_bytes;
   for (Shape& shape : patches) {
-    shape.mask = cv::Mat(shape.box.size(), CV_8U, cv::Scalar(0));
+    shape.mask = cv::Mat(shape.box.size(), CV_8U, next);
+    next += static_cast<std::size_t>(shape.box.area());
     fill_polygon(shape.mask, shape.patch, shape.box.tl(), 255);
     cv::Mat in_union = any(shape.box - origin);
     cv::bitwise_or(in_union, shape.mask, in_union);
   }
-  cv::Mat counted(h, w, CV_8U, cv::Scalar(0)), under(h, w, CV_8U, cv::Scalar(0));
+  // Counted: a pixel outside both pieces; under: one of those under cover.
+  // What the relations say of a label is asked once (a box holds few), and
+  // labels come in runs along a row. Only pixels some patch covers are
+  // asked: the box of long slanted patches is mostly outside them (session
+  // 36: the cover refusals' inputs ask this for every such candidate).
   AboveEither above(ctx, a.region, b.region);
+  const bool has_face = !face.empty();
+  int last_label = INT_MIN;
+  bool last_above = false;
   for (int y = 0; y < h; ++y) {
     const std::uint8_t* in = any.ptr<std::uint8_t>(y);
-    std::uint8_t* c = counted.ptr<std::uint8_t>(y);
-    std::uint8_t* u = under.ptr<std::uint8_t>(y);
+    std::uint8_t* c = classes.ptr<std::uint8_t>(y);
+    const int gy = y + origin.y;
+    if (gy < 0 || gy >= ctx.labels.height()) {  // off the map: counted, never under
+      for (int x = 0; x < w; ++x) c[x] = in[x] ? 1 : 0;
+      continue;
+    }
+    const int* labels = ctx.labels.data() + static_cast<std::size_t>(gy) * ctx.labels.width();
+    const int* original =
+        ink ? ctx.original->data() + static_cast<std::size_t>(gy) * ctx.original->width() : nullptr;
+    const std::uint8_t* face_row = has_face ? face.ptr<std::uint8_t>(gy) : nullptr;
+    const int map_end = std::min(w, ctx.labels.width() - origin.x);  // x past the map's right
     for (int x = 0; x < w; ++x) {
       if (!in[x]) continue;
-      const int gx = x + origin.x, gy = y + origin.y;
-      if (!ctx.labels.contains(gx, gy)) {
-        c[x] = 255;
+      const int gx = x + origin.x;
+      if (gx < 0 || gx >= ctx.labels.width()) {
+        c[x] = 1;
         continue;
       }
-      const int l = ctx.labels.at(gx, gy);
-      if (l == a.region || l == b.region) continue;
-      c[x] = 255;
-      if (above.hides(l, gx, gy, face, ink)) u[x] = 255;
+      const int l = labels[gx];
+      // The run of this label in the union along the row, classed at once
+      // unless each pixel may tell (the face, the ink).
+      int end = x + 1;
+      while (end < map_end && in[end] && labels[end + origin.x] == l) ++end;
+      if (l != a.region && l != b.region) {
+        if (l != last_label) last_label = l, last_above = above(l);
+        if (last_above || !((l == 0 && face_row) || ink)) {
+          std::fill(c + x, c + end, last_above ? 3 : 1);
+        } else {
+          for (int k = x; k < end; ++k) {  // hidden_pixel, its reads hoisted
+            const int kx = k + origin.x;
+            c[k] = (l == 0 && face_row && face_row[kx]) || (ink && original[kx] == 0) ? 3 : 1;
+          }
+        }
+      }
+      x = end - 1;
     }
   }
   // Each patch is counted within its own box, not the union's.
   for (const Shape& shape : patches) {
     const cv::Rect box = shape.box - origin;
-    cv::Mat both;
-    cv::bitwise_and(shape.mask, counted(box), both);
-    const int total = cv::countNonZero(both);
-    cv::bitwise_and(shape.mask, under(box), both);
-    const int hidden = cv::countNonZero(both);
+    int total = 0, hidden = 0;
+    for (int y = 0; y < box.height; ++y) {
+      const std::uint8_t* m = shape.mask.ptr<std::uint8_t>(y);
+      const std::uint8_t* c = classes.ptr<std::uint8_t>(y + box.y) + box.x;
+      for (int x = 0; x < box.width; ++x) {
+        const int v = m[x] & c[x];
+        total += v & 1;
+        hidden += v >> 1;
+      }
+    }
     const double cover = total > 0 ? static_cast<double>(hidden) / total : 1.0;
     if (cover > best.cover) best = {shape.share_a, shape.share_b, cover};
   }
