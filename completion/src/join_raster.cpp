@@ -174,11 +174,15 @@ PatchRaster raster_patch(const Context& ctx, const std::set<int>& front, const c
   CoverMisses* misses = job.may_retry ? &r.misses : nullptr;
   r.cover = coverage(ctx, r.patch, a.region, b.region, cover_face, &r.hidden, &front, lowest,
                      job.ink, under_by, t, false, misses);
+  // The patch of a third's arms is one of the shapes, measured by the same
+  // rule.
+  const JoinShape drawn{1.0 / 3.0, 1.0 / 3.0, r.cover};
   // Options::join_arm_shares: the hidden strand may take any smooth path
   // under the occluders, the patch of a third's arms is one guess (where
   // match_edges lets a shape in: `job.reshape`).
   if (job.reshape && r.cover < o.min_join_coverage && r.cover >= kMinCoverToReshape) {
-    const JoinShape shape = best_join_shape(ctx, a, b, cover_face, job.ink, o.join_arm_shares);
+    const JoinShape shape =
+        best_join_shape(ctx, a, b, cover_face, job.ink, o.join_arm_shares, drawn);
     r.reshaped_cover = shape.cover;
     if (shape.cover >= o.min_join_coverage &&
         job.cost + kUncoveredCost * (1.0 - shape.cover) <= o.max_join_cost) {
@@ -214,7 +218,8 @@ PatchRaster raster_patch(const Context& ctx, const std::set<int>& front, const c
   // candidate that may become one (a few become none: another piece's back
   // hair under the patch refuses them outright).
   if (job.retry_shape && r.cover < o.min_join_coverage && !r.corridor && r.reshaped_cover < 0)
-    r.retry_shape_cover = best_join_shape(ctx, a, b, cover_face, job.ink, o.join_arm_shares).cover;
+    r.retry_shape_cover =
+        best_join_shape(ctx, a, b, cover_face, job.ink, o.join_arm_shares, drawn).cover;
   return r;
 }
 

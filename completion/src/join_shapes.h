@@ -5,6 +5,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "context.h"
@@ -30,7 +31,11 @@ struct JoinShape {
 // back hair, or drawn ink across a cut of ink only (`ink`). The first of
 // equals wins. A cover map of the patches' box is made once and each shape
 // only filled over it (several shapes cost little more than one).
+// `known`, when given, is a shape of `shares` whose cover was measured
+// already (match_edges' patch of a third's arms, by `coverage`): it is not
+// measured again.
 JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, const cv::Mat& face,
-                          bool ink, const std::vector<double>& shares);
+                          bool ink, const std::vector<double>& shares,
+                          const std::optional<JoinShape>& known = std::nullopt);
 
 }  // namespace hair25d::completion::detail

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <utility>
@@ -13,6 +14,7 @@
 
 #include "facing_cuts.h"
 #include "hair25d/completion/bezier.h"
+#include "join_raster.h"
 #include "raster.h"
 
 namespace hair25d::completion::detail {
@@ -103,6 +105,32 @@ TEST(JoinShapes, CoverCountsOnlyOccludersOfThePieces) {
   EXPECT_DOUBLE_EQ(best_join_shape(c.ctx, c.a, c.b, face, false, kShares).cover, 1.0);
   // No shares: nothing measured.
   EXPECT_LT(best_join_shape(c.ctx, c.a, c.b, face, false, {}).cover, 0.0);
+}
+
+// match_edges' own patch (a third's arms) is measured by `coverage` before
+// the shapes are (session 40): by the same rule, so given as known it is
+// not measured again and the choice stays that of measuring it.
+TEST(JoinShapes, KnownShapeIsTakenAsMeasured) {
+  for (const auto& [sa, sb] : {std::pair{0.5, 0.5}, std::pair{0.2, 0.7}}) {
+    const Case c = make_case(sa, sb);
+    int hidden = 0;
+    const double drawn = coverage(c.ctx, join_patch(c.a, c.b), 1, 2, cv::Mat(), &hidden);
+    const JoinShape third = best_join_shape(c.ctx, c.a, c.b, cv::Mat(), false, {1.0 / 3.0});
+    EXPECT_DOUBLE_EQ(drawn, third.cover) << sa << " " << sb;
+    EXPECT_GT(hidden, 0);
+    const JoinShape measured = best_join_shape(c.ctx, c.a, c.b, cv::Mat(), false, kShares);
+    const JoinShape given = best_join_shape(c.ctx, c.a, c.b, cv::Mat(), false, kShares,
+                                            JoinShape{1.0 / 3.0, 1.0 / 3.0, drawn});
+    EXPECT_DOUBLE_EQ(given.share_a, measured.share_a) << sa << " " << sb;
+    EXPECT_DOUBLE_EQ(given.share_b, measured.share_b) << sa << " " << sb;
+    EXPECT_DOUBLE_EQ(given.cover, measured.cover) << sa << " " << sb;
+    // Told the third's patch lies all under cover, it takes it, first of
+    // the equals, without looking.
+    const JoinShape claimed = best_join_shape(c.ctx, c.a, c.b, cv::Mat(), false, kShares,
+                                              JoinShape{1.0 / 3.0, 1.0 / 3.0, 1.0});
+    EXPECT_DOUBLE_EQ(claimed.share_a, std::min(sa, 1.0 / 3.0)) << sa << " " << sb;
+    EXPECT_DOUBLE_EQ(claimed.cover, 1.0);
+  }
 }
 
 }  // namespace
