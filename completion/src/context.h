@@ -3,6 +3,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <opencv2/core.hpp>
@@ -116,14 +118,33 @@ struct Context {
   }
 };
 
-// Whether pixel (x, y) of a join's patch, of label `l`, lies hidden: in a
+// Whether a pixel of a join's patch, of label `l`, lies hidden: in a
 // region above a piece (`above`), on the face where the face hides back
 // hair (`face`, empty when it does not), or on the drawn ink across a cut of
-// ink only (`ink`). One rule for the cover, the shapes and the corridor.
+// ink only (`ink`). One rule for the cover, the shapes and the corridor,
+// its reads set up once for a row `y` of the map (the cover and the shapes
+// ask it of every pixel of large patches).
+class HiddenRow {
+ public:
+  HiddenRow(const Context& ctx, const cv::Mat& face, bool ink, int y)
+      : face_(face.empty() ? nullptr : face.ptr<std::uint8_t>(y)),
+        original_(ink ? ctx.original->data() + static_cast<std::size_t>(y) * ctx.original->width()
+                      : nullptr) {}
+  // Whether pixels of label `l` off every region above a piece differ one
+  // from the next (on the face, or across a cut of ink only).
+  bool per_pixel(int l) const { return (l == 0 && face_) || original_; }
+  // Pixel x of the row.
+  bool hidden(bool above, int l, int x) const {
+    return above || (l == 0 && face_ && face_[x]) || (original_ && original_[x] == 0);
+  }
+
+ private:
+  const std::uint8_t* face_;
+  const int* original_;
+};
 inline bool hidden_pixel(const Context& ctx, bool above, int l, int x, int y, const cv::Mat& face,
                          bool ink) {
-  return above || (l == 0 && !face.empty() && face.at<std::uint8_t>(y, x)) ||
-         (ink && ctx.original->at(x, y) == 0);
+  return HiddenRow(ctx, face, ink, y).hidden(above, l, x);
 }
 
 // Whether a label lies above piece `a` or `b` (never label 0), the

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <future>
 #include <opencv2/core.hpp>
+#include <optional>
 
 #include "join_corridor.h"
 #include "join_shapes.h"
@@ -65,16 +66,14 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
     return seen[last];
   };
   int under = 0, total = 0;
-  const bool has_face = !face.empty();
   for (int y = 0; y < h; ++y) {
     const std::uint8_t* row = mask.ptr<std::uint8_t>(y);
     const int gy = y + origin.y;
     const bool row_inside = gy >= 0 && gy < labels.height();
-    // hidden_pixel's reads, a row at a time
-    const std::size_t at = static_cast<std::size_t>(gy) * labels.width();
-    const int* label_row = row_inside ? labels.data() + at : nullptr;
-    const int* original_row = row_inside && ink ? ctx.original->data() + at : nullptr;
-    const std::uint8_t* face_row = row_inside && has_face ? face.ptr<std::uint8_t>(gy) : nullptr;
+    const int* label_row =
+        row_inside ? labels.data() + static_cast<std::size_t>(gy) * labels.width() : nullptr;
+    const std::optional<HiddenRow> hides =
+        row_inside ? std::optional<HiddenRow>(std::in_place, ctx, face, ink, gy) : std::nullopt;
     const int map_end = std::min(w, labels.width() - origin.x);  // x past the map's right side
     for (int x = 0; x < w; ++x) {
       if (!row[x]) continue;
@@ -99,10 +98,10 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       if (c.above) {
         under += n;
         c.under += n;
-      } else if ((l == 0 && face_row) || ink || misses) {
+      } else if (hides->per_pixel(l) || misses) {
         for (int k = gx; k < end + origin.x; ++k) {
           // Across a cut of ink only, the drawn ink is what lies over the gap.
-          if ((l == 0 && face_row && face_row[k]) || (ink && original_row[k] == 0)) {
+          if (hides->hidden(false, l, k)) {
             ++under;
             ++c.under;  // the face and the ink count as 0
           } else if (misses && !misses->add_pixel(ctx, true, l, k, gy)) {

@@ -126,7 +126,6 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
   // asked: the box of long slanted patches is mostly outside them (session
   // 36: the cover refusals' inputs ask this for every such candidate).
   AboveEither above(ctx, a.region, b.region);
-  const bool has_face = !face.empty();
   int last_label = INT_MIN;
   bool last_above = false;
   for (int y = 0; y < h; ++y) {
@@ -138,9 +137,7 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
       continue;
     }
     const int* labels = ctx.labels.data() + static_cast<std::size_t>(gy) * ctx.labels.width();
-    const int* original =
-        ink ? ctx.original->data() + static_cast<std::size_t>(gy) * ctx.original->width() : nullptr;
-    const std::uint8_t* face_row = has_face ? face.ptr<std::uint8_t>(gy) : nullptr;
+    const HiddenRow hides(ctx, face, ink, gy);
     const int map_end = std::min(w, ctx.labels.width() - origin.x);  // x past the map's right
     for (int x = 0; x < w; ++x) {
       if (!in[x]) continue;
@@ -156,13 +153,10 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
       while (end < map_end && in[end] && labels[end + origin.x] == l) ++end;
       if (l != a.region && l != b.region) {
         if (l != last_label) last_label = l, last_above = above(l);
-        if (last_above || !((l == 0 && face_row) || ink)) {
+        if (last_above || !hides.per_pixel(l)) {
           std::fill(c + x, c + end, last_above ? 3 : 1);
         } else {
-          for (int k = x; k < end; ++k) {  // hidden_pixel, its reads hoisted
-            const int kx = k + origin.x;
-            c[k] = (l == 0 && face_row && face_row[kx]) || (ink && original[kx] == 0) ? 3 : 1;
-          }
+          for (int k = x; k < end; ++k) c[k] = hides.hidden(false, l, k + origin.x) ? 3 : 1;
         }
       }
       x = end - 1;
