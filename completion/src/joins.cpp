@@ -558,7 +558,7 @@ std::vector<Join> match_edges(const Context& ctx, const std::vector<Edge>& edges
             job.retry_shape = scoring && job.may_retry && !o.join_arm_shares.empty();
             job.front_counts = join.behind_face;
             job.by_label = scoring;
-            job.trace = traced >= 0;
+            job.trace = ctx.join_trace != nullptr;  // none in the first pass (`traced`)
             if (collecting) {
               if (side) {  // the copies outlive this pass
                 job_edges.push_back(a);

@@ -211,16 +211,22 @@ TEST(GeneratedCases, ScreentoneTailIsNoBackHair) {
 }
 
 // The strands are grown and assembled on two workers, a strand as soon as the
-// edges of its regions have grown (beside the growing of the others): the
-// result is that of one worker, growing every edge and then assembling.
+// edges of its regions have grown (beside the growing of the others), and
+// the strand-join candidates' rasters are measured on two (session 40): the
+// result is that of one worker, growing every edge and then assembling,
+// each raster measured where the matching reaches it. Seed 6 is a gradient
+// drawing, whose cover refusals measure the arm shares' shapes; every
+// candidate's trace is compared too.
 TEST(GeneratedCases, TwoWorkersGiveTheResultOfOne) {
-  for (std::uint64_t seed : {4u, 5u}) {
-    const AnnotatedCase c = test::generated_case(
-        seed, seed == 4 ? generator::Shading::kFlat : generator::Shading::kScreentone, 560, 420,
-        16);
+  for (std::uint64_t seed : {4u, 5u, 6u}) {
+    const generator::Shading shading = seed == 4   ? generator::Shading::kFlat
+                                       : seed == 5 ? generator::Shading::kScreentone
+                                                   : generator::Shading::kGradient;
+    const AnnotatedCase c = test::generated_case(seed, shading, 560, 420, 16);
     const Input in = test::input_from_case(c);
     Options one;
     one.threads = 1;
+    one.trace_joins = true;
     Options two = one;
     two.threads = 2;
     const Result a = complete_strands(in, one);
@@ -250,6 +256,25 @@ TEST(GeneratedCases, TwoWorkersGiveTheResultOfOne) {
       EXPECT_EQ(a.edges[i].hidden_pixels, b.edges[i].hidden_pixels);
     }
     EXPECT_TRUE(a.background == b.background);
+    ASSERT_EQ(a.join_trace.size(), b.join_trace.size());
+    int measured = 0;
+    for (std::size_t i = 0; i < a.join_trace.size(); ++i) {
+      const JoinTrace& x = a.join_trace[i];
+      const JoinTrace& y = b.join_trace[i];
+      EXPECT_EQ(x.region_a, y.region_a);
+      EXPECT_EQ(x.region_b, y.region_b);
+      EXPECT_EQ(x.stage, y.stage) << "pair " << i;
+      EXPECT_EQ(x.hand_cost, y.hand_cost) << "pair " << i;
+      EXPECT_EQ(x.probability, y.probability) << "pair " << i;
+      EXPECT_EQ(x.cover, y.cover) << "pair " << i;
+      EXPECT_EQ(x.hole_background, y.hole_background) << "pair " << i;
+      EXPECT_EQ(x.hole_below, y.hole_below) << "pair " << i;
+      EXPECT_EQ(x.hole_sibling, y.hole_sibling) << "pair " << i;
+      EXPECT_EQ(x.hole_other, y.hole_other) << "pair " << i;
+      measured += x.cover >= 0;
+    }
+    EXPECT_GE(measured, 3);  // candidates whose patches were measured (4: 3, 5: 11, 6: 34)
+    EXPECT_EQ(a.joins, b.joins);
     EXPECT_EQ(a.roots, b.roots);
     EXPECT_EQ(a.tips, b.tips);
     EXPECT_EQ(a.strand_inpaint.filled, b.strand_inpaint.filled);
