@@ -396,6 +396,40 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
                   std::to_string(r.b) + " names a region that is not in the region map");
     }
   }
+  // Head centre: given, else the centroid of the hair (it frames the face).
+  if (input.head_center) {
+    ctx.head = *input.head_center;
+  } else {
+    double sx = 0, sy = 0, n = 0;
+    for (const auto& [id, info] : ctx.regions) {
+      sx += info.centroid.x() * info.pixels;
+      sy += info.centroid.y() * info.pixels;
+      n += info.pixels;
+    }
+    ctx.head = n > 0 ? Vec2(sx / n, sy / n) : Vec2(image.width() / 2.0, image.height() / 2.0);
+    result.head_center_estimated = true;
+  }
+  result.head_center = ctx.head;
+  // The background fill needs the labels, the regions' colours and the head
+  // centre (the face and the head behind the hair), never changed below: it
+  // runs beside the relations' reading (session 40: 20-40 ms of one core
+  // before it on the seed-7 drawings), the matching, growing and strands.
+  // It reads no relation, and the regions' occluders that the relations
+  // add are not read by it.
+  // The face: hidden back hair is joined across it, and the background
+  // fills the head behind the hair from it.
+  const detail::Face drawn_face =
+      options.face_joins || options.inpaint_background ? detail::find_face(ctx) : detail::Face{};
+  // The hole is kept: the strands carry what it takes that they do not show.
+  detail::BackgroundHole hole;
+  auto fill_background = [&] {
+    hole = detail::background_hole(ctx, drawn_face);
+    return detail::fill_background(ctx, hole, &result.background_inpaint);
+  };
+  std::future<Image> background;
+  if (options.inpaint_background && options.threads > 1)
+    background = std::async(std::launch::async, fill_background);
+
   const std::set<std::pair<int, int>> touching = touching_pairs(ctx.labels);
   // The drawing's tones and paint fields, measured once for all join passes
   // (region paint only: no relation is read).
@@ -412,37 +446,6 @@ Result complete_strands(const Input& input, const Options& options, Progress* pr
     const auto it = firm_above.find(region);
     return it != firm_above.end() && it->second.count(upper) > 0;
   };
-
-  // Head centre: given, else the centroid of the hair (it frames the face).
-  if (input.head_center) {
-    ctx.head = *input.head_center;
-  } else {
-    double sx = 0, sy = 0, n = 0;
-    for (const auto& [id, info] : ctx.regions) {
-      sx += info.centroid.x() * info.pixels;
-      sy += info.centroid.y() * info.pixels;
-      n += info.pixels;
-    }
-    ctx.head = n > 0 ? Vec2(sx / n, sy / n) : Vec2(image.width() / 2.0, image.height() / 2.0);
-    result.head_center_estimated = true;
-  }
-  result.head_center = ctx.head;
-  // The background fill needs the labels, the regions and the head centre
-  // (the face and the head behind the hair), never changed below: it runs
-  // beside the matching, growing and strands.
-  // The face: hidden back hair is joined across it, and the background
-  // fills the head behind the hair from it.
-  const detail::Face drawn_face =
-      options.face_joins || options.inpaint_background ? detail::find_face(ctx) : detail::Face{};
-  // The hole is kept: the strands carry what it takes that they do not show.
-  detail::BackgroundHole hole;
-  auto fill_background = [&] {
-    hole = detail::background_hole(ctx, drawn_face);
-    return detail::fill_background(ctx, hole, &result.background_inpaint);
-  };
-  std::future<Image> background;
-  if (options.inpaint_background && options.threads > 1)
-    background = std::async(std::launch::async, fill_background);
 
   // Single-occluder edges ("atoms"), and merged runs of them as further
   // candidates for case 1 (a strand may pass under two neighbouring occluders).
