@@ -126,6 +126,7 @@ struct Context {
 // ask it of every pixel of large patches).
 class HiddenRow {
  public:
+  HiddenRow() = default;  // a row off the map: no face, no ink
   HiddenRow(const Context& ctx, const cv::Mat& face, bool ink, int y)
       : face_(face.empty() ? nullptr : face.ptr<std::uint8_t>(y)),
         original_(ink ? ctx.original->data() + static_cast<std::size_t>(y) * ctx.original->width()
@@ -139,8 +140,8 @@ class HiddenRow {
   }
 
  private:
-  const std::uint8_t* face_;
-  const int* original_;
+  const std::uint8_t* face_ = nullptr;
+  const int* original_ = nullptr;
 };
 inline bool hidden_pixel(const Context& ctx, bool above, int l, int x, int y, const cv::Mat& face,
                          bool ink) {

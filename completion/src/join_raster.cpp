@@ -1,14 +1,13 @@
 #include "join_raster.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
-#include <future>
 #include <opencv2/core.hpp>
 #include <optional>
 
 #include "join_corridor.h"
 #include "join_shapes.h"
+#include "parallel_each.h"
 #include "raster.h"
 
 namespace hair25d::completion::detail {
@@ -72,8 +71,7 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
     const bool row_inside = gy >= 0 && gy < labels.height();
     const int* label_row =
         row_inside ? labels.data() + static_cast<std::size_t>(gy) * labels.width() : nullptr;
-    const std::optional<HiddenRow> hides =
-        row_inside ? std::optional<HiddenRow>(std::in_place, ctx, face, ink, gy) : std::nullopt;
+    const HiddenRow hides = row_inside ? HiddenRow(ctx, face, ink, gy) : HiddenRow();
     const int map_end = std::min(w, labels.width() - origin.x);  // x past the map's right side
     for (int x = 0; x < w; ++x) {
       if (!row[x]) continue;
@@ -98,10 +96,10 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
       if (c.above) {
         under += n;
         c.under += n;
-      } else if (hides->per_pixel(l) || misses) {
+      } else if (hides.per_pixel(l) || misses) {
         for (int k = gx; k < end + origin.x; ++k) {
           // Across a cut of ink only, the drawn ink is what lies over the gap.
-          if (hides->hidden(false, l, k)) {
+          if (hides.hidden(false, l, k)) {
             ++under;
             ++c.under;  // the face and the ink count as 0
           } else if (misses && !misses->add_pixel(ctx, true, l, k, gy)) {
@@ -226,18 +224,8 @@ std::vector<PatchRaster> raster_patches(const Context& ctx, const std::set<int>&
                                         const cv::Mat& face, const std::vector<PatchJob>& jobs,
                                         int threads) {
   std::vector<PatchRaster> out(jobs.size());
-  // One job at a time to whichever thread is free: a few large patches
-  // take most of the time.
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t k = next++; k < jobs.size(); k = next++)
-      out[k] = raster_patch(ctx, front, face, jobs[k]);
-  };
-  std::vector<std::future<void>> others;
-  const int helpers = std::min(threads, static_cast<int>(jobs.size())) - 1;
-  for (int i = 0; i < helpers; ++i) others.push_back(std::async(std::launch::async, work));
-  work();
-  for (std::future<void>& f : others) f.get();
+  parallel_each(jobs.size(), threads,
+                [&](std::size_t k) { out[k] = raster_patch(ctx, front, face, jobs[k]); });
   return out;
 }
 

@@ -13,6 +13,7 @@
 
 #include "bank_crossings.h"
 #include "join_paint.h"
+#include "parallel_each.h"
 
 namespace hair25d::completion::detail {
 namespace {
@@ -894,7 +895,18 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
     auto it = ctx.above.find(r);
     return it == ctx.above.end() ? kNone : it->second;
   };
-  std::vector<MassJoin> out;
+  // The pairs that pass the paint's tests, then their paths: the paths are
+  // most of this pass's time (session 40: 0.55 G of the seed-7 screentone
+  // drawing's 13.5 G instructions, on one core while the other waited) and
+  // read only the context, so they are found on several threads.
+  struct Pair {
+    int a, b;
+    std::set<int> common;
+    RegionTones::Match match;
+    bool textured;
+    RegionCels::Judgement cel;
+  };
+  std::vector<Pair> pairs;
   for (std::size_t i = 0; i < pieces.size(); ++i)
     for (std::size_t k = i + 1; k < pieces.size(); ++k) {
       const int a = pieces[i], b = pieces[k];
@@ -923,38 +935,47 @@ std::vector<MassJoin> path_join_candidates(const Context& ctx, const cv::Mat& fa
       const RegionCels::Judgement cel = fields.cels().judge(a, b);
       if (cel.other) continue;
       if (!textured && !tones.same_tone(a, b, &textured) && !cel.same) continue;
-      const std::vector<Landing> landings = crossing_paths(ctx, a, b, common, reach);
-      if (static_cast<int>(landings.size()) < kMinLandings) continue;
-      std::vector<double> colour_steps;
-      const int n = static_cast<int>(landings.size());
-      const int samples = std::min(n, kColourSamples);
-      for (int s = 0; s < samples; ++s) {
-        const Landing& l = landings[static_cast<std::size_t>(s) * n / samples];
-        // Under a tone the paper between the dots (a window's mean moves
-        // with the dots' phase); elsewhere the mean, which anti-aliased rims
-        // and shading move (flat drawings of one paint: pieces of different
-        // strands step 0 at the light percentile, annotated precision 0.982
-        // -> 0.865).
-        const Eigen::Vector3d ca =
-            textured ? light_colour_near(ctx, a, l.from) : colour_near(ctx, a, l.from, Vec2(0, 0));
-        const Eigen::Vector3d cb =
-            textured ? light_colour_near(ctx, b, l.to) : colour_near(ctx, b, l.to, Vec2(0, 0));
-        colour_steps.push_back((ca - cb).norm());
-      }
-      const auto median = [](std::vector<double> v) {
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        return v[v.size() / 2];
-      };
-      const double step = median(colour_steps);
-      // Or one linear field paints both pieces (a gradient over the back
-      // hair steps across the strand between the windows).
-      const double field =
-          tones.screentone() ? std::numeric_limits<double>::infinity() : fields.step(a, b);
-      if (step > kMaxPathColourStep && match != RegionTones::Match::kSame &&
-          field > kMaxPathFieldStep && !cel.same)
-        continue;
-      out.push_back(path_join(a, b, landings, std::min({step, field, cel.same ? cel.step : step})));
+      pairs.push_back({a, b, common, match, textured, cel});
     }
+  std::vector<std::vector<Landing>> paths(pairs.size());
+  parallel_each(pairs.size(), ctx.options->threads, [&](std::size_t k) {
+    paths[k] = crossing_paths(ctx, pairs[k].a, pairs[k].b, pairs[k].common, reach);
+  });
+  std::vector<MassJoin> out;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto& [a, b, common, match, textured, cel] = pairs[k];
+    const std::vector<Landing>& landings = paths[k];
+    if (static_cast<int>(landings.size()) < kMinLandings) continue;
+    std::vector<double> colour_steps;
+    const int n = static_cast<int>(landings.size());
+    const int samples = std::min(n, kColourSamples);
+    for (int s = 0; s < samples; ++s) {
+      const Landing& l = landings[static_cast<std::size_t>(s) * n / samples];
+      // Under a tone the paper between the dots (a window's mean moves
+      // with the dots' phase); elsewhere the mean, which anti-aliased rims
+      // and shading move (flat drawings of one paint: pieces of different
+      // strands step 0 at the light percentile, annotated precision 0.982
+      // -> 0.865).
+      const Eigen::Vector3d ca =
+          textured ? light_colour_near(ctx, a, l.from) : colour_near(ctx, a, l.from, Vec2(0, 0));
+      const Eigen::Vector3d cb =
+          textured ? light_colour_near(ctx, b, l.to) : colour_near(ctx, b, l.to, Vec2(0, 0));
+      colour_steps.push_back((ca - cb).norm());
+    }
+    const auto median = [](std::vector<double> v) {
+      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+      return v[v.size() / 2];
+    };
+    const double step = median(colour_steps);
+    // Or one linear field paints both pieces (a gradient over the back
+    // hair steps across the strand between the windows).
+    const double field =
+        tones.screentone() ? std::numeric_limits<double>::infinity() : fields.step(a, b);
+    if (step > kMaxPathColourStep && match != RegionTones::Match::kSame &&
+        field > kMaxPathFieldStep && !cel.same)
+      continue;
+    out.push_back(path_join(a, b, landings, std::min({step, field, cel.same ? cel.step : step})));
+  }
   sort_by_colour(out);
   // Cel drawings: two pieces of a strand (one of them at least lying above
   // some region) in one flat paint that no other region shares, linked
