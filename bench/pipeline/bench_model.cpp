@@ -30,10 +30,10 @@ void BM_ModelFromStrokes(benchmark::State& state) {
   add_counters(state, c, run);
 }
 
-void BM_ModelFromStrokesWritten(benchmark::State& state) {
-  const AnnotatedCase& c = bench::generated_case(static_cast<int>(state.range(0)));
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() /
-                                       ("hair25d_bench_model_" + std::to_string(state.range(0)));
+// The model of `c` from its strokes, written to a folder named `name` in
+// the temporary directory, as hair25d model writes it.
+void model_written(benchmark::State& state, const AnnotatedCase& c, const std::string& name) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / name;
   pipeline::ModelRun run;
   for (auto _ : state) {
     std::filesystem::remove_all(folder);
@@ -44,25 +44,19 @@ void BM_ModelFromStrokesWritten(benchmark::State& state) {
   add_counters(state, c, run);
 }
 
+void BM_ModelFromStrokesWritten(benchmark::State& state) {
+  model_written(state, bench::generated_case(static_cast<int>(state.range(0))),
+                "hair25d_bench_model_" + std::to_string(state.range(0)));
+}
+
 // Session 40: the 1 s target of issue 5 was timed on the flat drawing only,
-// and the gradient one took longer (its cover refusals' shapes); every
-// shading of the 40-strand drawing, written as hair25d model writes it.
-// Second argument: generator::Shading (0 flat, 1 two-tone, 2 gradient,
-// 3 screentone).
+// and the gradient one took longer (its cover refusals' shapes): every
+// shading of the 40-strand drawing. Second argument: generator::Shading
+// (0 flat, 1 two-tone, 2 gradient, 3 screentone).
 void BM_ModelWrittenByShading(benchmark::State& state) {
   const auto shading = static_cast<generator::Shading>(state.range(1));
-  const AnnotatedCase& c = bench::generated_case(static_cast<int>(state.range(0)), shading);
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() /
-      ("hair25d_bench_model_shading_" + std::to_string(state.range(1)));
-  pipeline::ModelRun run;
-  for (auto _ : state) {
-    std::filesystem::remove_all(folder);
-    run = pipeline::run_model(c.image, &*c.strokes);
-    pipeline::write_model_run(folder, run);
-  }
-  std::filesystem::remove_all(folder);
-  add_counters(state, c, run);
+  model_written(state, bench::generated_case(static_cast<int>(state.range(0)), shading),
+                "hair25d_bench_model_shading_" + std::to_string(state.range(1)));
 }
 
 void BM_ModelFromRegions(benchmark::State& state) {
