@@ -39,9 +39,8 @@ double coverage(const Context& ctx, const Polyline& patch, int ra, int rb, const
   if (box.empty()) return 0.0;
   const cv::Point origin = box.tl();
   const int w = box.width, h = box.height;
-  // Kept from call to call, as best_join_shape's (join_shapes.cpp).
-  thread_local std::vector<std::uint8_t> scratch;
-  scratch.assign(static_cast<std::size_t>(w) * h, 0);
+  thread_local std::vector<std::uint8_t> kept;
+  ScratchBytes scratch(kept, static_cast<std::size_t>(w) * h);
   cv::Mat mask(h, w, CV_8U, scratch.data());
   fill_polygon(mask, patch, origin, 255);
   // A patch crosses few labels, each over many pixels: what the relations

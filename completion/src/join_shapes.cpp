@@ -99,12 +99,10 @@ JoinShape best_join_shape(const Context& ctx, const Edge& a, const Edge& b, cons
   const cv::Point origin(x0, y0);
   const int w = x1 - x0, h = y1 - y0;
   if (static_cast<double>(w) * h > kMaxPolygonBoxPixels) return best;
-  // The masks and the union's classes live in one buffer per thread, kept
-  // from call to call: allocated afresh, the large patches' megabytes came
-  // back from the kernel a page fault at a time (session 40).
-  thread_local std::vector<std::uint8_t> scratch;
+  // The masks and the union's classes live in one buffer.
+  thread_local std::vector<std::uint8_t> kept;
   const std::size_t union_bytes = static_cast<std::size_t>(w) * h;
-  scratch.assign(mask_bytes + 2 * union_bytes, 0);
+  ScratchBytes scratch(kept, mask_bytes + 2 * union_bytes);
   std::uint8_t* next = scratch.data();
   cv::Mat any(h, w, CV_8U, next);
   next += union_bytes;

@@ -4,6 +4,8 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -88,6 +90,28 @@ inline Vec2 principal_axis(const Polyline& points, const Vec2& towards) {
   const Vec2 axis = total_least_squares(points).axis;
   return axis.dot(towards) < 0 ? Vec2(-axis) : axis;
 }
+
+// Zeroed bytes for a raster, in a buffer the caller keeps per thread
+// (`thread_local`) from call to call: allocated afresh, the join patches'
+// megabytes came back from the kernel a page fault at a time (session 40).
+// Over kMaxKeptBytes the buffer is freed again when done, so that a thread
+// that lives on (the studio's) keeps no more than that.
+class ScratchBytes {
+ public:
+  static constexpr std::size_t kMaxKeptBytes = std::size_t{16} << 20;
+  ScratchBytes(std::vector<std::uint8_t>& kept, std::size_t bytes) : kept_(kept) {
+    kept_.assign(bytes, 0);
+  }
+  ~ScratchBytes() {
+    if (kept_.capacity() > kMaxKeptBytes) std::vector<std::uint8_t>().swap(kept_);
+  }
+  ScratchBytes(const ScratchBytes&) = delete;
+  ScratchBytes& operator=(const ScratchBytes&) = delete;
+  std::uint8_t* data() { return kept_.data(); }
+
+ private:
+  std::vector<std::uint8_t>& kept_;
+};
 
 // Fills a closed polygon (pixel centres at integer + 0.5) into `mask` (CV_8U)
 // with `value`, offset by -origin.

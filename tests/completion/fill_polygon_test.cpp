@@ -1,10 +1,11 @@
 // fill_polygon (completion/src/raster.h) leaves out the inner vertices of
 // straight whole-pixel runs (session 40): the masks must be those of
-// cv::fillPoly given every vertex.
+// cv::fillPoly given every vertex. And the rasters' kept scratch bytes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <opencv2/imgproc.hpp>
 #include <random>
 #include <vector>
@@ -80,6 +81,22 @@ TEST(FillPolygon, RectangleOutlineFillsTheRectangle) {
   fill_polygon(mask, outline, cv::Point(0, 0), 255);
   EXPECT_EQ(cv::countNonZero(mask), 31 * 41);
   EXPECT_EQ(cv::countNonZero(mask(cv::Rect(20, 30, 31, 41))), 31 * 41);
+}
+
+// Zeroed on every use, kept between uses, freed when over the cap.
+TEST(ScratchBytes, ZeroedEachTimeAndLargeBuffersFreed) {
+  std::vector<std::uint8_t> kept;
+  {
+    ScratchBytes scratch(kept, 1000);
+    scratch.data()[10] = 7;
+  }
+  EXPECT_GE(kept.capacity(), 1000u);
+  {
+    ScratchBytes scratch(kept, 1000);
+    EXPECT_EQ(scratch.data()[10], 0);
+  }
+  { ScratchBytes scratch(kept, ScratchBytes::kMaxKeptBytes + 1); }
+  EXPECT_EQ(kept.capacity(), 0u);
 }
 
 }  // namespace
